@@ -1,0 +1,196 @@
+"""The scene as the engine sees it: numpy arrays and small records, in metres.
+
+Everything here is in the *probesim world frame*: metres, right-handed, Z up.
+The stage reader converts each stage (``metersPerUnit``, ``upAxis``) into this
+frame, so a config's sensor coordinates mean the same thing whatever units and
+up axis the stage was authored in.
+
+Emission is carried as a pair of numbers per emitter: the radiometric value
+(watts) and its photometric twin (lumens), because materials are grey and the
+two integrals are all a reading needs (no spectrum is traced where nothing is
+coloured). What the pair measures depends on the light kind; see
+:class:`Light`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from enum import IntEnum
+
+import numpy as np
+
+__all__ = ["LightKind", "Light", "Geometry", "SensorKind", "Sensor", "Scene"]
+
+
+class LightKind(IntEnum):
+    """Light types; the integer is what the Warp kernels switch on."""
+
+    POINT = 0  #: delta source; emission = intensity (W/sr, cd)
+    SPHERE = 1  #: radius > 0; emission = radiance (W m^-2 sr^-1, cd/m^2), outward
+    RECT = 2  #: width x height; emission = radiance, one-sided along local -Z
+    DISK = 3  #: radius; emission = radiance, one-sided along local -Z
+    DISTANT = 4  #: half-angle > 0: emission = radiance; half-angle 0 (delta): normal irradiance (W/m^2, lx)
+    DOME = 5  #: uniform environment; emission = radiance
+    CYLINDER = 6  #: radius, length along local X; emission = radiance, outward from the side
+
+
+#: kinds that are delta distributions: no direction sample can hit them.
+DELTA_KINDS = frozenset({LightKind.POINT})
+
+
+@dataclass
+class Light:
+    """One UsdLux light, resolved to world space and emission units.
+
+    Attributes
+    ----------
+    name : str
+        Prim path.
+    kind : LightKind
+    position : ndarray, shape (3,)
+        Centre, metres.
+    frame : ndarray, shape (3, 3)
+        Columns are the light's unit X, Y, Z axes in the world frame. Rect and
+        Disk lights emit toward ``-frame[:, 2]``; a DistantLight shines along
+        ``-frame[:, 2]`` (so the direction *toward* it is ``+frame[:, 2]``).
+    emission : tuple of float
+        ``(radiometric, photometric)``: radiance (W m^-2 sr^-1, cd/m^2) for
+        area, sphere, cylinder, dome and distant lights with an angle;
+        intensity (W/sr, cd) for point lights; normal irradiance (W/m^2, lx)
+        for a distant light with ``half_angle == 0``.
+    width, height : float
+        Rect size along local X and Y, metres.
+    radius : float
+        Sphere, disk and cylinder radius, metres.
+    length : float
+        Cylinder length along local X, metres.
+    half_angle : float
+        Distant light cone half-angle, radians (0 = delta direction).
+    """
+
+    name: str
+    kind: LightKind
+    position: np.ndarray
+    frame: np.ndarray
+    emission: tuple[float, float]
+    width: float = 0.0
+    height: float = 0.0
+    radius: float = 0.0
+    length: float = 0.0
+    half_angle: float = 0.0
+    texture: str = ""  #: DomeLight lat-long EXR (resolved path), "" if untextured
+
+    @property
+    def is_delta(self) -> bool:
+        """True for lights no sampled direction can hit (pdf is a delta)."""
+        return self.kind == LightKind.POINT or (
+            self.kind == LightKind.DISTANT and self.half_angle == 0.0
+        )
+
+
+@dataclass
+class Geometry:
+    """All surfaces as one triangle soup in world metres.
+
+    Triangles are wound so that their geometric normal
+    ``cross(p1 - p0, p2 - p0)`` is the front face (left-handed prims are
+    re-wound by the reader).
+
+    Attributes
+    ----------
+    points : ndarray, shape (P, 3), float64
+    triangles : ndarray, shape (T, 3), int32
+    albedo : ndarray, shape (T,), float64
+        Lambertian albedo in [0, 1); both faces reflect.
+    emission : ndarray, shape (T, 2), float64
+        Emitted radiance ``(W m^-2 sr^-1, cd/m^2)`` from the front face.
+    two_sided : ndarray, shape (T,), bool
+        Emits from both faces (``doubleSided``).
+    prim : ndarray, shape (T,), int32
+        Index into ``prim_names`` of the prim each triangle came from.
+    prim_names : list of str
+    """
+
+    points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
+    triangles: np.ndarray = field(default_factory=lambda: np.zeros((0, 3), np.int32))
+    albedo: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    emission: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+    two_sided: np.ndarray = field(default_factory=lambda: np.zeros(0, bool))
+    prim: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int32))
+    prim_names: list[str] = field(default_factory=list)
+
+    @property
+    def n_triangles(self) -> int:
+        return int(self.triangles.shape[0])
+
+
+class SensorKind(IntEnum):
+    """Sensor types; the integer is what the Warp kernels switch on."""
+
+    IRRADIANCE = 0  #: point receiver; irradiance on the side ``normal`` faces
+    RADIANCE = 1  #: mean radiance arriving from a cone around ``direction``
+    PATCH = 2  #: rectangle; flux through it from the side it faces
+    PROBE = 3  #: full-sphere light probe
+
+
+@dataclass
+class Sensor:
+    """One virtual sensor in the world frame.
+
+    Attributes
+    ----------
+    name : str
+    kind : SensorKind
+    position : ndarray, shape (3,)
+        Metres (the centre, for a patch).
+    normal : ndarray, shape (3,)
+        Unit vector the sensor faces: toward the light it measures. For a
+        radiance meter this is the look direction (rays leave along it).
+    up : ndarray, shape (3,)
+        Patch only: unit direction of the height side, orthogonal to normal.
+    size : tuple of float
+        Patch only: ``(width, height)`` in metres.
+    half_angle : float
+        Radiance only: cone half-angle in radians (0 = one direction).
+    resolution : tuple of int
+        Probe only: lat-long map ``(width, height)`` in pixels.
+    grid : str or None
+        Name of the ``[[grid]]`` this sensor was expanded from.
+    source : str
+        Where it was defined (config key or prim path), for messages.
+    """
+
+    name: str
+    kind: SensorKind
+    position: np.ndarray
+    normal: np.ndarray
+    up: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    size: tuple[float, float] = (0.0, 0.0)
+    half_angle: float = 0.0
+    resolution: tuple[int, int] = (0, 0)
+    grid: str | None = None
+    source: str = ""
+
+
+@dataclass
+class Scene:
+    """What the stage reader hands on: geometry, lights and authored sensors."""
+
+    geometry: Geometry
+    lights: list[Light]
+    sensors: list[Sensor]
+    path: str = ""
+    meters_per_unit: float = 1.0
+    up_axis: str = "Z"
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """Axis-aligned box (metres) around geometry, lights and sensors."""
+        pts = [self.geometry.points.reshape(-1, 3)]
+        pts += [l.position[None, :] for l in self.lights if l.kind not in (LightKind.DOME, LightKind.DISTANT)]
+        pts += [s.position[None, :] for s in self.sensors]
+        allp = np.concatenate(pts) if pts else np.zeros((1, 3))
+        if allp.size == 0:
+            allp = np.zeros((1, 3))
+        return allp.min(axis=0), allp.max(axis=0)

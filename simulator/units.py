@@ -1,0 +1,116 @@
+"""Units, spectra and photometry.
+
+Materials are grey, so light transport is the same at every wavelength and a
+reading needs only two integrals of each emitter's spectrum: its radiometric
+total (W) and its photometric total (lm). This module turns a light's stated
+value into that pair.
+
+Notes
+-----
+Luminous efficacy of radiation of a spectrum S(λ) over 380–780 nm:
+
+    K(S) = K_m · ∫ V(λ) S(λ) dλ / ∫ S(λ) dλ,   K_m = 683 lm/W,
+
+with V the CIE 1924 photopic luminous efficiency function, integrated at
+1 nm with the trapezoid rule. For CIE Illuminant D65 K ≈ 205.15 lm/W; for an
+equal-energy spectrum K ≈ 182.46 lm/W.
+
+References
+----------
+CIE 15:2004 Colorimetry; CIE 018:2019 (photometry); the CIE 1924 V(λ) and D65
+tables as published by the ``colour-science`` package.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+
+__all__ = [
+    "K_M",
+    "SPECTRA",
+    "luminous_efficacy",
+    "emission_pair",
+    "luminance_grey",
+]
+
+#: maximum luminous efficacy of radiation for photopic vision, lm/W
+K_M = 683.0
+
+#: spectrum names accepted in configs
+SPECTRA = ("D65", "E")
+
+_WAVELENGTHS_NM = np.arange(380.0, 781.0, 1.0)
+
+# Rec. 709 / linear sRGB luminance weights (ITU-R BT.709), the colour space
+# UsdLux and UsdPreviewSurface colours are authored in by default.
+_REC709_Y = np.array([0.2126, 0.7152, 0.0722])
+
+
+def _spectrum_values(spectrum: str | float) -> np.ndarray:
+    import colour  # lazy: ~1 s import, only needed once per run
+
+    if isinstance(spectrum, str):
+        if spectrum == "E":
+            return np.ones_like(_WAVELENGTHS_NM)
+        if spectrum == "D65":
+            return np.asarray(colour.SDS_ILLUMINANTS["D65"][_WAVELENGTHS_NM], float)
+        raise ValueError(f"unknown spectrum {spectrum!r}; expected one of {SPECTRA} or a temperature in K")
+    shape = colour.SpectralShape(380, 780, 1)
+    return np.asarray(colour.sd_blackbody(float(spectrum), shape).values, float)
+
+
+@lru_cache(maxsize=64)
+def luminous_efficacy(spectrum: str | float) -> float:
+    """Luminous efficacy of radiation of a spectrum, lm/W.
+
+    Parameters
+    ----------
+    spectrum : {"D65", "E"} or float
+        A named spectrum, or a blackbody temperature in kelvin.
+
+    Returns
+    -------
+    float
+        K(S) in lm/W over 380–780 nm (see module Notes).
+    """
+    import colour
+
+    v = np.asarray(
+        colour.colorimetry.SDS_LEFS_PHOTOPIC["CIE 1924 Photopic Standard Observer"][_WAVELENGTHS_NM],
+        float,
+    )
+    s = _spectrum_values(spectrum)
+    return K_M * float(np.trapezoid(v * s, _WAVELENGTHS_NM) / np.trapezoid(s, _WAVELENGTHS_NM))
+
+
+def emission_pair(value: float, light_units: str, spectrum: str | float) -> tuple[float, float]:
+    """Turn a stated emission value into ``(radiometric, photometric)``.
+
+    Parameters
+    ----------
+    value : float
+        The number the stage states (after intensity·2^exposure·grey(color)/sizeFactor).
+    light_units : {"photometric", "radiometric"}
+        ``photometric``: ``value`` is photometric (cd/m², cd or lx);
+        ``radiometric``: it is radiometric (W m⁻² sr⁻¹, W/sr or W/m²).
+    spectrum : str or float
+        Spectral shape of the emitter (see :func:`luminous_efficacy`).
+
+    Returns
+    -------
+    (float, float)
+        Radiometric value and its photometric twin.
+    """
+    k = luminous_efficacy(spectrum)
+    if light_units == "photometric":
+        return value / k, value
+    if light_units == "radiometric":
+        return value, value * k
+    raise ValueError(f"light_units must be 'photometric' or 'radiometric', not {light_units!r}")
+
+
+def luminance_grey(rgb) -> float:
+    """Luminance-weighted grey of a linear Rec. 709 colour (BT.709 Y weights)."""
+    return float(np.dot(_REC709_Y, np.asarray(rgb, float)))
