@@ -1,0 +1,176 @@
+"""Readings as rows, and the files they go to: CSV (always) and a JSON run record.
+
+Writers see plain numbers only: no Warp, no USD. Files are written to a
+temporary name beside the target and renamed into place, so an interrupted
+run never leaves a half-written CSV.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .scene.model import Sensor, SensorKind
+
+__all__ = ["COLUMNS", "Reading", "readings_from", "write_outputs", "format_table"]
+
+#: CSV columns, in order; units are in the names. A column that does not
+#: apply to a sensor's kind is left empty, never 0.
+COLUMNS = (
+    "sensor", "kind", "x", "y", "z", "dx", "dy", "dz",
+    "irradiance_W_m2", "irradiance_stderr_W_m2", "illuminance_lx", "illuminance_stderr_lx",
+    "radiance_W_m2_sr", "radiance_stderr_W_m2_sr", "luminance_cd_m2", "luminance_stderr_cd_m2",
+    "flux_W", "flux_stderr_W", "luminous_flux_lm", "luminous_flux_stderr_lm",
+    "samples", "seconds", "method", "target_met",
+)  # fmt: skip
+
+_KIND_NAMES = {
+    SensorKind.IRRADIANCE: "irradiance",
+    SensorKind.RADIANCE: "radiance",
+    SensorKind.PATCH: "patch",
+    SensorKind.PROBE: "probe",
+}
+
+
+@dataclass
+class Reading:
+    """One sensor's row: quantity name → value, plus bookkeeping."""
+
+    sensor: Sensor
+    values: dict[str, float]
+    samples: int
+    seconds: float
+    method: str
+    target_met: bool | None
+
+
+def readings_from(sensors: list[Sensor], mean: np.ndarray, stderr: np.ndarray, samples, seconds, method: str, target_met) -> list[Reading]:
+    """Turn per-sensor estimates (channel 0 radiometric, 1 photometric) into rows.
+
+    A patch's estimate is its mean irradiance; its flux is that × its area.
+    """
+    rows = []
+    for i, s in enumerate(sensors):
+        m, e = mean[i], stderr[i]
+        v: dict[str, float] = {}
+        if s.kind == SensorKind.RADIANCE:
+            v.update(radiance_W_m2_sr=m[0], radiance_stderr_W_m2_sr=e[0], luminance_cd_m2=m[1], luminance_stderr_cd_m2=e[1])
+        else:
+            v.update(irradiance_W_m2=m[0], irradiance_stderr_W_m2=e[0], illuminance_lx=m[1], illuminance_stderr_lx=e[1])
+        if s.kind == SensorKind.PATCH:
+            area = s.size[0] * s.size[1]
+            v.update(flux_W=m[0] * area, flux_stderr_W=e[0] * area, luminous_flux_lm=m[1] * area, luminous_flux_stderr_lm=e[1] * area)
+        met = None if target_met is None else bool(target_met[i])
+        rows.append(Reading(s, {k: float(x) for k, x in v.items()}, int(samples[i]), float(seconds[i]), method, met))
+    return rows
+
+
+def _fmt(x) -> str:
+    if x is None:
+        return ""
+    if isinstance(x, bool):
+        return "true" if x else "false"
+    if isinstance(x, (int, np.integer)):
+        return str(int(x))
+    if isinstance(x, (float, np.floating)):
+        return f"{float(x):.9g}"
+    return str(x)
+
+
+def _csv_text(rows: list[Reading]) -> str:
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(COLUMNS)
+    for r in rows:
+        s = r.sensor
+        rec = {
+            "sensor": s.name, "kind": _KIND_NAMES[s.kind],
+            "x": s.position[0], "y": s.position[1], "z": s.position[2],
+            "dx": s.normal[0], "dy": s.normal[1], "dz": s.normal[2],
+            "samples": r.samples, "seconds": r.seconds, "method": r.method, "target_met": r.target_met,
+            **r.values,
+        }  # fmt: skip
+        w.writerow([_fmt(rec.get(c)) for c in COLUMNS])
+    return buf.getvalue()
+
+
+def _atomic_write_all(files: dict[Path, str]) -> None:
+    """Write every file to a temporary sibling first, then rename them all."""
+    staged = []
+    try:
+        for path, text in files.items():
+            path.parent.mkdir(parents=True, exist_ok=True)
+            fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+            with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
+                f.write(text)
+            staged.append((tmp, path))
+        for tmp, path in staged:
+            os.replace(tmp, path)
+    except BaseException:
+        for tmp, _ in staged:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+        raise
+
+
+def write_outputs(csv_path: Path, rows: list[Reading], record: dict) -> Path:
+    """Write the CSV and its run record (``<csv stem>.run.json``) atomically.
+
+    Returns the run record's path.
+    """
+    record_path = csv_path.with_name(csv_path.stem + ".run.json")
+    _atomic_write_all(
+        {
+            csv_path: _csv_text(rows),
+            record_path: json.dumps(record, indent=2, sort_keys=True, default=_json_default) + "\n",
+        }
+    )
+    return record_path
+
+
+def _json_default(o):
+    if isinstance(o, np.ndarray):
+        return o.tolist()
+    if isinstance(o, (np.integer, np.floating)):
+        return o.item()
+    if isinstance(o, Path):
+        return str(o)
+    raise TypeError(f"not JSON serialisable: {type(o).__name__}")
+
+
+def format_table(rows: list[Reading], max_rows: int = 30) -> str:
+    """A terminal table: one line per sensor (grids summarised past ``max_rows``)."""
+    lines = [f"{'sensor':<24} {'kind':<10} {'reading':>14} {'± stderr':>12} {'rel':>7}  {'photometric':>14}  {'samples':>8}"]
+    shown = rows if len(rows) <= max_rows else [r for r in rows if r.sensor.grid is None][:max_rows]
+    for r in shown:
+        v = r.values
+        if r.sensor.kind == SensorKind.RADIANCE:
+            val, err, unit, ph, phu = v["radiance_W_m2_sr"], v["radiance_stderr_W_m2_sr"], "W/m²/sr", v["luminance_cd_m2"], "cd/m²"
+        elif r.sensor.kind == SensorKind.PATCH:
+            val, err, unit, ph, phu = v["flux_W"], v["flux_stderr_W"], "W", v["luminous_flux_lm"], "lm"
+        else:
+            val, err, unit, ph, phu = v["irradiance_W_m2"], v["irradiance_stderr_W_m2"], "W/m²", v["illuminance_lx"], "lx"
+        rel = f"{100 * err / abs(val):.2f}%" if val else "-"
+        lines.append(
+            f"{r.sensor.name[:24]:<24} {_KIND_NAMES[r.sensor.kind]:<10} {val:>9.4g} {unit:<4} {err:>12.3g} {rel:>7}  {ph:>9.4g} {phu:<5} {r.samples:>8}"
+        )
+    grids: dict[str, list[Reading]] = {}
+    for r in rows:
+        if r.sensor.grid is not None:
+            grids.setdefault(r.sensor.grid, []).append(r)
+    if len(rows) > max_rows:
+        for name, g in grids.items():
+            lx = np.array([r.values["illuminance_lx"] for r in g])
+            w = np.array([r.values["irradiance_W_m2"] for r in g])
+            lines.append(
+                f"grid {name}: {len(g)} sensors, irradiance min/mean/max {w.min():.4g}/{w.mean():.4g}/{w.max():.4g} W/m², "
+                f"illuminance {lx.min():.4g}/{lx.mean():.4g}/{lx.max():.4g} lx, uniformity (min/mean) {lx.min() / lx.mean() if lx.mean() else 0:.3f}"
+            )
+    return "\n".join(lines)

@@ -1,0 +1,91 @@
+"""Running per-sensor statistics in float64, merged exactly.
+
+Each kernel thread returns, for its block of samples, a shift K (its first
+sample) and the shifted sums Σ(x − K), Σ(x − K)². Blocks are merged with the
+pairwise update of Chan, Golub and LeVeque, which adds δ² terms only where
+block means differ, so a constant estimator keeps a variance of exactly 0.
+
+References
+----------
+T. F. Chan, G. H. Golub, R. J. LeVeque, "Algorithms for computing the sample
+variance: analysis and recommendations", The American Statistician 37(3), 1983.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["RunningStats", "Z95"]
+
+#: two-sided 95% normal quantile, for confidence half-widths
+Z95 = 1.959963984540054
+
+
+class RunningStats:
+    """Count, mean and sum of squared deviations (M2) per sensor and channel.
+
+    Parameters
+    ----------
+    n_sensors : int
+    n_channels : int
+        2: radiometric and photometric.
+    """
+
+    def __init__(self, n_sensors: int, n_channels: int = 2):
+        self.count = np.zeros(n_sensors, np.int64)
+        self.mean = np.zeros((n_sensors, n_channels))
+        self.m2 = np.zeros((n_sensors, n_channels))
+
+    def merge(self, sensor: np.ndarray, count: np.ndarray, mean: np.ndarray, m2: np.ndarray) -> None:
+        """Merge one block per sensor (``sensor`` has no repeats) into the totals."""
+        na = self.count[sensor].astype(np.float64)[:, None]
+        nb = count.astype(np.float64)[:, None]
+        n = na + nb
+        delta = mean - self.mean[sensor]
+        first = na == 0  # nothing yet: take the block as it is
+        self.mean[sensor] = np.where(first, mean, self.mean[sensor] + delta * (nb / n))
+        self.m2[sensor] = np.where(first, m2, self.m2[sensor] + m2 + delta * delta * (na * nb / n))
+        self.count[sensor] += count
+
+    @staticmethod
+    def reduce_blocks(
+        block_sensor: np.ndarray,
+        block_count: np.ndarray,
+        shift: np.ndarray,
+        s1: np.ndarray,
+        s2: np.ndarray,
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Collapse kernel-thread blocks into one block per sensor.
+
+        Parameters
+        ----------
+        block_sensor : ndarray, shape (B,)
+            Sensor of each thread block; blocks of one sensor are contiguous.
+        block_count : ndarray, shape (B,)
+        shift, s1, s2 : ndarray, shape (B, C)
+            K, Σ(x − K) and Σ(x − K)² per block.
+
+        Returns
+        -------
+        sensors, counts, means, m2s
+        """
+        cnt = block_count.astype(np.float64)[:, None]
+        bmean = shift + s1 / cnt
+        bm2 = np.maximum(s2 - s1 * s1 / cnt, 0.0)
+        starts = np.flatnonzero(np.r_[True, block_sensor[1:] != block_sensor[:-1]])
+        sensors = block_sensor[starts]
+        counts = np.add.reduceat(block_count, starts)
+        # mean relative to the first block's mean: exact when all block means agree
+        ref = np.repeat(bmean[starts], np.diff(np.r_[starts, len(block_sensor)]), axis=0)
+        dev = bmean - ref
+        means = bmean[starts] + np.add.reduceat(dev * cnt, starts) / counts[:, None]
+        spread = bmean - np.repeat(means, np.diff(np.r_[starts, len(block_sensor)]), axis=0)
+        m2s = np.add.reduceat(bm2 + cnt * spread * spread, starts)
+        return sensors, counts, means, m2s
+
+    def stderr(self) -> np.ndarray:
+        """Standard error of each mean, shape (S, C): √(M2 / (n(n − 1)))."""
+        n = self.count.astype(np.float64)[:, None]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            se = np.sqrt(self.m2 / (n * (n - 1.0)))
+        return np.where(n > 1, se, np.inf)
