@@ -69,6 +69,7 @@ from simulator.scene.model import Sensor, SensorKind
 from simulator.units import SPECTRA
 
 __all__ = [
+    "COMPONENTS",
     "METHODS",
     "DEVICES",
     "LIGHT_UNITS",
@@ -86,6 +87,7 @@ __all__ = [
 #: estimator names accepted by ``simulation.method`` and ``--method``
 METHODS = ("auto", "analytic", "light", "bsdf", "mis", "path")
 #: device names accepted by ``simulation.device`` and ``--device``
+COMPONENTS = ("total", "direct", "indirect")
 DEVICES = ("cpu", "cuda", "auto")
 #: accepted values of ``light_units``
 LIGHT_UNITS = ("photometric", "radiometric")
@@ -114,6 +116,7 @@ _SIM_KEYS = (
     "time_limit_s",
     "max_depth",
     "threads",
+    "component",
 )
 _SENSOR_COMMON_KEYS = ("name", "kind", "position")
 _SENSOR_KIND_KEYS = {
@@ -158,6 +161,9 @@ class SimulationConfig:
         Bounce cap of the ``path`` method; -1 = unlimited.
     threads : int
         CPU worker threads; 0 = all cores.
+    component : str
+        Which light the readings count: ``total``, ``direct`` (straight from
+        emitters) or ``indirect`` (reflected at least once; method ``path``).
     """
 
     samples: int = 1024
@@ -170,6 +176,7 @@ class SimulationConfig:
     time_limit_s: float | None = None
     max_depth: int = -1
     threads: int = 0
+    component: str = "total"
 
     @property
     def adaptive(self) -> bool:
@@ -466,6 +473,8 @@ def _simulation(ck: _Checker, value: Any) -> SimulationConfig:
         out["max_depth"] = ck.integer(table["max_depth"], k + "max_depth", lo=-1)
     if "threads" in table:
         out["threads"] = ck.integer(table["threads"], k + "threads", lo=0)
+    if "component" in table:
+        out["component"] = ck.choice(table["component"], k + "component", COMPONENTS, "component")
     return SimulationConfig(**out)
 
 

@@ -26,13 +26,16 @@ from .errors import UserError
 from .scene.model import Light, LightKind, Scene, Sensor, SensorKind
 from .stats import Z95, RunningStats
 
-__all__ = ["METHOD_FLAGS", "Engine", "EngineResult", "Progress", "resolve_device"]
+__all__ = ["COMPONENTS", "METHOD_FLAGS", "Engine", "EngineResult", "Progress", "resolve_device"]
 
 #: samples one kernel thread draws for one sensor (a block)
 BLOCK = 32
 #: samples per launch in a batch: big enough to amortise the launch, small
 #: enough that the progress bar and time limit are checked often
 SAMPLES_PER_LAUNCH = 1 << 18
+
+#: which light a reading counts
+COMPONENTS = ("total", "direct", "indirect")
 
 #: method → (next-event estimation, cosine directions, MIS, interreflection)
 METHOD_FLAGS = {
@@ -268,12 +271,13 @@ class Engine:
 
     # ------------------------------------------------------------ launches
 
-    def _params(self, method: str, seed: int, max_depth: int):
+    def _params(self, method: str, seed: int, max_depth: int, component: str):
         K = self._K
         nee, bsdf, mis, bounces = METHOD_FLAGS[method]
         p = K.TraceParams()
         p.nee, p.bsdf, p.mis = nee, bsdf, mis
-        p.bounces = max_depth if bounces else 0
+        p.bounces = max_depth if bounces and component != "direct" else 0
+        p.skip_direct = 1 if component == "indirect" else 0
         p.emissive_light = self.emissive_light
         p.seed = int(seed) & 0x7FFFFFFF
         return p
@@ -338,6 +342,7 @@ class Engine:
         max_samples: int = 1 << 20,
         time_limit_s: float | None = None,
         max_depth: int = -1,
+        component: str = "total",
         progress: Callable[[Progress], None] | None = None,
     ) -> EngineResult:
         """Estimate every sensor with ``method`` (light, bsdf, mis or path).
@@ -346,11 +351,19 @@ class Engine:
         ``samples`` is the first batch; a sensor stops when
         1.96·stderr ≤ max(rel_error·|mean|, abs_error) in both channels, or at
         ``max_samples``; all stop at ``time_limit_s``.
+
+        ``component``: ``total``; ``direct`` (light straight from emitters,
+        and for a radiance meter its first surface's reflection of it); or
+        ``indirect`` (the rest: light that has been reflected on the way).
         """
+        if component not in COMPONENTS:
+            raise UserError(f"simulation.component: {component!r} is not one of {', '.join(COMPONENTS)}")
+        if component == "indirect" and not METHOD_FLAGS[method][3]:
+            raise UserError(f"simulation.component: 'indirect' needs method path, not {method!r}")
         if method not in METHOD_FLAGS:
             raise UserError(f"method {method!r} has no Monte Carlo kernel (expected one of {sorted(METHOD_FLAGS)})")
         n_s = len(self.sensors)
-        params = self._params(method, seed, max_depth)
+        params = self._params(method, seed, max_depth, component)
         stats = RunningStats(n_s)
         seconds = np.zeros(n_s)
         nonfinite = np.zeros(n_s, np.int64)

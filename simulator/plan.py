@@ -18,10 +18,12 @@ __all__ = ["choose_method", "MC_METHODS"]
 MC_METHODS = ("light", "bsdf", "mis", "path")
 
 
-def choose_method(scene: Scene, sensors: list[Sensor], requested: str) -> tuple[str, str]:
+def choose_method(scene: Scene, sensors: list[Sensor], requested: str, component: str = "total") -> tuple[str, str]:
     """Return ``(method, reason)`` for the run."""
     reflects = scene.geometry.n_triangles > 0 and bool(np.any(scene.geometry.albedo > 0))
     if requested == "auto":
+        if component == "indirect":
+            return "path", "auto: the indirect component is light reflected on the way: paths"
         if reflects:
             return "path", "auto: surfaces reflect (albedo > 0), so interreflection needs paths"
         return "light", "auto: no surface reflects, so direct light sampling is exact in expectation and cheapest"

@@ -90,7 +90,7 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     scene = load_scene(cfg)
     sensors = collect_sensors(cfg, scene)
     sim = cfg.simulation
-    method, reason = choose_method(scene, sensors, sim.method)
+    method, reason = choose_method(scene, sensors, sim.method, sim.component)
     for w in scene.warnings:
         log(f"warning: {w}")
     t_load = time.perf_counter()
@@ -105,6 +105,7 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
         max_samples=sim.sample_cap,
         time_limit_s=sim.time_limit_s,
         max_depth=sim.max_depth,
+        component=sim.component,
         progress=progress,
     )
     for w in res.warnings:
@@ -120,6 +121,7 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
         "samples_requested": sim.samples,
         "samples_total": int(res.samples.sum()),
         "method": {"requested": sim.method, "used": res.method, "reason": reason},
+        "component": sim.component,
         "device": res.device,
         "threads": engine.threads,
         "host": {"platform": platform.platform(), "machine": platform.machine(), "processor": platform.processor(), "python": sys.version.split()[0]},

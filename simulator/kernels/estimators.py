@@ -90,6 +90,7 @@ class TraceParams:
     bsdf: int  # follow cosine-weighted directions and count emitters they hit
     mis: int  # weight the two by the power heuristic
     bounces: int  # surface interactions to follow: 0 = direct only, −1 = unbounded
+    skip_direct: int  # 1: leave out light that reaches the sensor without a reflection (indirect only)
     emissive_light: int  # index of the EMISSIVE light record, −1 if none
     seed: int
 
@@ -129,10 +130,12 @@ def unoccluded(scene: SceneRec, o: wp.vec3, wi: wp.vec3, dist: float, tri: int) 
 
 @wp.func
 def vertex_irradiance(
-    scene: SceneRec, p_in: wp.vec3, n_in: wp.vec3, weight: float, params: TraceParams, rng_in: wp.uint32
+    scene: SceneRec, p_in: wp.vec3, n_in: wp.vec3, weight: float, params: TraceParams, skip_first: int, rng_in: wp.uint32
 ) -> wp.vec2:
     """weight × an estimate of the irradiance on (p, n), following bounces
-    when ``params.bounces`` allows (see module docstring)."""
+    when ``params.bounces`` allows (see module docstring). With ``skip_first``
+    the light arriving at this first vertex straight from emitters is left
+    out (the indirect component); the paths still go on from it."""
     rng = rng_in
     p = p_in
     n = n_in
@@ -140,8 +143,9 @@ def vertex_irradiance(
     depth = int(0)
     while depth < MAX_VERTICES:
         o = p + offset_length(scene, p) * n
+        count = not (skip_first != 0 and depth == 0)
         # -- next-event estimation: each light once
-        if params.nee != 0:
+        if params.nee != 0 and count:
             for li in range(scene.n_lights):
                 u = wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng))
                 ls = sample_light(scene, li, p, n, u)  # geometry from the true point; only rays start at o
@@ -174,7 +178,7 @@ def vertex_irradiance(
             l = scene.lights[li]
             if l.kind == RECT or l.kind == DISK or l.kind == SPHERE:
                 t = hit_light(l, o, wi, t_hit)
-                if t > 0.0:
+                if t > 0.0 and count:
                     w = float(1.0)
                     if params.mis != 0 and params.nee != 0:
                         w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, t, -1))
@@ -182,7 +186,7 @@ def vertex_irradiance(
         if face < 0:
             for li in range(scene.n_lights):
                 le = escaped_radiance(scene.lights[li], wi)
-                if le[0] > 0.0 or le[1] > 0.0:
+                if (le[0] > 0.0 or le[1] > 0.0) and count:
                     w = float(1.0)
                     if params.mis != 0 and params.nee != 0:
                         w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, RAY_INF, -1))
@@ -190,7 +194,7 @@ def vertex_irradiance(
             break
         cos_view = -wp.dot(wi, ng)
         le = tri_emitted(scene, face, cos_view)
-        if le[0] > 0.0 or le[1] > 0.0:
+        if (le[0] > 0.0 or le[1] > 0.0) and count:
             w = float(1.0)
             if params.mis != 0 and params.nee != 0 and params.emissive_light >= 0:
                 w = power_heuristic(pdf_b, pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
@@ -225,22 +229,28 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
             t_hit = q.t
             face = q.face
             ng = wp.normalize(q.normal)
+    # Emitters seen straight along the meter's ray, and the first surface's
+    # reflection of the light reaching it straight from emitters, are the
+    # direct component; with skip_direct both are left out.
+    direct = params.skip_direct == 0
     total = wp.vec2(0.0, 0.0)
     for li in range(scene.n_lights):
         l = scene.lights[li]
         if l.kind == RECT or l.kind == DISK or l.kind == SPHERE:
-            if hit_light(l, o, d, t_hit) > 0.0:
+            if hit_light(l, o, d, t_hit) > 0.0 and direct:
                 total += l.emission
     if face < 0:
-        for li in range(scene.n_lights):
-            total += escaped_radiance(scene.lights[li], d)
+        if direct:
+            for li in range(scene.n_lights):
+                total += escaped_radiance(scene.lights[li], d)
         return total
     cos_view = -wp.dot(d, ng)
-    total += tri_emitted(scene, face, cos_view)
+    if direct:
+        total += tri_emitted(scene, face, cos_view)
     rho = scene.albedo[face]
     if rho > 0.0:
         n = wp.where(cos_view > 0.0, ng, -ng)
-        total += vertex_irradiance(scene, o + t_hit * d, n, rho * INV_PI, params, rng)
+        total += vertex_irradiance(scene, o + t_hit * d, n, rho * INV_PI, params, params.skip_direct, rng)
     return total
 
 
@@ -253,7 +263,7 @@ def sample_sensor(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp
     if s.kind == PATCH:
         u = wp.vec2(wp.randf(rng), wp.randf(rng))
         p = p + ((u[0] - 0.5) * s.width) * s.right + ((u[1] - 0.5) * s.height) * s.up
-    return vertex_irradiance(scene, p, s.normal, 1.0, params, rng)
+    return vertex_irradiance(scene, p, s.normal, 1.0, params, params.skip_direct, rng)
 
 
 @wp.kernel
