@@ -25,10 +25,91 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("-o", "--output", metavar="OUT.csv", help="CSV path (default: the config's [output] csv)")
     r.add_argument("--seed", type=int, help="random seed (overrides [simulation] seed)")
     r.add_argument("--samples", type=int, help="samples per sensor (overrides [simulation] samples)")
-    r.add_argument("--method", help="estimator: auto, light, bsdf, mis or path")
+    r.add_argument("--method", help="estimator: auto, analytic, light, bsdf, mis or path")
+    r.add_argument("--rel-error", type=float, metavar="R", help="adaptive: stop each sensor at a 95%% half-width of R × its reading")
     r.add_argument("--device", choices=("cpu", "cuda", "auto"), help="Warp device (auto: CUDA when present)")
     r.add_argument("-q", "--quiet", action="store_true", help="print no table")
+
+    pl = sub.add_parser("plan", help="print how each sensor of a config would be read, and why")
+    pl.add_argument("config", help="run config (.toml)")
+    pl.add_argument("--method", help="an explicit method instead of the config's")
+
+    b = sub.add_parser("bench", help="speed of every estimator on the bundled stages")
+    b.add_argument("configs", nargs="*", help="configs to benchmark (default: the bundled ones)")
+    b.add_argument("--device", choices=("cpu", "cuda", "auto"), default="cpu")
+    b.add_argument("--samples", type=int, default=4096, help="fixed budget per sensor for samples/s (default 4096)")
+
+    c = sub.add_parser("compare", help="error of map A against reference map B (EXR): RMS, largest error, PSNR/SSIM")
+    c.add_argument("a", metavar="A.exr", help="map to judge")
+    c.add_argument("b", metavar="B.exr", help="reference map")
+    c.add_argument("--channel", help="channel to compare (default: grey of R, G, B, else the first common channel)")
+
+    v = sub.add_parser("verify", help="run the reference suite: every bundled closed-form case against its expected value")
+    v.add_argument("--csv", metavar="OUT.csv", help="also write the table as CSV")
+    v.add_argument("--quick", action="store_true", help="looser error target and one reflectance per enclosure")
+    v.add_argument("-k", metavar="TEXT", help="only the cases whose name contains TEXT")
+    v.add_argument("--device", choices=("cpu", "cuda", "auto"), default="cpu", help="Warp device (default cpu)")
     return p
+
+
+def _cmd_verify(args) -> int:
+    from .verify import CASES, format_header, format_row, format_summary, run_suite, write_csv
+
+    cases = tuple(c for c in CASES if args.k is None or args.k in c.name)
+    if not cases:
+        raise UserError(f"-k: no case name contains {args.k!r}")
+    print(format_header(), flush=True)
+    result = run_suite(
+        quick=args.quick, device=args.device, cases=cases,
+        on_row=lambda r: print(format_row(r), flush=True), on_skip=lambda m: print(m, flush=True),
+    )  # fmt: skip
+    print(format_summary(result))
+    if args.csv:
+        write_csv(args.csv, result.rows)
+        print(f"wrote {args.csv}")
+    return 0 if result.passed else 1
+
+
+def _cmd_compare(args) -> int:
+    from .compare import compare_files, format_comparison
+
+    print(format_comparison(compare_files(args.a, args.b, channel=args.channel)))
+    return 0
+
+
+def _cmd_plan(args) -> int:
+    from .config import apply_overrides, load_config
+    from .plan import format_plan, make_plan
+    from .run import collect_sensors, load_scene
+
+    cfg = apply_overrides(load_config(args.config), method=args.method)
+    scene = load_scene(cfg)
+    for w in scene.warnings:
+        print(f"warning: {w}", file=sys.stderr)
+    sensors = [s for s in collect_sensors(cfg, scene) if s.kind.name != "PROBE"]
+    print(format_plan(make_plan(scene, sensors, cfg.simulation.method, cfg.simulation.component), max_rows=10**6))
+    return 0
+
+
+def _cmd_bench(args) -> int:
+    from pathlib import Path
+
+    from .bench import default_configs, format_bench, run_bench
+
+    configs = [Path(c) for c in args.configs] or default_configs()
+    if args.samples < 1:
+        raise UserError(f"--samples: must be >= 1, got {args.samples}")
+    print(format_bench([], header=True))
+    rows, info = run_bench(configs, device=args.device, samples=args.samples)
+    print(f"device {info['device']} ({info['processor']}, {info['threads']} threads); "
+          "time to 1%: every sensor's 95% half-width under 1% of its reading (* = cap reached first)")
+    sc = info.get("scaling")
+    if sc:
+        print(
+            f"CPU scaling, quickstart path tracing: 1 thread {sc['one_thread_samples_per_s']:,.0f} samples/s, "
+            f"{sc['threads']} threads {sc['all_threads_samples_per_s']:,.0f} samples/s: {sc['speedup']:.2f}x"
+        )
+    return 0
 
 
 def _cmd_run(args) -> int:
@@ -38,7 +119,9 @@ def _cmd_run(args) -> int:
     from .run import run
 
     cfg = load_config(args.config)
-    cfg = apply_overrides(cfg, seed=args.seed, samples=args.samples, device=args.device, csv=args.output, method=args.method)
+    cfg = apply_overrides(
+        cfg, seed=args.seed, samples=args.samples, device=args.device, csv=args.output, method=args.method, rel_error=args.rel_error
+    )
     t0 = time.perf_counter()
     bar = ProgressBar("tracing")
     note = (lambda m: print(m, file=sys.stderr))
@@ -53,11 +136,17 @@ def _cmd_run(args) -> int:
     n = rec["sensors"]
     total = rec["samples_total"]
     trace = rec["timings_s"]["trace"]
+    used = ", ".join(f"{m} ×{k}" for m, k in rec["method"]["used"].items())
+    if rec["method"].get("probes"):
+        used += f", probes by {rec['method']['probes']}"
     print(
-        f"{n} sensors, {total:,} samples, method {rec['method']['used']} on {rec['device']} "
+        f"{n} sensors, {total:,} samples, methods {used} on {rec['device']} "
         f"({rec['threads']} threads): traced in {trace:.2f} s ({total / max(trace, 1e-9):,.0f} samples/s), "
         f"{wall:.2f} s in all"
     )
+    ad = rec.get("adaptive")
+    if ad:
+        print(f"{ad['sensors_met']}/{n} sensors reached a 95% half-width of {100 * ad['rel_error']:g}% of their reading")
     print(f"wrote {out.csv_path} and {out.record_path.name}")
     return 0
 
@@ -67,6 +156,14 @@ def main(argv: list[str] | None = None) -> int:
     try:
         if args.command == "run":
             return _cmd_run(args)
+        if args.command == "compare":
+            return _cmd_compare(args)
+        if args.command == "plan":
+            return _cmd_plan(args)
+        if args.command == "bench":
+            return _cmd_bench(args)
+        if args.command == "verify":
+            return _cmd_verify(args)
     except UserError as e:
         print(f"probesim: error: {e}", file=sys.stderr)
         return e.exit_code

@@ -19,6 +19,8 @@ Schema
     stage = "../stages/quickstart.usda"   # required, must exist
     light_units = "photometric"           # or "radiometric"
     radiometric_spectrum = "E"            # or "D65"
+    variants = { reflectance = "rho_0_9" } # optional: variant set -> variant,
+                                          # selected on every prim with that set
 
     [simulation]
     samples = 1024        # int > 0 (first-batch size when adaptive)
@@ -32,11 +34,17 @@ Schema
     max_depth = -1        # int >= -1; -1 = unlimited (Russian roulette)
     threads = 0           # int >= 0; 0 = all cores
 
-    [[sensor]]            # irradiance | radiance | patch
+    [[sensor]]            # irradiance | radiance | patch | probe
     name = "desk"
     kind = "irradiance"
     position = [0, 0, 0.75]
     normal = [0, 0, 1]
+
+    [[sensor]]            # full-sphere light probe
+    name = "centre"
+    kind = "probe"
+    position = [0, 0, 1.5]
+    resolution = [64, 32] # lat-long map (width, height) in pixels, optional
 
     [[grid]]              # expanded into IRRADIANCE sensors "floor[i,j]"
     name = "floor"
@@ -75,6 +83,7 @@ __all__ = [
     "LIGHT_UNITS",
     "SENSOR_KINDS",
     "DEFAULT_MAX_SAMPLES",
+    "DEFAULT_PROBE_RESOLUTION",
     "SensorKind",
     "SimulationConfig",
     "GridConfig",
@@ -96,7 +105,14 @@ SENSOR_KINDS = {
     "irradiance": SensorKind.IRRADIANCE,
     "radiance": SensorKind.RADIANCE,
     "patch": SensorKind.PATCH,
+    "probe": SensorKind.PROBE,
 }
+#: lat-long map size ``(width, height)`` of a probe without ``resolution``
+#: (the same default as a stage-authored probe)
+DEFAULT_PROBE_RESOLUTION = (64, 32)
+#: most pixels in a probe map (1024 × 512): each pixel keeps float64
+#: running sums of 19 integrands in 2 channels (about 600 B)
+MAX_PROBE_PIXELS = 1 << 19
 #: per-sensor sample cap of an adaptive run when ``max_samples`` is absent
 DEFAULT_MAX_SAMPLES = 2**20
 
@@ -104,7 +120,7 @@ _SEED_LIMIT = 2**31
 # below this sine of the angle between two directions they count as parallel
 _PARALLEL_SIN = 1e-6
 
-_TOP_KEYS = ("stage", "light_units", "radiometric_spectrum", "simulation", "sensor", "grid", "output")
+_TOP_KEYS = ("stage", "light_units", "radiometric_spectrum", "variants", "simulation", "sensor", "grid", "output")
 _SIM_KEYS = (
     "samples",
     "seed",
@@ -123,8 +139,9 @@ _SENSOR_KIND_KEYS = {
     "irradiance": ("normal",),
     "radiance": ("direction", "half_angle_deg"),
     "patch": ("normal", "size", "up"),
+    "probe": ("resolution",),
 }
-_SENSOR_ALL_KEYS = _SENSOR_COMMON_KEYS + ("normal", "direction", "half_angle_deg", "size", "up")
+_SENSOR_ALL_KEYS = _SENSOR_COMMON_KEYS + ("normal", "direction", "half_angle_deg", "size", "up", "resolution")
 _GRID_KEYS = ("name", "position", "normal", "size", "up", "spacing")
 _OUTPUT_KEYS = ("csv",)
 
@@ -288,6 +305,10 @@ class RunConfig:
     overrides : dict
         Command-line values applied by :func:`apply_overrides` (name to the
         value given), for the run record; empty for a plain config.
+    variants : dict of str to str
+        Variant selections, variant-set name to variant name, applied to the
+        stage before it is read (whether the stage offers them is checked
+        when it is read); empty: the stage's own selections.
     """
 
     path: Path
@@ -300,6 +321,7 @@ class RunConfig:
     output: OutputConfig
     raw: dict = field(default_factory=dict)
     overrides: dict = field(default_factory=dict)
+    variants: dict[str, str] = field(default_factory=dict)
 
 
 # --------------------------------------------------------------------------- checking helpers
@@ -478,6 +500,21 @@ def _simulation(ck: _Checker, value: Any) -> SimulationConfig:
     return SimulationConfig(**out)
 
 
+def _variants(ck: _Checker, value: Any) -> dict[str, str]:
+    """``variants``: a table of variant-set name -> variant name, all strings."""
+    table = ck.table(value, "variants")
+    out: dict[str, str] = {}
+    for name, choice in table.items():
+        key = f"variants.{name}"
+        if not name.strip():
+            raise ck.fail(key, "empty variant set name")
+        choice = ck.string(choice, key)
+        if not choice.strip():
+            raise ck.fail(key, "empty variant name")
+        out[name] = choice
+    return out
+
+
 def _sensor(ck: _Checker, table: dict, index: int) -> Sensor:
     key = f"sensor[{index}]"
     ck.keys(table, _SENSOR_ALL_KEYS, key)
@@ -509,6 +546,23 @@ def _sensor(ck: _Checker, table: dict, index: int) -> Sensor:
         return Sensor(
             name=name, kind=kind, position=position, normal=look, half_angle=math.radians(half), source=key
         )
+    if kind == SensorKind.PROBE:
+        res = DEFAULT_PROBE_RESOLUTION
+        if "resolution" in table:
+            value = table["resolution"]
+            rkey = f"{key}.resolution"
+            if not isinstance(value, list) or len(value) != 2:
+                got = f"{len(value)} element(s)" if isinstance(value, list) else _toml_type(value)
+                raise ck.fail(rkey, f"expected an array of 2 integers (width, height), got {got}")
+            res = tuple(ck.integer(v, f"{rkey}[{k}]", lo=1) for k, v in enumerate(value))
+            if res[0] * res[1] > MAX_PROBE_PIXELS:
+                raise ck.fail(rkey, f"{res[0]} x {res[1]} pixels is more than the {MAX_PROBE_PIXELS} a probe map may hold")
+        # a probe has no facing; normal and up are placeholders (the map's
+        # frame is the world's, see simulator.probe_engine)
+        return Sensor(
+            name=name, kind=kind, position=position, normal=np.array([0.0, 0.0, 1.0]),
+            up=np.array([0.0, 1.0, 0.0]), resolution=(int(res[0]), int(res[1])), source=key,
+        )  # fmt: skip
     # patch
     normal = ck.direction(_require(ck, table, "normal", key), f"{key}.normal")
     size = ck.size(_require(ck, table, "size", key), f"{key}.size")
@@ -647,6 +701,7 @@ def load_config(path: str | os.PathLike) -> RunConfig:
     if "radiometric_spectrum" in raw:
         spectrum = ck.choice(raw["radiometric_spectrum"], "radiometric_spectrum", tuple(SPECTRA), "spectrum")
 
+    variants = _variants(ck, raw["variants"]) if "variants" in raw else {}
     simulation = _simulation(ck, raw["simulation"]) if "simulation" in raw else SimulationConfig()
 
     sensors: list[Sensor] = []
@@ -688,6 +743,7 @@ def load_config(path: str | os.PathLike) -> RunConfig:
         grids=grids,
         output=output,
         raw=raw,
+        variants=variants,
     )
 
 
@@ -699,6 +755,7 @@ def apply_overrides(
     device: str | None = None,
     csv: str | os.PathLike | None = None,
     method: str | None = None,
+    rel_error: float | None = None,
 ) -> RunConfig:
     """Apply command-line flags to a config.
 
@@ -716,6 +773,8 @@ def apply_overrides(
         Replaces ``output.csv``; resolved against the current directory.
     method : str, optional
         Replaces ``simulation.method``; one of :data:`METHODS`.
+    rel_error : float, optional
+        Replaces ``simulation.rel_error`` (makes the run adaptive); in (0, 1).
 
     Returns
     -------
@@ -743,6 +802,12 @@ def apply_overrides(
     if method is not None:
         sim["method"] = ck.choice(method, "--method", METHODS, "method")
         given["method"] = method
+    if rel_error is not None:
+        r = ck.number(rel_error, "--rel-error")
+        if not 0.0 < r < 1.0:
+            raise ck.fail("--rel-error", f"must be between 0 and 1 (exclusive), got {r:g}")
+        sim["rel_error"] = r
+        given["rel_error"] = r
     output = cfg.output
     if csv is not None:
         text = os.fspath(csv)

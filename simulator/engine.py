@@ -174,6 +174,8 @@ class Engine:
         # kernels.estimators.offset_length): 170× float32 resolution, 10 µm at
         # room scale.
         rec.eps = 1.0e-5
+        rec.ray_counts = wp.zeros(1, dtype=wp.int32)
+        rec.light_mask = wp.ones(max(1, len(self.sensors) * (len(self.scene.lights) + 1)), dtype=wp.int32)
         n_tri = g.n_triangles
         pts = g.points.astype(np.float32) if n_tri else np.zeros((3, 3), np.float32)
         tris = g.triangles.astype(np.int32) if n_tri else np.array([[0, 1, 2]], np.int32)
@@ -199,6 +201,7 @@ class Engine:
         # (radiance × area × sides), the best choice when all are visible.
         emit_ids = np.flatnonzero(np.any(emission > 0, axis=1)) if n_tri else np.zeros(0, np.int64)
         prob = np.zeros(max(n_tri, 1), np.float64)
+        self._map_arrays = []  # textured domes' device arrays, referenced only by pointer from LightRec
         lights = [self._light_rec(K, l) for l in self.scene.lights]
         self.emissive_light = -1
         if len(emit_ids):
@@ -229,10 +232,6 @@ class Engine:
     def _light_rec(self, K, l: Light):
         import warp as wp
 
-        if l.kind == LightKind.CYLINDER:
-            raise UserError(f"{self.scene.path}: {l.name}: CylinderLight is not supported yet")
-        if l.kind == LightKind.DOME and l.texture:
-            raise UserError(f"{self.scene.path}: {l.name}: textured DomeLight is not supported yet")
         r = K.LightRec()
         r.kind = int(l.kind)
         r.position = wp.vec3(*map(float, l.position))
@@ -249,8 +248,32 @@ class Engine:
             LightKind.RECT: l.width * l.height,
             LightKind.DISK: math.pi * l.radius**2,
             LightKind.SPHERE: 4.0 * math.pi * l.radius**2,
+            LightKind.CYLINDER: 2.0 * math.pi * l.radius * l.length,
         }.get(l.kind, 0.0)
+        r.length = float(l.length)
+        if l.kind == LightKind.DOME and l.texture_map is not None:
+            self._upload_dome_map(wp, r, l.texture_map)
         return r
+
+    def _upload_dome_map(self, wp, r, grey: np.ndarray) -> None:
+        """Put a dome's lat-long map and its sampling CDFs on the light record.
+
+        Texels are importance-sampled ∝ value × sinθ (simulator.latlong); the
+        arrays are kept alive here because the device record holds only
+        their pointers. The CDFs are float32: a texel whose share of its row
+        (or a row whose share of the map) is below float32 resolution (~6e-8)
+        may never be drawn by light sampling; bsdf and mis still see it.
+        """
+        from . import latlong
+
+        grey = np.asarray(grey, np.float64)
+        h, w = grey.shape
+        marg, cond = latlong.build_distribution(latlong.sampling_weights(grey))
+        r.has_map, r.map_w, r.map_h = 1, int(w), int(h)
+        r.map = wp.array(grey.astype(np.float32).ravel(), dtype=float)
+        r.map_marg = wp.array(marg.astype(np.float32), dtype=float)
+        r.map_cond = wp.array(cond.astype(np.float32).ravel(), dtype=float)
+        self._map_arrays += [r.map, r.map_marg, r.map_cond]
 
     def _upload_sensors(self, wp, K):
         recs = []
@@ -280,7 +303,20 @@ class Engine:
         p.skip_direct = 1 if component == "indirect" else 0
         p.emissive_light = self.emissive_light
         p.seed = int(seed) & 0x7FFFFFFF
+        p.count_rays = 0
+        p.thread = 0
+        p.mask_row = -1
         return p
+
+    def set_light_mask(self, mask: np.ndarray) -> None:
+        """Lights to skip per sensor at its first vertex: ``mask`` (S, L) over
+        the scene's lights, 0 = wholly behind the sensor (see plan.lights_behind)."""
+        wp = _warp()
+        n_l = int(self._scene_rec.n_lights)
+        full = np.ones((len(self.sensors), n_l), np.int32)
+        full[:, : mask.shape[1]] = mask
+        with wp.ScopedDevice(self.device):
+            self._scene_rec.light_mask = wp.array(full.reshape(-1) if full.size else np.ones(1, np.int32), dtype=wp.int32)
 
     def _launch(self, params, sensor_ids: np.ndarray, first: np.ndarray, count: np.ndarray):
         """Draw count[i] samples of sensor_ids[i], starting at sample first[i].
@@ -299,6 +335,8 @@ class Engine:
             a_sensor = wp.array(t_sensor, dtype=wp.int32)
             a_first = wp.array(t_first, dtype=wp.int32)
             a_count = wp.array(t_count, dtype=wp.int32)
+            if params.count_rays:
+                self._scene_rec.ray_counts = wp.zeros(n, dtype=wp.int32)
             shift = wp.empty(n, dtype=wp.vec2d)
             s1 = wp.empty(n, dtype=wp.vec2d)
             s2 = wp.empty(n, dtype=wp.vec2d)
@@ -326,10 +364,48 @@ class Engine:
                     w.join()
             wp.synchronize_device()
             out = RunningStats.reduce_blocks(t_sensor, t_count, shift.numpy(), s1.numpy(), s2.numpy())
+            if params.count_rays:
+                self.rays_traced += int(self._scene_rec.ray_counts.numpy().sum())
             nonfinite = np.add.reduceat(bad.numpy(), np.flatnonzero(np.r_[True, t_sensor[1:] != t_sensor[:-1]]))
         return (*out, nonfinite)
 
     # ------------------------------------------------------------ runs
+
+    def run_probes(self, probes: list[Sensor], method: str, **kwargs) -> list:
+        """Lat-long maps and sphere integrals of PROBE sensors (which
+        :meth:`run` does not read) on this engine's scene and device; see
+        :func:`simulator.probe_engine.run_probes` for the arguments and the
+        estimator. Returns a list of ``ProbeResult``."""
+        from .probe_engine import run_probes
+
+        return run_probes(self, probes, method, **kwargs)
+
+    def _run_analytic(self, sensor_ids: np.ndarray) -> EngineResult:
+        """Closed-form readings (the caller has checked they apply): exact up
+        to float32 rounding, so the standard error is 0 and no samples are drawn."""
+        wp = _warp()
+        n_s = len(self.sensors)
+        t0 = time.perf_counter()
+        mean = np.zeros((n_s, 2))
+        with wp.ScopedDevice(self.device):
+            ids = wp.array(sensor_ids.astype(np.int32), dtype=wp.int32)
+            out = wp.empty(len(sensor_ids), dtype=wp.vec2d)
+            if len(sensor_ids):
+                wp.launch(self._K.analytic_kernel, dim=len(sensor_ids), inputs=[self._scene_rec, self._sensor_arr, ids], outputs=[out])
+                mean[sensor_ids] = out.numpy().astype(np.float64)
+        wall = time.perf_counter() - t0
+        return EngineResult(
+            method="analytic",
+            device=self.device,
+            mean=mean,
+            stderr=np.zeros((n_s, 2)),
+            samples=np.zeros(n_s, np.int64),
+            seconds=np.full(n_s, wall / max(n_s, 1)),
+            target_met=None,
+            non_finite=np.zeros(n_s, np.int64),
+            wall_s=wall,
+            warnings=list(self.warnings),
+        )
 
     def run(
         self,
@@ -344,6 +420,8 @@ class Engine:
         max_depth: int = -1,
         component: str = "total",
         progress: Callable[[Progress], None] | None = None,
+        count_rays: bool = False,
+        sensor_ids: np.ndarray | None = None,
     ) -> EngineResult:
         """Estimate every sensor with ``method`` (light, bsdf, mis or path).
 
@@ -360,20 +438,29 @@ class Engine:
             raise UserError(f"simulation.component: {component!r} is not one of {', '.join(COMPONENTS)}")
         if component == "indirect" and not METHOD_FLAGS[method][3]:
             raise UserError(f"simulation.component: 'indirect' needs method path, not {method!r}")
+        if any(s.kind == SensorKind.PROBE for s in self.sensors):
+            raise ValueError("probe sensors are read by Engine.run_probes, not Engine.run")
+        ids_all = np.arange(len(self.sensors)) if sensor_ids is None else np.asarray(sensor_ids, np.int64)
+        if method == "analytic":
+            return self._run_analytic(ids_all)
         if method not in METHOD_FLAGS:
             raise UserError(f"method {method!r} has no Monte Carlo kernel (expected one of {sorted(METHOD_FLAGS)})")
         n_s = len(self.sensors)
         params = self._params(method, seed, max_depth, component)
+        params.count_rays = 1 if count_rays else 0
+        self.rays_traced = 0  # shadow and path rays, counted when count_rays
         stats = RunningStats(n_s)
         seconds = np.zeros(n_s)
         nonfinite = np.zeros(n_s, np.int64)
         adaptive = rel_error is not None
         cap = max_samples if adaptive else samples
-        active = np.ones(n_s, bool)
+        active = np.zeros(n_s, bool)
+        active[ids_all] = True
+        n_run = len(ids_all)
         met = np.zeros(n_s, bool)
         want = np.full(n_s, min(samples, cap), np.int64)  # next batch per sensor
         if not adaptive:
-            per = max(BLOCK, SAMPLES_PER_LAUNCH // max(n_s, 1))
+            per = max(BLOCK, SAMPLES_PER_LAUNCH // max(n_run, 1))
             want = np.minimum(want, per)
         t0 = time.perf_counter()
         while active.any():
@@ -404,9 +491,10 @@ class Engine:
             if time_limit_s is not None and elapsed >= time_limit_s:
                 active[:] = False
             if progress is not None:
-                frac = stats.count.sum() / max(1, cap * n_s) if not adaptive else (~active).mean()
+                done_n = n_run - int(active.sum())
+                frac = stats.count.sum() / max(1, cap * n_run) if not adaptive else done_n / max(n_run, 1)
                 eta = elapsed / frac * (1 - frac) if frac > 0 and active.any() else 0.0
-                progress(Progress(int((~active).sum()), n_s, int(stats.count.sum()), elapsed, eta))
+                progress(Progress(done_n, n_run, int(stats.count.sum()), elapsed, eta))
         wall = time.perf_counter() - t0
         warnings = list(self.warnings)
         if method == "bsdf" and any(l.is_delta for l in self.scene.lights):

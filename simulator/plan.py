@@ -1,18 +1,33 @@
-"""Which estimator a run uses, and why.
+"""The plan: which estimator reads each sensor, and why.
 
-``method = "auto"`` picks the cheapest estimator that the scene allows:
-direct light sampling where no surface reflects, full paths where one does.
-An explicit method is used as asked.
+``method = "auto"`` models no more of the scene than a reading needs. Per
+sensor, in order:
+
+1. **closed form** (``analytic``) when no surface can block any light the
+   sensor sees (a conservative geometric proof, :func:`analytic_refusal`)
+   and every surface in front of it is black, so no reflected light reaches
+   it either;
+2. **direct light sampling** (``light``) when no surface the sensor can see
+   reflects (albedo 0, or no geometry in front of it): bounces would add
+   nothing;
+3. **paths** (``path``) otherwise: interreflection is part of the reading.
+
+Lights wholly behind a sensor's plane contribute nothing to it and are not
+sampled for it. Materials and light colours are grey, so one spectral
+channel is traced (with its radiometric and photometric totals). An explicit
+method overrides the plan for every sensor.
 """
 
 from __future__ import annotations
 
+from dataclasses import asdict, dataclass, field
+
 import numpy as np
 
 from .errors import UserError
-from .scene.model import Scene, Sensor
+from .scene.model import LightKind, Scene, Sensor, SensorKind
 
-__all__ = ["choose_method", "MC_METHODS"]
+__all__ = ["MC_METHODS", "SensorPlan", "Plan", "make_plan", "choose_method", "analytic_refusal", "lights_behind", "format_plan"]
 
 #: methods with a Monte Carlo kernel
 MC_METHODS = ("light", "bsdf", "mis", "path")
@@ -27,8 +42,247 @@ def choose_method(scene: Scene, sensors: list[Sensor], requested: str, component
         if reflects:
             return "path", "auto: surfaces reflect (albedo > 0), so interreflection needs paths"
         return "light", "auto: no surface reflects, so direct light sampling is exact in expectation and cheapest"
+    if requested == "analytic":
+        for sensor in sensors:
+            why = analytic_refusal(scene, sensor)
+            if why is not None:
+                raise UserError(f"method analytic cannot read sensor {sensor.name!r}: {why} (use light, mis, path or auto)")
+        return "analytic", "as requested; every sensor has a closed form and nothing can block its lights"
     if requested in MC_METHODS:
         if requested != "path" and reflects:
             return requested, f"as requested; direct light only: interreflection is ignored ({requested} does not bounce)"
         return requested, "as requested"
     raise UserError(f"simulation.method: {requested!r} is not available yet (use auto, light, bsdf, mis or path)")
+
+
+def _front_of_plane(points: np.ndarray, origin: np.ndarray, normal: np.ndarray, tol: float) -> np.ndarray:
+    """Per triangle: does any vertex lie strictly in front of the plane?"""
+    h = (points - origin) @ normal  # (T, 3)
+    return np.any(h > tol, axis=1)
+
+
+def analytic_refusal(scene: Scene, sensor: Sensor) -> str | None:
+    """Why the closed form cannot give this sensor's reading, or None if it can.
+
+    Conservative: a triangle that is not wholly behind the sensor's plane may
+    block a light unless it is wholly behind that light's emitting plane (rect
+    and disk lights, which emit to one side only); any such triangle refuses
+    the closed form. Patches have a closed form for point lights only, radiance
+    meters and probes none.
+    """
+    if sensor.kind == SensorKind.PATCH:
+        if any(l.kind != LightKind.POINT for l in scene.lights):
+            return "a patch has a closed form for point lights only"
+    elif sensor.kind != SensorKind.IRRADIANCE:
+        return f"no closed form for a {sensor.kind.name.lower()} sensor"
+    g = scene.geometry
+    emissive = np.any(g.emission > 0, axis=1) if g.n_triangles else np.zeros(0, bool)
+    for l in scene.lights:
+        if l.kind == LightKind.CYLINDER:
+            return f"no closed form for the CylinderLight {l.name}"
+        if l.kind == LightKind.DOME and l.texture:
+            return f"no closed form for the textured DomeLight {l.name}"
+        if l.kind == LightKind.DISK and sensor.kind == SensorKind.IRRADIANCE:
+            n = sensor.normal
+            a, b = l.frame[:, 0] @ n, l.frame[:, 1] @ n
+            if (l.position - sensor.position) @ n - l.radius * np.hypot(a, b) <= 0 and (l.position - sensor.position) @ l.frame[:, 2] > 0:
+                return f"the DiskLight {l.name} straddles the sensor's horizon"
+    if g.n_triangles == 0:
+        return None
+    pts = g.points[g.triangles]  # (T, 3, 3)
+    tol = 1e-9 * max(1.0, float(np.abs(pts).max()))
+    suspects = _front_of_plane(pts, sensor.position, sensor.normal, tol)  # a patch is planar too
+    if not suspects.any():
+        return None
+    planar = [l for l in scene.lights if l.kind in (LightKind.RECT, LightKind.DISK)]
+    if len(planar) == len(scene.lights) and not emissive.any():
+        behind_all = np.ones(len(pts), bool)
+        for l in planar:  # wholly on the non-emitting side of the light's plane
+            behind_all &= np.all((pts - l.position) @ l.frame[:, 2] >= -tol, axis=1)
+        suspects &= ~behind_all
+    if emissive.any() and not (suspects & ~emissive).any():
+        # only emitters in front: they cannot shadow one another if they are coplanar
+        e = pts[emissive]
+        n0 = np.cross(e[0, 1] - e[0, 0], e[0, 2] - e[0, 0])
+        n0 /= np.linalg.norm(n0)
+        if np.all(np.abs((e - e[0, 0]) @ n0) <= tol) and len(scene.lights) == 0:
+            return None
+    if suspects.any():
+        name = g.prim_names[g.prim[np.flatnonzero(suspects)[0]]] if g.prim_names else "a surface"
+        return f"{name} may block a light"
+    return None
+
+
+# ---------------------------------------------------------------- per-sensor plans
+
+
+@dataclass
+class SensorPlan:
+    """How one sensor is read.
+
+    Attributes
+    ----------
+    name, kind : str
+    method : str
+    bounces : bool
+        Whether paths follow reflections for this sensor.
+    reason : str
+    lights : list of str
+        Lights that can reach the sensor (sampled for it).
+    culled : list of str
+        Lights wholly behind its plane: not sampled for it.
+    geometry : str
+        What of the scene matters: ``none``, ``black occluders`` or
+        ``reflecting surfaces`` in front of the sensor.
+    """
+
+    name: str
+    kind: str
+    method: str
+    bounces: bool
+    reason: str
+    lights: list[str] = field(default_factory=list)
+    culled: list[str] = field(default_factory=list)
+    geometry: str = "none"
+
+
+@dataclass
+class Plan:
+    requested: str
+    component: str
+    channels: int
+    channel_reason: str
+    sensors: list[SensorPlan]
+
+    def groups(self) -> dict[str, np.ndarray]:
+        """Sensor indices per method, in first-use order."""
+        out: dict[str, list[int]] = {}
+        for i, sp in enumerate(self.sensors):
+            out.setdefault(sp.method, []).append(i)
+        return {m: np.asarray(ix, np.int64) for m, ix in out.items()}
+
+    def light_mask(self, light_names: list[str]) -> np.ndarray:
+        """(S, L) int32: 1 where light l is sampled for sensor s at its first vertex."""
+        mask = np.ones((len(self.sensors), len(light_names)), np.int32)
+        col = {n: j for j, n in enumerate(light_names)}
+        for i, sp in enumerate(self.sensors):
+            for n in sp.culled:
+                mask[i, col[n]] = 0
+        return mask
+
+    def to_record(self) -> dict:
+        return {
+            "requested": self.requested,
+            "component": self.component,
+            "channels": self.channels,
+            "channel_reason": self.channel_reason,
+            "methods": {m: len(ix) for m, ix in self.groups().items()},
+            "sensors": [asdict(sp) for sp in self.sensors],
+        }
+
+
+def lights_behind(scene: Scene, sensor: Sensor) -> list[str]:
+    """Lights that cannot reach the sensor's front side: wholly behind the
+    plane through it (irradiance and patch sensors), or emitting away from it."""
+    if sensor.kind not in (SensorKind.IRRADIANCE, SensorKind.PATCH):
+        return []
+    p, n = sensor.position, sensor.normal
+    out = []
+    for l in scene.lights:
+        behind = False
+        if l.kind == LightKind.POINT:
+            behind = (l.position - p) @ n <= 0
+        elif l.kind == LightKind.SPHERE:
+            behind = (l.position - p) @ n <= -l.radius
+        elif l.kind in (LightKind.RECT, LightKind.DISK):
+            ex, ey, ez = l.frame[:, 0], l.frame[:, 1], l.frame[:, 2]
+            if l.kind == LightKind.RECT:
+                hx, hy = 0.5 * l.width * ex, 0.5 * l.height * ey
+                corners = l.position + np.array([-hx - hy, hx - hy, hx + hy, -hx + hy])
+                wholly = np.all((corners - p) @ n <= 0)
+            else:
+                wholly = (l.position - p) @ n + l.radius * np.hypot(ex @ n, ey @ n) <= 0
+            # one-sided: a receiver on the light's back side sees nothing of it
+            # (a patch is planar, so the test at its centre holds for all of it
+            # only when the light is wholly on one side: test its corners too)
+            pts = [p] if sensor.kind == SensorKind.IRRADIANCE else _patch_corners(sensor)
+            back = all((q - l.position) @ ez >= 0 for q in pts)
+            behind = bool(wholly or back)
+        elif l.kind == LightKind.DISTANT:
+            # the cone of directions toward the light, half-angle θ, around +ez
+            behind = l.frame[:, 2] @ n <= -np.sin(l.half_angle) if l.half_angle > 0 else l.frame[:, 2] @ n <= 0
+        if behind:
+            out.append(l.name)
+    return out
+
+
+def _patch_corners(s: Sensor) -> list[np.ndarray]:
+    right = np.cross(s.up, s.normal)
+    right /= np.linalg.norm(right)
+    hx, hy = 0.5 * s.size[0] * right, 0.5 * s.size[1] * s.up
+    return [s.position + a * hx + b * hy for a in (-1, 1) for b in (-1, 1)]
+
+
+def _reflecting_in_front(scene: Scene, sensor: Sensor) -> tuple[str, bool]:
+    """(geometry label, whether any surface the sensor can see reflects)."""
+    g = scene.geometry
+    if g.n_triangles == 0:
+        return "none", False
+    if sensor.kind in (SensorKind.IRRADIANCE, SensorKind.PATCH):
+        pts = g.points[g.triangles]
+        tol = 1e-9 * max(1.0, float(np.abs(pts).max()))
+        front = _front_of_plane(pts, sensor.position, sensor.normal, tol)
+    else:  # meters and probes look everywhere
+        front = np.ones(g.n_triangles, bool)
+    if not front.any():
+        return "none", False
+    reflects = bool(np.any(g.albedo[front] > 0))
+    return ("reflecting surfaces" if reflects else "black occluders"), reflects
+
+
+def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", component: str = "total") -> Plan:
+    """Plan how each sensor is read (see the module docstring for the rules).
+
+    An explicit ``requested`` method applies to every sensor (``analytic``
+    raises :class:`UserError` naming a sensor it cannot read).
+    """
+    grey = "materials and lights are grey (colours reduced to luminance grey): one spectral channel"
+    plans = []
+    for s in sensors:
+        culled = lights_behind(scene, s)
+        lights = [l.name for l in scene.lights if l.name not in culled]
+        if scene.geometry.n_triangles and np.any(scene.geometry.emission > 0):
+            lights.append("emissive surfaces")
+        geometry, reflects = _reflecting_in_front(scene, s)
+        kind = s.kind.name.lower()
+        if requested != "auto":
+            if requested == "analytic" and (why := analytic_refusal(scene, s)) is not None:
+                raise UserError(f"method analytic cannot read sensor {s.name!r}: {why} (use light, mis, path or auto)")
+            bounces = requested == "path"
+            reason = "as requested" + ("" if bounces or not reflects else f"; {requested} ignores the interreflection this sensor sees")
+            plans.append(SensorPlan(s.name, kind, requested, bounces, reason, lights, culled, geometry))
+            continue
+        refusal = analytic_refusal(scene, s)
+        if component == "indirect":
+            method, reason = "path", "indirect light has been reflected on the way: paths"
+        elif refusal is None and (not reflects or component == "direct"):
+            method, reason = "analytic", "nothing can block its lights" + ("" if component == "direct" else " and nothing in front of it reflects: closed form")
+        elif not reflects or component == "direct":
+            why = refusal or "no closed form"
+            method, reason = "light", f"no surface it sees reflects, so direct light is all ({why}): light sampling"
+        else:
+            method, reason = "path", "surfaces it sees reflect: interreflection needs paths"
+        plans.append(SensorPlan(s.name, kind, method, method == "path", reason, lights, culled, geometry))
+    return Plan(requested, component, 1, grey, plans)
+
+
+def format_plan(plan: Plan, max_rows: int = 40) -> str:
+    """The plan as a terminal table, one line per sensor (long lists summarised)."""
+    lines = [f"{'sensor':<24} {'kind':<10} {'method':<9} {'lights':>6} {'culled':>6}  {'geometry':<20} reason"]
+    for sp in plan.sensors[:max_rows]:
+        lines.append(f"{sp.name[:24]:<24} {sp.kind:<10} {sp.method:<9} {len(sp.lights):>6} {len(sp.culled):>6}  {sp.geometry:<20} {sp.reason}")
+    if len(plan.sensors) > max_rows:
+        lines.append(f"... {len(plan.sensors) - max_rows} more sensors")
+    counts = ", ".join(f"{m}: {len(ix)}" for m, ix in plan.groups().items())
+    lines.append(f"methods: {counts}; component {plan.component}; channels: {plan.channels} ({plan.channel_reason})")
+    return "\n".join(lines)

@@ -19,7 +19,7 @@ import numpy as np
 
 from .scene.model import Sensor, SensorKind
 
-__all__ = ["COLUMNS", "Reading", "readings_from", "write_outputs", "format_table"]
+__all__ = ["COLUMNS", "PROBE_COLUMNS", "Reading", "readings_from", "probe_readings", "write_outputs", "format_table"]
 
 #: CSV columns, in order; units are in the names. A column that does not
 #: apply to a sensor's kind is left empty, never 0.
@@ -28,8 +28,15 @@ COLUMNS = (
     "irradiance_W_m2", "irradiance_stderr_W_m2", "illuminance_lx", "illuminance_stderr_lx",
     "radiance_W_m2_sr", "radiance_stderr_W_m2_sr", "luminance_cd_m2", "luminance_stderr_cd_m2",
     "flux_W", "flux_stderr_W", "luminous_flux_lm", "luminous_flux_stderr_lm",
+    "scalar_irradiance_W_m2", "scalar_irradiance_stderr_W_m2", "scalar_illuminance_lx", "scalar_illuminance_stderr_lx",
+    "mean_direction_x", "mean_direction_y", "mean_direction_z", "mean_direction_stderr_deg",
     "samples", "seconds", "method", "target_met",
 )  # fmt: skip
+#: columns only a probe fills: scalar irradiance (fluence rate, ∫L dω over the
+#: sphere) and the unit mean direction of arrival (normalised ∫L·ω dω,
+#: radiometric) with its angular standard error; the six face irradiances and
+#: SH coefficients go to ``<csv stem>.probes.json`` (see simulator.maps)
+PROBE_COLUMNS = COLUMNS[COLUMNS.index("scalar_irradiance_W_m2") : COLUMNS.index("samples")]
 
 _KIND_NAMES = {
     SensorKind.IRRADIANCE: "irradiance",
@@ -51,10 +58,11 @@ class Reading:
     target_met: bool | None
 
 
-def readings_from(sensors: list[Sensor], mean: np.ndarray, stderr: np.ndarray, samples, seconds, method: str, target_met) -> list[Reading]:
+def readings_from(sensors: list[Sensor], mean: np.ndarray, stderr: np.ndarray, samples, seconds, method, target_met) -> list[Reading]:
     """Turn per-sensor estimates (channel 0 radiometric, 1 photometric) into rows.
 
     A patch's estimate is its mean irradiance; its flux is that × its area.
+    ``method`` is one name for all, or one per sensor.
     """
     rows = []
     for i, s in enumerate(sensors):
@@ -68,7 +76,27 @@ def readings_from(sensors: list[Sensor], mean: np.ndarray, stderr: np.ndarray, s
             area = s.size[0] * s.size[1]
             v.update(flux_W=m[0] * area, flux_stderr_W=e[0] * area, luminous_flux_lm=m[1] * area, luminous_flux_stderr_lm=e[1] * area)
         met = None if target_met is None else bool(target_met[i])
-        rows.append(Reading(s, {k: float(x) for k, x in v.items()}, int(samples[i]), float(seconds[i]), method, met))
+        m_i = method if isinstance(method, str) else method[i]
+        rows.append(Reading(s, {k: float(x) for k, x in v.items()}, int(samples[i]), float(seconds[i]), m_i, met))
+    return rows
+
+
+def probe_readings(results, method: str) -> list[Reading]:
+    """Rows of probes from :class:`simulator.probe_engine.ProbeResult` objects.
+
+    A probe fills :data:`PROBE_COLUMNS` only; ``samples`` counts directions.
+    """
+    rows = []
+    for r in results:
+        (val, se) = r.scalar_irradiance
+        m, m_se = r.mean_direction(0)
+        v = {
+            "scalar_irradiance_W_m2": val[0], "scalar_irradiance_stderr_W_m2": se[0],
+            "scalar_illuminance_lx": val[1], "scalar_illuminance_stderr_lx": se[1],
+        }  # fmt: skip
+        if np.all(np.isfinite(m)):  # no light at all: no direction (left empty)
+            v.update(mean_direction_x=m[0], mean_direction_y=m[1], mean_direction_z=m[2], mean_direction_stderr_deg=m_se)
+        rows.append(Reading(r.sensor, {k: float(x) for k, x in v.items()}, int(r.samples), float(r.seconds), method, r.target_met))
     return rows
 
 
@@ -93,7 +121,7 @@ def _csv_text(rows: list[Reading]) -> str:
         rec = {
             "sensor": s.name, "kind": _KIND_NAMES[s.kind],
             "x": s.position[0], "y": s.position[1], "z": s.position[2],
-            "dx": s.normal[0], "dy": s.normal[1], "dz": s.normal[2],
+            **({} if s.kind == SensorKind.PROBE else {"dx": s.normal[0], "dy": s.normal[1], "dz": s.normal[2]}),
             "samples": r.samples, "seconds": r.seconds, "method": r.method, "target_met": r.target_met,
             **r.values,
         }  # fmt: skip
@@ -101,16 +129,26 @@ def _csv_text(rows: list[Reading]) -> str:
     return buf.getvalue()
 
 
-def _atomic_write_all(files: dict[Path, str]) -> None:
-    """Write every file to a temporary sibling first, then rename them all."""
+def _atomic_write_all(files: dict) -> None:
+    """Write every file to a temporary sibling first, then rename them all.
+
+    A file's content is text, bytes, or a callable that writes the file at
+    the (temporary) path it is given."""
     staged = []
     try:
-        for path, text in files.items():
+        for path, content in files.items():
             path.parent.mkdir(parents=True, exist_ok=True)
             fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-            with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
-                f.write(text)
             staged.append((tmp, path))
+            if callable(content):
+                os.close(fd)
+                content(Path(tmp))
+            elif isinstance(content, bytes):
+                with os.fdopen(fd, "wb") as f:
+                    f.write(content)
+            else:
+                with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
+                    f.write(content)
         for tmp, path in staged:
             os.replace(tmp, path)
     except BaseException:
@@ -120,14 +158,17 @@ def _atomic_write_all(files: dict[Path, str]) -> None:
         raise
 
 
-def write_outputs(csv_path: Path, rows: list[Reading], record: dict) -> Path:
-    """Write the CSV and its run record (``<csv stem>.run.json``) atomically.
+def write_outputs(csv_path: Path, rows: list[Reading], record: dict, extra: dict | None = None) -> Path:
+    """Write the CSV, its run record (``<csv stem>.run.json``) and ``extra``
+    files (path → text, bytes or a writer callable, e.g. from
+    :mod:`simulator.maps`) atomically, all renamed into place together.
 
     Returns the run record's path.
     """
     record_path = csv_path.with_name(csv_path.stem + ".run.json")
     _atomic_write_all(
         {
+            **(extra or {}),
             csv_path: _csv_text(rows),
             record_path: json.dumps(record, indent=2, sort_keys=True, default=_json_default) + "\n",
         }
@@ -151,7 +192,9 @@ def format_table(rows: list[Reading], max_rows: int = 30) -> str:
     shown = rows if len(rows) <= max_rows else [r for r in rows if r.sensor.grid is None][:max_rows]
     for r in shown:
         v = r.values
-        if r.sensor.kind == SensorKind.RADIANCE:
+        if r.sensor.kind == SensorKind.PROBE:  # scalar irradiance (fluence rate)
+            val, err, unit, ph, phu = v["scalar_irradiance_W_m2"], v["scalar_irradiance_stderr_W_m2"], "W/m²", v["scalar_illuminance_lx"], "lx"
+        elif r.sensor.kind == SensorKind.RADIANCE:
             val, err, unit, ph, phu = v["radiance_W_m2_sr"], v["radiance_stderr_W_m2_sr"], "W/m²/sr", v["luminance_cd_m2"], "cd/m²"
         elif r.sensor.kind == SensorKind.PATCH:
             val, err, unit, ph, phu = v["flux_W"], v["flux_stderr_W"], "W", v["luminous_flux_lm"], "lm"

@@ -9,12 +9,15 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+
 from . import __version__
 from .config import RunConfig
 from .errors import UserError
-from .plan import choose_method
-from .results import Reading, readings_from, write_outputs
-from .scene.model import Scene, Sensor
+from .maps import grid_outputs, probe_outputs
+from .plan import Plan, choose_method, make_plan
+from .results import Reading, probe_readings, readings_from, write_outputs
+from .scene.model import Scene, Sensor, SensorKind
 
 __all__ = ["RunOutput", "load_scene", "collect_sensors", "run"]
 
@@ -31,7 +34,8 @@ class RunOutput:
 def load_scene(cfg: RunConfig) -> Scene:
     from .scene.usd import load_stage  # the only module that imports pxr
 
-    return load_stage(cfg.stage, light_units=cfg.light_units, radiometric_spectrum=cfg.radiometric_spectrum)
+    return load_stage(cfg.stage, light_units=cfg.light_units, radiometric_spectrum=cfg.radiometric_spectrum,
+                      variants=cfg.variants)
 
 
 def collect_sensors(cfg: RunConfig, scene: Scene) -> list[Sensor]:
@@ -48,6 +52,46 @@ def collect_sensors(cfg: RunConfig, scene: Scene) -> list[Sensor]:
             raise UserError(f"{cfg.path}: sensor name {s.name!r} is used twice ({seen[s.name]} and {s.source})")
         seen[s.name] = s.source
     return sensors
+
+
+@dataclass
+class PlannedResult:
+    """Readings of every plain sensor, each by its planned method."""
+
+    methods: list[str]
+    mean: np.ndarray
+    stderr: np.ndarray
+    samples: np.ndarray
+    seconds: np.ndarray
+    target_met: np.ndarray | None
+    non_finite: np.ndarray
+    wall_s: float
+    device: str
+    warnings: list[str]
+
+
+def run_plan(engine, plan: Plan, sim, progress=None) -> PlannedResult:
+    """Run each method's group of sensors and gather the readings in sensor order.
+
+    Closed-form readings count as meeting any error target (they are exact).
+    """
+    n = len(plan.sensors)
+    out = PlannedResult([sp.method for sp in plan.sensors], np.zeros((n, 2)), np.zeros((n, 2)), np.zeros(n, np.int64),
+                        np.zeros(n), np.ones(n, bool) if sim.adaptive else None, np.zeros(n, np.int64), 0.0, engine.device, [])  # fmt: skip
+    engine.set_light_mask(plan.light_mask([l.name for l in engine.scene.lights]))
+    for method, ids in plan.groups().items():
+        r = engine.run(
+            method, samples=sim.samples, seed=sim.seed, rel_error=sim.rel_error, abs_error=sim.abs_error,
+            max_samples=sim.sample_cap, time_limit_s=sim.time_limit_s, max_depth=sim.max_depth,
+            component=sim.component, progress=progress, sensor_ids=ids,
+        )  # fmt: skip
+        out.mean[ids], out.stderr[ids], out.samples[ids] = r.mean[ids], r.stderr[ids], r.samples[ids]
+        out.seconds[ids], out.non_finite[ids] = r.seconds[ids], r.non_finite[ids]
+        if out.target_met is not None and r.target_met is not None:
+            out.target_met[ids] = r.target_met[ids]
+        out.wall_s += r.wall_s
+        out.warnings += [w for w in r.warnings if w not in out.warnings]
+    return out
 
 
 def _sha256(path: Path) -> str:
@@ -89,28 +133,41 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     t0 = time.perf_counter()
     scene = load_scene(cfg)
     sensors = collect_sensors(cfg, scene)
+    # probes are read by their own kernel (simulator.probe_engine)
+    probes = [s for s in sensors if s.kind == SensorKind.PROBE]
+    plain = [s for s in sensors if s.kind != SensorKind.PROBE]
     sim = cfg.simulation
-    method, reason = choose_method(scene, sensors, sim.method, sim.component)
+    plan = make_plan(scene, plain, sim.method, sim.component)
+    reason = "per-sensor plan (see plan)" if sim.method == "auto" else "as requested"
+    probe_method = None
+    if probes:  # no closed form for a probe: its method is chosen for the run
+        probe_method, why = choose_method(scene, [], "auto" if sim.method == "analytic" else sim.method, sim.component)
+        reason += f"; probes: {why}"
     for w in scene.warnings:
         log(f"warning: {w}")
     t_load = time.perf_counter()
-    engine = Engine(scene, sensors, device=sim.device, threads=sim.threads)
+    engine = Engine(scene, plain, device=sim.device, threads=sim.threads)
     t_setup = time.perf_counter()
-    res = engine.run(
-        method,
-        samples=sim.samples,
-        seed=sim.seed,
-        rel_error=sim.rel_error,
-        abs_error=sim.abs_error,
-        max_samples=sim.sample_cap,
-        time_limit_s=sim.time_limit_s,
-        max_depth=sim.max_depth,
-        component=sim.component,
-        progress=progress,
-    )
+    res = run_plan(engine, plan, sim, progress)
+    probe_res = []
+    if probes:
+        probe_res = engine.run_probes(
+            probes, probe_method, samples=sim.samples, seed=sim.seed,
+            stream_ids=[i for i, s in enumerate(sensors) if s.kind == SensorKind.PROBE], rel_error=sim.rel_error, abs_error=sim.abs_error,
+            max_samples=sim.sample_cap, time_limit_s=sim.time_limit_s, max_depth=sim.max_depth,
+            component=sim.component, progress=progress,
+        )  # fmt: skip
+        for p in probe_res:
+            res.warnings.extend(p.warnings)
     for w in res.warnings:
         log(f"warning: {w}")
-    rows = readings_from(sensors, res.mean, res.stderr, res.samples, res.seconds, res.method, res.target_met)
+    by_name = {r.sensor.name: r for r in readings_from(plain, res.mean, res.stderr, res.samples, res.seconds, res.methods, res.target_met)}
+    by_name.update({r.sensor.name: r for r in probe_readings(probe_res, probe_method)})
+    rows = [by_name[s.name] for s in sensors]
+    meta = {"seed": sim.seed, "method": "+".join(plan.groups()), "light_units": cfg.light_units, "stage": cfg.stage.name}
+    extra = grid_outputs(cfg.output.csv, cfg.grids, rows, meta)
+    probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, {**meta, "method": probe_method, "taken": [g.name for g in cfg.grids]})
+    extra.update(probe_files)
     t_end = time.perf_counter()
     record = {
         "config_path": str(cfg.path),
@@ -119,17 +176,29 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
         "stage": {"path": str(cfg.stage), "sha256": _sha256(cfg.stage), "meters_per_unit": scene.meters_per_unit, "up_axis": scene.up_axis},
         "seed": sim.seed,
         "samples_requested": sim.samples,
-        "samples_total": int(res.samples.sum()),
-        "method": {"requested": sim.method, "used": res.method, "reason": reason},
+        "samples_total": int(res.samples.sum()) + sum(p.samples for p in probe_res),
+        "method": {"requested": sim.method, "used": {m: len(ix) for m, ix in plan.groups().items()}, "probes": probe_method, "reason": reason},
+        "plan": plan.to_record(),
         "component": sim.component,
         "device": res.device,
         "threads": engine.threads,
         "host": {"platform": platform.platform(), "machine": platform.machine(), "processor": platform.processor(), "python": sys.version.split()[0]},
         "versions": _versions(),
-        "timings_s": {"load": t_load - t0, "setup": t_setup - t_load, "trace": res.wall_s, "total": t_end - t0},
+        "timings_s": {"load": t_load - t0, "setup": t_setup - t_load, "trace": res.wall_s + sum(p.seconds for p in probe_res), "total": t_end - t0},
         "sensors": len(sensors),
         "warnings": list(scene.warnings) + list(res.warnings),
-        "non_finite_samples": int(res.non_finite.sum()),
+        "non_finite_samples": int(res.non_finite.sum()) + sum(p.non_finite for p in probe_res),
+        "maps": sorted(p.name for p in extra),
+        "probe_maps": probe_maps,
+        "adaptive": None
+        if res.target_met is None
+        else {
+            "rel_error": sim.rel_error,
+            "abs_error": sim.abs_error,
+            "max_samples": sim.sample_cap,
+            "time_limit_s": sim.time_limit_s,
+            "sensors_met": int(res.target_met.sum()),
+        },
     }
-    record_path = write_outputs(cfg.output.csv, rows, record)
+    record_path = write_outputs(cfg.output.csv, rows, record, extra)
     return RunOutput(rows, cfg.output.csv, record_path, record, scene)

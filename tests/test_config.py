@@ -548,18 +548,18 @@ def test_non_finite_float_setting(write):
 
 
 def test_unknown_sensor_kind(write):
-    """An unknown kind (including 'probe', not yet supported) is an error on sensor[i].kind listing the kinds."""
+    """An unknown kind is an error on sensor[i].kind listing the kinds."""
     msg = load_error(
         write(
             """
             [[sensor]]
-            kind = "probe"
+            kind = "thermometer"
             position = [0, 0, 0]
             """
         )
     )
-    assert ": sensor[0].kind: unknown sensor kind 'probe'" in msg
-    assert "irradiance, radiance, patch" in msg
+    assert ": sensor[0].kind: unknown sensor kind 'thermometer'" in msg
+    assert "irradiance, radiance, patch, probe" in msg
 
 
 def test_missing_sensor_kind(write):

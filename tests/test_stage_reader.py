@@ -539,7 +539,9 @@ def test_rotated_rect_light_frame(tmp_path):
 
 def test_dome_texture_resolved(tmp_path):
     """texture:file is stored as an absolute path; a missing texture is a UserError naming the prim."""
-    (tmp_path / "sky.exr").write_bytes(b"not really an exr")
+    from simulator import exr
+
+    exr.write_channels(tmp_path / "sky.exr", {"Y": np.ones((2, 4))})  # the map is read too (test_more_lights)
     s = light_stage(tmp_path, "DomeLight", "asset inputs:texture:file = @./sky.exr@")
     assert s.lights[0].texture == str((tmp_path / "sky.exr").resolve())
     assert light_stage(tmp_path, "DomeLight", "").lights[0].texture == ""
@@ -692,11 +694,12 @@ def test_bad_options_are_user_errors(tmp_path):
 
 @pytest.mark.parametrize("path", sorted(STAGES.glob("*.usda")), ids=lambda p: p.name)
 def test_bundled_stage_loads(path):
-    """Every stage in stages/ loads, has at least one light, and its arrays are consistent."""
+    """Every stage in stages/ loads, emits light (a UsdLux light or emissive
+    geometry), and its arrays are consistent."""
     s = load_stage(path)
     g = s.geometry
     assert s.path == str(path)
-    assert s.lights
+    assert s.lights or np.any(g.emission > 0)
     assert len(g.albedo) == len(g.emission) == len(g.two_sided) == len(g.prim) == g.n_triangles
     assert np.all((g.albedo >= 0) & (g.albedo < 1))
     assert np.all(np.isfinite(g.points))
@@ -742,14 +745,16 @@ def test_unsupported_light_warns(tmp_path):
     assert any("/Portal" in w for w in s.warnings)
 
 
-def test_mesh_light_read_as_surface(tmp_path):
-    """A Mesh with MeshLightAPI still blocks light (it is geometry); its UsdLux emission is ignored with a warning."""
+def test_mesh_light_is_emitting_geometry(tmp_path):
+    """A Mesh with MeshLightAPI is geometry (it blocks light) that emits its UsdLux light
+    value (default intensity 1 nit: the pair (1/K(D65), 1)) from its front face; no material
+    bound: albedo 0. It is not a UsdLux light record. (More in test_more_lights.)"""
     body = quad_mesh("Panel", [(0, 0, 0), (1, 0, 0), (0, 1, 0)]).replace(
         'def Mesh "Panel"', 'def Mesh "Panel" (prepend apiSchemas = ["MeshLightAPI"])')
     s = load_stage(write_stage(tmp_path, body))
     assert s.geometry.prim_names == ["/Panel"] and not s.lights
-    assert np.all(s.geometry.emission == 0)
-    assert any("/Panel" in w and "light API" in w for w in s.warnings)
+    np.testing.assert_allclose(s.geometry.emission, [(1.0 / luminous_efficacy("D65"), 1.0)], rtol=1e-12)
+    assert np.all(s.geometry.albedo == 0)
 
 
 def test_dome_stage_ground_is_wide_and_faces_up():

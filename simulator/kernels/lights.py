@@ -22,14 +22,24 @@ RECT           uniform in the subtended spherical rectangle            1/Ω (are
 DISK           uniform in area                                         d²/(A·cosθl)
 DISTANT        exact (angle 0, delta) or uniform in its cone           1/(2π(1−cosθmax))
 DOME           cosine lobe about the receiver normal                   cosθ/π
+DOME (map)     texel ∝ value·sinθ, uniform in (u, v) inside it         pdf_uv/(2π² sinθ)
+CYLINDER       uniform in area on the side, front-facing points        d²/(A·cosθl)
 EMISSIVE       triangle ∝ its power, then uniform in area             P(tri)·d²/(A·|cosθl|)
 =============  =====================================================  ==================
+
+A textured dome's radiance is ``emission × map[texel]`` with the texel of
+the direction looked up *nearest* (no filtering), so the radiance is
+piecewise constant exactly like the sampling density; the lat-long
+convention is :mod:`simulator.latlong`'s. An untextured dome keeps cosine
+sampling, which is optimal for uniform radiance (zero variance unoccluded).
 """
 
 import warp as wp
 
+from .distributions import direction_to_latlong_uv, latlong_texel, pdf_latlong, sample_latlong
 from .sampling import (
     PI,
+    TWO_PI,
     SPHRECT_MIN_SOLID_ANGLE,
     SphRect,
     one_minus_cos_from_sin2,
@@ -51,6 +61,7 @@ RECT = wp.constant(2)
 DISK = wp.constant(3)
 DISTANT = wp.constant(4)
 DOME = wp.constant(5)
+CYLINDER = wp.constant(6)
 EMISSIVE = wp.constant(7)
 
 #: length of a ray that leaves the scene, metres
@@ -72,6 +83,14 @@ class LightRec:
     radius: float
     one_minus_cos: float  # distant light: 1 − cos(half-angle); 0 = delta
     area: float
+    length: float  # cylinder length along ex (its axis)
+    # textured dome: lat-long map in the frame (ex, ey = pole, ez = lat 0, lon 0)
+    has_map: int  # 1: radiance = emission × map[texel]; 0: uniform
+    map_w: int
+    map_h: int
+    map: wp.array(dtype=float)  # map_h × map_w values, row 0 at the pole ey
+    map_marg: wp.array(dtype=float)  # map_h + 1: marginal CDF over rows
+    map_cond: wp.array(dtype=float)  # map_h × (map_w + 1): conditional CDFs over columns
 
 
 @wp.struct
@@ -91,6 +110,8 @@ class SceneRec:
     lights: wp.array(dtype=LightRec)
     n_lights: int
     eps: float  # ray-origin offset relative to max(1 m, |p|∞)
+    ray_counts: wp.array(dtype=wp.int32)  # per kernel thread, when TraceParams.count_rays
+    light_mask: wp.array(dtype=wp.int32)  # (sensors × n_lights): 0 = light culled for that sensor
 
 
 @wp.struct
@@ -260,12 +281,66 @@ def _sample_distant(l: LightRec, n: wp.vec3, u: wp.vec3) -> LightSample:
 @wp.func
 def _sample_dome(l: LightRec, n: wp.vec3, u: wp.vec3) -> LightSample:
     s = _empty_sample()
+    if l.has_map != 0:
+        return _sample_dome_map(l, n, u)
     local = sample_cosine_hemisphere(wp.vec2(u[0], u[1]))
     s.wi = to_world(local, n)
     s.dist = RAY_INF
     s.pdf = pdf_cosine_hemisphere(local[2])
     if s.pdf > 0.0:
         s.value = l.emission * PI  # L·cosθ / (cosθ/π)
+    return s
+
+
+@wp.func
+def _sample_dome_map(l: LightRec, n: wp.vec3, u: wp.vec3) -> LightSample:
+    """A direction from the map's value·sinθ distribution (whole sphere;
+    directions below the receiver's horizon add 0)."""
+    s = _empty_sample()
+    ms = sample_latlong(l.map_marg, l.map_cond, l.map_w, l.map_h, l.ex, l.ey, l.ez, wp.vec2(u[0], u[1]))
+    if ms.pdf <= 0.0:
+        return s
+    s.wi = ms.wi
+    s.dist = RAY_INF
+    s.pdf = ms.pdf
+    cos_r = wp.dot(ms.wi, n)
+    if cos_r > 0.0:
+        s.value = l.emission * (l.map[ms.texel] * cos_r / ms.pdf)
+    return s
+
+
+@wp.func
+def _cylinder_normal(l: LightRec, q: wp.vec3) -> wp.vec3:
+    """Outward unit normal of the cylinder's side at (or nearest to) q."""
+    r = q - l.position
+    r = r - wp.dot(r, l.ex) * l.ex
+    return wp.normalize(r)
+
+
+@wp.func
+def _sample_cylinder(l: LightRec, p: wp.vec3, n: wp.vec3, u: wp.vec3) -> LightSample:
+    """Uniform point on the side (area pdf 1/A, A = 2π r·length); only points
+    whose outward normal faces p emit toward it. A point facing p is also
+    the first point of the cylinder the ray meets (it is convex), so no
+    self-occlusion test is needed."""
+    s = _empty_sample()
+    phi = TWO_PI * u[1]
+    nl = wp.cos(phi) * l.ey + wp.sin(phi) * l.ez
+    q = l.position + ((u[0] - 0.5) * l.length) * l.ex + l.radius * nl
+    d = q - p
+    dist = wp.length(d)
+    if dist <= 0.0:
+        return s
+    wi = d / dist
+    cos_l = -wp.dot(wi, nl)
+    if cos_l <= 0.0:
+        return s
+    s.wi = wi
+    s.dist = dist
+    s.pdf = dist * dist / (l.area * cos_l)
+    cos_r = wp.dot(wi, n)
+    if cos_r > 0.0:
+        s.value = l.emission * (cos_r / s.pdf)
     return s
 
 
@@ -331,6 +406,8 @@ def sample_light(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3, u: wp.vec3) -
         return _sample_distant(l, n, u)
     if l.kind == DOME:
         return _sample_dome(l, n, u)
+    if l.kind == CYLINDER:
+        return _sample_cylinder(l, p, n, u)
     if l.kind == EMISSIVE:
         return _sample_emissive(scene, p, n, u)
     return _empty_sample()
@@ -360,7 +437,12 @@ def pdf_light(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3, wi: wp.vec3, t: 
     if l.kind == DISTANT:
         return wp.where(l.one_minus_cos > 0.0, pdf_uniform_cone(l.one_minus_cos), 0.0)
     if l.kind == DOME:
+        if l.has_map != 0:
+            return pdf_latlong(l.map_marg, l.map_cond, l.map_w, l.map_h, l.ex, l.ey, l.ez, wi)
         return pdf_cosine_hemisphere(wp.dot(wi, n))
+    if l.kind == CYLINDER:
+        cos_l = -wp.dot(wi, _cylinder_normal(l, p + t * wi))
+        return wp.where(cos_l > 0.0, t * t / (l.area * cos_l), 0.0)
     if l.kind == EMISSIVE:
         a = tri_vertex(scene, tri, 0)
         ng2 = wp.cross(tri_vertex(scene, tri, 1) - a, tri_vertex(scene, tri, 2) - a)
@@ -371,6 +453,32 @@ def pdf_light(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3, wi: wp.vec3, t: 
 
 
 # ---------------------------------------------------------------- ray hits on lights
+
+
+@wp.func
+def _hit_cylinder(l: LightRec, o: wp.vec3, d: wp.vec3, t_max: float) -> float:
+    """Where a ray enters the cylinder's side from outside (the emitting,
+    outward face), or −1. The caps neither emit nor block, so a ray through
+    a cap sees only the inside of the side: nothing."""
+    oc = o - l.position
+    ox = wp.dot(oc, l.ex)
+    dx = wp.dot(d, l.ex)
+    op = oc - ox * l.ex  # parts across the axis
+    dp = d - dx * l.ex
+    a = wp.length_sq(dp)
+    b = wp.dot(op, dp)
+    c = wp.length_sq(op) - l.radius * l.radius
+    if c <= 0.0 or a <= 0.0 or b >= 0.0:
+        return -1.0  # inside the infinite cylinder, parallel to its axis, or moving away
+    disc = b * b - a * c
+    if disc < 0.0:
+        return -1.0
+    t = c / (wp.sqrt(disc) - b)  # nearer root (t0·t1 = c/a), free of cancellation
+    if t <= 0.0 or t >= t_max:
+        return -1.0
+    if wp.abs(ox + t * dx) > 0.5 * l.length:
+        return -1.0
+    return t
 
 
 @wp.func
@@ -408,13 +516,19 @@ def hit_light(l: LightRec, o: wp.vec3, d: wp.vec3, t_max: float) -> float:
         if t >= t_max:
             return -1.0
         return t
+    if l.kind == CYLINDER:
+        return _hit_cylinder(l, o, d, t_max)
     return -1.0
+
 
 
 @wp.func
 def escaped_radiance(l: LightRec, d: wp.vec3) -> wp.vec2:
     """Radiance from an infinitely distant light along a ray that left the scene."""
     if l.kind == DOME:
+        if l.has_map != 0:
+            uv = direction_to_latlong_uv(d, l.ex, l.ey, l.ez)
+            return l.emission * l.map[latlong_texel(uv, l.map_w, l.map_h)]
         return l.emission
     if l.kind == DISTANT and l.one_minus_cos > 0.0:
         if 1.0 - wp.dot(d, l.ez) <= l.one_minus_cos:

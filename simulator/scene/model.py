@@ -30,7 +30,7 @@ class LightKind(IntEnum):
     RECT = 2  #: width x height; emission = radiance, one-sided along local -Z
     DISK = 3  #: radius; emission = radiance, one-sided along local -Z
     DISTANT = 4  #: half-angle > 0: emission = radiance; half-angle 0 (delta): normal irradiance (W/m^2, lx)
-    DOME = 5  #: uniform environment; emission = radiance
+    DOME = 5  #: environment; emission = radiance (× texture_map[texel] when textured)
     CYLINDER = 6  #: radius, length along local X; emission = radiance, outward from the side
 
 
@@ -79,6 +79,10 @@ class Light:
     length: float = 0.0
     half_angle: float = 0.0
     texture: str = ""  #: DomeLight lat-long EXR (resolved path), "" if untextured
+    #: textured DomeLight: the map as luminance grey, shape (H, W), float64, row 0
+    #: at the pole ``frame[:, 1]`` (the convention of :mod:`simulator.latlong`);
+    #: radiance along a direction = ``emission × texture_map[texel]``. None if untextured.
+    texture_map: np.ndarray | None = None
 
     @property
     def is_delta(self) -> bool:

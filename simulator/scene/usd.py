@@ -35,11 +35,32 @@ Lights
     ``frame[:, 1]``, (lat 0, lon 0) along ``frame[:, 2]``, (lat 0, lon pi/2)
     along ``frame[:, 0]`` (UsdLux DomeLight: the prim's own frame;
     DomeLight_1 with a Z ``poleAxis``: the prim frame turned +90 deg about X).
-    Portal, geometry and plugin lights are ignored with a warning; a mesh
-    with MeshLightAPI is read as a plain surface (its light is ignored, with
-    a warning).
+    A dome's ``texture:file`` must be a lat-long OpenEXR image
+    (``texture:format`` ``latlong``, or ``automatic`` for a ``.exr`` file);
+    it is read into ``Light.texture_map`` as luminance grey (BT.709 Y) and
+    scales the dome's emission texel by texel (see :mod:`simulator.latlong`
+    for the pixel <-> direction map). Portal and plugin lights are ignored
+    with a warning.
+Geometry lights
+    A Mesh, Cube or Sphere with ``MeshLightAPI`` (or ``LightAPI`` applied
+    directly) is geometry that emits: it blocks light like any surface and
+    emits from its front face (both faces when ``doubleSided``) the radiance
+    ``intensity * 2**exposure * grey(color)``, divided by its world area when
+    ``normalize`` is on, with the spectrum rules of other lights. The bound
+    material's ``emissiveColor`` is not added (warned when non-zero): the
+    light's own inputs set its emission. Its albedo is the bound
+    UsdPreviewSurface's ``diffuseColor``, or 0 when no material is bound or
+    ``light:materialSyncMode`` is ``noMaterialResponse`` (a light with no
+    material response reflects nothing). ``VolumeLightAPI`` is ignored with
+    a warning (the prim is read as a plain surface).
 Sensors
     See "Stage-authored sensors" below.
+Variants
+    ``load_stage(..., variants={"reflectance": "rho_0_9"})`` (a config's
+    ``variants`` table) selects that variant on every prim that has the
+    variant set, in the session layer, before anything is read: one stage can
+    serve a whole parameter sweep. An unknown set or variant is an error that
+    lists what the stage offers.
 
 Prims are traversed through instance proxies, so instanceable prims count.
 Inactive prims are skipped (with their subtrees). Geometry and lights are
@@ -170,6 +191,7 @@ def load_stage(
     path: str | os.PathLike,
     light_units: str = "photometric",
     radiometric_spectrum: str | float = "E",
+    variants: dict[str, str] | None = None,
 ) -> Scene:
     """Read a USD stage into a :class:`Scene` in world metres, Z up.
 
@@ -187,6 +209,10 @@ def load_stage(
         Spectrum assumed for emitters in radiometric mode (a float is a
         blackbody temperature in kelvin). A light with
         ``enableColorTemperature`` uses its blackbody in either mode.
+    variants : dict of str to str, optional
+        Variant selections, variant-set name to variant name (a config's
+        ``variants`` table), applied before anything is read; see
+        :func:`_select_variants`.
 
     Returns
     -------
@@ -238,6 +264,7 @@ def load_stage(
     """
     _check_options(path, light_units, radiometric_spectrum)
     stage = _open_stage(path)
+    _select_variants(stage, str(path), variants or {})
     mpu = float(UsdGeom.GetStageMetersPerUnit(stage))
     up_axis = str(UsdGeom.GetStageUpAxis(stage))
     if not (math.isfinite(mpu) and mpu > 0):
@@ -267,6 +294,57 @@ def load_stage(
     )
 
 
+def _select_variants(stage: Usd.Stage, path: str, variants: dict[str, str]) -> None:
+    """Select ``variants[set]`` on every prim that has variant set ``set``.
+
+    Selections go into the stage's session layer, the strongest, so they
+    override any selection the file authors, and the file is left unchanged.
+    All prims are visited (inactive ones too, since a selection may activate
+    them), and the walk repeats until nothing changes, so a variant set that
+    appears only inside another set's selected variant is honoured as well.
+    Prims inside instance prototypes cannot be edited through their
+    instances: author the variant set on the instanceable prim or above it.
+
+    Raises
+    ------
+    UserError
+        ``variants.<set>``: no prim has that variant set (the message lists
+        the sets the stage offers), or a prim's set does not offer the
+        selection (the message lists the variants it offers).
+    """
+    if not variants:
+        return
+    stage.SetEditTarget(Usd.EditTarget(stage.GetSessionLayer()))
+    found: set[str] = set()
+    for _ in range(64):  # nesting depth bound: a fixed point comes long before
+        changed = False
+        # a list first: a selection recomposes the stage under a live iterator
+        for prim in list(Usd.PrimRange.Stage(stage, Usd.PrimAllPrimsPredicate)):
+            if not prim.IsValid():  # removed by a selection made earlier in this pass
+                continue
+            sets = prim.GetVariantSets()
+            for name, choice in variants.items():
+                if not sets.HasVariantSet(name):
+                    continue
+                found.add(name)
+                vset = sets.GetVariantSet(name)
+                offered = vset.GetVariantNames()
+                if choice not in offered:
+                    raise UserError(f"{path}: variants.{name}: {prim.GetPath()} offers no variant {choice!r} "
+                                    f"(its variant set {name!r} offers: {', '.join(offered) or 'nothing'})")
+                if vset.GetVariantSelection() != choice:
+                    vset.SetVariantSelection(choice)
+                    changed = True
+        if not changed:
+            break
+    for name in variants:
+        if name not in found:
+            offered = sorted({s for prim in Usd.PrimRange.Stage(stage, Usd.PrimAllPrimsPredicate)
+                              for s in prim.GetVariantSets().GetNames()})
+            raise UserError(f"{path}: variants.{name}: no prim has a variant set {name!r} "
+                            f"(the stage offers: {', '.join(offered) or 'no variant sets'})")
+
+
 def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light], list[Sensor]]:
     """Walk every active prim, instance proxies included, and sort it into geometry, lights, sensors."""
     geo = _GeometryBuilder()
@@ -282,10 +360,7 @@ def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light],
         if not _is_rendered(ctx, prim):
             continue
         if prim.IsA(UsdGeom.Gprim):
-            if prim.HasAPI(UsdLux.LightAPI):  # MeshLightAPI / VolumeLightAPI
-                ctx.warn(f"{prim.GetPath()}: light API on geometry ignored (read as a surface; "
-                         "author an emissiveColor to make it emit)")
-            _read_gprim(ctx, prim, geo)
+            _read_gprim(ctx, prim, geo)  # MeshLightAPI prims too: geometry that emits
         elif prim.HasAPI(UsdLux.LightAPI):
             light = _read_light(ctx, prim)
             if light is not None:
@@ -493,7 +568,8 @@ def _read_gprim(ctx: _Context, prim: Usd.Prim, geo: _GeometryBuilder) -> None:
     if local is None:
         return
     points, counts, indices = local
-    surface = _surface(ctx, prim)
+    is_light = _is_geometry_light(ctx, prim)
+    surface = _geometry_light_surface(ctx, prim) if is_light else _surface(ctx, prim)
     if surface is None:  # opacity 0: it lets light through
         return
     a, t = _world_affine(ctx, prim)
@@ -506,6 +582,8 @@ def _read_gprim(ctx: _Context, prim: Usd.Prim, geo: _GeometryBuilder) -> None:
     world = points @ a.T + t
     tris = _drop_zero_area(world, tris)
     albedo, emission = surface
+    if is_light:
+        emission = _geometry_light_emission(ctx, prim, world, tris)
     geo.add(str(prim.GetPath()), world, tris, albedo, emission, bool(gprim.GetDoubleSidedAttr().Get(ctx.time)))
 
 
@@ -771,6 +849,59 @@ def _display_color(ctx: _Context, prim: Usd.Prim):
     return _PREVIEW_DEFAULTS["diffuseColor"], "the default albedo"
 
 
+def _is_geometry_light(ctx: _Context, prim: Usd.Prim) -> bool:
+    """True for a gprim with MeshLightAPI (or LightAPI applied directly): geometry that emits."""
+    if not prim.HasAPI(UsdLux.LightAPI):
+        return False
+    if prim.HasAPI(UsdLux.VolumeLightAPI):
+        ctx.warn(f"{prim.GetPath()}: VolumeLightAPI ignored (read as a plain surface)")
+        return False
+    return True
+
+
+def _geometry_light_surface(ctx: _Context, prim: Usd.Prim) -> tuple[float, tuple[float, float]]:
+    """``(albedo, (0, 0))`` of a geometry light; its emission comes from its light inputs.
+
+    The albedo is the bound UsdPreviewSurface's diffuseColor; 0 with no
+    (usable) bound material or with ``light:materialSyncMode``
+    ``noMaterialResponse``. Opacity is ignored: a light's surface is opaque.
+    """
+    sync = UsdLux.LightAPI(prim).GetMaterialSyncModeAttr().Get(ctx.time)
+    if str(sync) == "noMaterialResponse":
+        return 0.0, (0.0, 0.0)
+    inputs = _material_inputs(ctx, prim)
+    if inputs is None:
+        return 0.0, (0.0, 0.0)
+    rgb, source = inputs["diffuseColor"]
+    albedo = _grey(ctx, prim, rgb)
+    if not (math.isfinite(albedo) and 0.0 <= albedo < 1.0):
+        raise ctx.error(prim, f"albedo {albedo:g} from {source} must be in [0, 1) (energy conservation)")
+    if float(inputs["opacity"][0]) < 1.0:
+        ctx.warn(f"{prim.GetPath()}: opacity of a mesh light ignored (its surface is opaque)")
+    if _grey(ctx, prim, inputs["emissiveColor"][0]) != 0.0:
+        ctx.warn(f"{prim.GetPath()}: emissiveColor of the bound material ignored; "
+                 "a mesh light emits what its light inputs (intensity, exposure, color) say")
+    return albedo, (0.0, 0.0)
+
+
+def _geometry_light_emission(ctx: _Context, prim: Usd.Prim, world: np.ndarray,
+                             tris: np.ndarray) -> tuple[float, float]:
+    """Emission pair of a geometry light: ``intensity * 2**exposure * grey(color)``,
+    divided by its world area (one side) when ``normalize`` is on."""
+    if prim.HasAPI(UsdLux.ShapingAPI):
+        ctx.warn(f"{prim.GetPath()}: UsdLuxShapingAPI (cone, focus, IES) ignored")
+    raw, spectrum = _light_value(ctx, prim)
+    value = raw
+    if bool(UsdLux.LightAPI(prim).GetNormalizeAttr().Get(ctx.time)):
+        p = world[tris]
+        area = float(0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1).sum())
+        if area <= 0.0:
+            ctx.warn(f"{prim.GetPath()}: mesh light has zero area and emits nothing")
+            return (0.0, 0.0)
+        value = raw / area
+    return emission_pair(value, ctx.light_units, spectrum) if value > 0 else (0.0, 0.0)
+
+
 # --------------------------------------------------------------------------- #
 # lights
 # --------------------------------------------------------------------------- #
@@ -893,6 +1024,8 @@ def _shape_light(ctx: _Context, prim: Usd.Prim, light: Light, a: np.ndarray, raw
     if kind == LightKind.DOME:
         light.texture = _dome_texture(ctx, prim)
         light.frame = _dome_texture_frame(ctx, prim, light.frame)
+        if light.texture:
+            light.texture_map = _dome_texture_map(ctx, prim, light.texture)
         return raw
     raise AssertionError(kind)  # pragma: no cover
 
@@ -933,6 +1066,47 @@ def _dome_texture_frame(ctx: _Context, prim: Usd.Prim, frame: np.ndarray) -> np.
     if pole != "Z":
         return frame
     return np.column_stack([frame[:, 0], frame[:, 2], -frame[:, 1]])
+
+
+#: ``texture:format`` values a DomeLight may have (``automatic`` only for ``.exr`` files)
+DOME_TEXTURE_FORMATS = ("latlong", "automatic")
+
+
+def _dome_texture_map(ctx: _Context, prim: Usd.Prim, path: str) -> np.ndarray:
+    """A dome's lat-long map as luminance grey, shape (H, W), float64 (see :mod:`simulator.latlong`).
+
+    ``texture:format`` must be ``latlong``, or ``automatic`` for a ``.exr``
+    file whose header does not declare a cube map. RGB becomes BT.709 Y (the
+    weights of :func:`simulator.units.luminance_grey`); a grey ``Y`` image is
+    used as is. Values must be finite and non-negative.
+    """
+    from .. import exr
+
+    attr = prim.GetAttribute("inputs:texture:format")
+    fmt = str((attr.Get(ctx.time) if attr else None) or "automatic")
+    if fmt not in DOME_TEXTURE_FORMATS:
+        raise ctx.error(prim, f"texture:format {fmt!r} of texture:file {path} is not supported "
+                              "(only 'latlong', or 'automatic' for a lat-long .exr)")
+    if not path.lower().endswith(".exr"):
+        raise ctx.error(prim, f"texture:file {path}: only lat-long OpenEXR (.exr) maps are supported")
+    try:
+        header = exr.read_header(path) if fmt == "automatic" else {}
+        rgb = exr.read_rgb(path)
+    except UserError as err:  # names the file; add the stage and prim
+        raise ctx.error(prim, f"texture:file {err}") from None
+    if "CUBE" in str(header.get("envmap", "")).upper():
+        raise ctx.error(prim, f"texture:file {path} is a cube map (envmap header); only lat-long maps are supported")
+    bad = int(np.sum(~np.isfinite(rgb).all(axis=-1) | (rgb < 0).any(axis=-1)))
+    if bad:
+        raise ctx.error(prim, f"texture:file {path}: {bad} texel(s) are negative, NaN or Inf")
+    weights = np.array([luminance_grey(e) for e in np.eye(3)])  # BT.709 Y per channel
+    rgb = rgb.astype(np.float64)
+    if np.ptp(rgb, axis=-1).max() > 1e-6 * max(float(rgb.max()), 1e-300):
+        ctx.coloured[str(prim.GetPath())] = None
+    h, w = rgb.shape[:2]
+    if w != 2 * h:
+        ctx.warn(f"{prim.GetPath()}: texture:file {path} is {w} x {h}, not 2:1; read as lat-long anyway")
+    return rgb @ weights
 
 
 # --------------------------------------------------------------------------- #

@@ -1,0 +1,393 @@
+"""Image outputs beside the CSV: grid maps (EXR + PNG) and probe maps (EXR + JSON).
+
+Writers only: plain numbers in, file contents out (no Warp, no USD). Each
+function returns ``{path: content}`` where content is ``str`` (text),
+``bytes``, or a callable that writes the file at the path it is given; the
+caller (:func:`simulator.results.write_outputs`) stages every file under a
+temporary name and renames them all together with the CSV.
+
+Grid maps, for every ``[[grid]]`` of a run
+------------------------------------------
+``<csv stem>.<grid>.exr``: one pixel per cell, float32 channels
+
+=================  =====  ============================================
+channel            unit   value
+=================  =====  ============================================
+``E_W_m2``         W/m²   irradiance of the cell's sensor
+``E_stderr_W_m2``  W/m²   its standard error
+``Ev_lx``          lx     illuminance
+``Ev_stderr_lx``   lx     its standard error
+=================  =====  ============================================
+
+Column i is cell i along the grid's ``right`` axis; row 0 (top) is the cell
+row farthest along ``up`` (j = ny − 1), so the image shows the grid as seen
+from the side its sensors face, ``up`` pointing up. String metadata:
+``probesim:kind`` (``grid``), ``probesim:grid``, ``probesim:units``,
+``probesim:seed``, ``probesim:method``, ``probesim:light_units``,
+``probesim:centre_m``, ``probesim:right``, ``probesim:up``,
+``probesim:normal``, ``probesim:size_m``, ``probesim:cells``,
+``probesim:cell_size_m``, ``probesim:layout``, ``probesim:stage``.
+
+``<csv stem>.<grid>.png``: a false-colour map of illuminance with a colour
+bar in lx, axes in metres from the grid centre, and the grid's minimum,
+mean, maximum and uniformity (min/mean) in the title.
+
+Probe maps, for every probe of a run
+------------------------------------
+``<csv stem>.<probe>.exr``: a lat-long map of incident radiance (see
+:mod:`simulator.latlong` for the convention, :mod:`simulator.probe_engine`
+for the frame), float32 channels
+
+=====================  ========  ==================================================
+channel                unit      value
+=====================  ========  ==================================================
+``R``, ``G``, ``B``    (note)    mean radiance in the stage's light units: cd/m²
+                                 for ``photometric``, W m⁻² sr⁻¹ for
+                                 ``radiometric`` (grey: R = G = B), so that the
+                                 file is a DomeLight ``texture:file`` at intensity 1
+``L_W_m2_sr``          W/m²/sr   mean radiance over the pixel
+``L_stderr_W_m2_sr``   W/m²/sr   its standard error
+``Lv_cd_m2``           cd/m²     mean luminance
+``Lv_stderr_cd_m2``    cd/m²     its standard error
+=====================  ========  ==================================================
+
+The file carries OpenEXR's standard ``envmap`` attribute (lat-long) and
+string metadata ``probesim:kind`` (``probe``), ``probesim:sensor``,
+``probesim:units``, ``probesim:seed``, ``probesim:method``,
+``probesim:light_units``, ``probesim:position_m``, ``probesim:frame``,
+``probesim:convention``, ``probesim:passes``, ``probesim:samples``,
+``probesim:delta_lights``, ``probesim:stage``. Delta lights (point lights,
+angle-0 distant lights) do not appear in the map (no direction sees them);
+they are in the integrals.
+
+``<csv stem>.probes.json``: every probe's integrals with standard errors
+(scalar irradiance, the six faces, vector irradiance and mean direction, nine
+SH coefficients), in W/m² and lx; see :func:`probe_record`.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import math
+import re
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+__all__ = [
+    "GRID_CHANNELS",
+    "PROBE_CHANNELS",
+    "sanitise_name",
+    "output_names",
+    "grid_arrays",
+    "grid_outputs",
+    "grid_png",
+    "probe_record",
+    "probe_outputs",
+]
+
+#: grid EXR channel → unit
+GRID_CHANNELS = {"E_W_m2": "W/m2", "E_stderr_W_m2": "W/m2", "Ev_lx": "lx", "Ev_stderr_lx": "lx"}
+#: probe EXR channel → unit (R, G, B: the stage's light units, see the module docstring)
+PROBE_CHANNELS = {
+    "L_W_m2_sr": "W/m2/sr", "L_stderr_W_m2_sr": "W/m2/sr", "Lv_cd_m2": "cd/m2", "Lv_stderr_cd_m2": "cd/m2",
+}  # fmt: skip
+
+Content = str | bytes | Callable[[Path], None]
+
+
+def sanitise_name(name: str) -> str:
+    """A file-name-safe form of a sensor or grid name: letters, digits, ``.``,
+    ``_`` and ``-`` kept, runs of anything else become one ``_``; no leading
+    or trailing ``_`` or ``.``; ``"sensor"`` if nothing is left."""
+    s = re.sub(r"[^A-Za-z0-9._-]+", "_", str(name)).strip("._")
+    return s or "sensor"
+
+
+def output_names(csv_path: Path, names: list[str], suffixes: tuple[str, ...]) -> dict[str, str]:
+    """Unique file stems ``<csv stem>.<sanitised name>`` for ``names``, in order.
+
+    Two names that sanitise alike (or that would collide with the CSV's own
+    side files, ``run`` and ``probes``) get ``_2``, ``_3``, … appended.
+    """
+    taken = {f"{csv_path.stem}.run", f"{csv_path.stem}.probes"}
+    out: dict[str, str] = {}
+    for n in names:
+        base = f"{csv_path.stem}.{sanitise_name(n)}"
+        stem, k = base, 1
+        while stem in taken:
+            k += 1
+            stem = f"{base}_{k}"
+        taken.add(stem)
+        out[n] = stem
+    return out
+
+
+def _vec(v) -> str:
+    return " ".join(f"{float(x):.9g}" for x in np.asarray(v, float).reshape(-1))
+
+
+# --------------------------------------------------------------------------- grids
+
+
+def grid_arrays(grid, values: dict[str, dict[str, float]]) -> dict[str, np.ndarray]:
+    """The grid's readings as images, shape (ny, nx), row 0 = cell row j = ny − 1.
+
+    Parameters
+    ----------
+    grid : simulator.config.GridConfig
+    values : dict
+        Sensor name → its CSV values (``irradiance_W_m2``, …).
+
+    Returns
+    -------
+    dict of str to ndarray
+        :data:`GRID_CHANNELS` → float64 images.
+    """
+    keys = {
+        "E_W_m2": "irradiance_W_m2", "E_stderr_W_m2": "irradiance_stderr_W_m2",
+        "Ev_lx": "illuminance_lx", "Ev_stderr_lx": "illuminance_stderr_lx",
+    }  # fmt: skip
+    out = {c: np.empty((grid.ny, grid.nx)) for c in keys}
+    for j in range(grid.ny):
+        for i in range(grid.nx):
+            v = values[grid.cell_name(i, j)]
+            for c, k in keys.items():
+                out[c][grid.ny - 1 - j, i] = v[k]
+    return out
+
+
+def _stats(lx: np.ndarray) -> tuple[float, float, float, float]:
+    """min, mean, max and uniformity min/mean (NaN when the mean is 0)."""
+    lo, mean, hi = float(lx.min()), float(lx.mean()), float(lx.max())
+    return lo, mean, hi, (lo / mean if mean > 0 else math.nan)
+
+
+def grid_png(grid, images: dict[str, np.ndarray]) -> bytes:
+    """PNG bytes of the grid's false-colour illuminance map.
+
+    The colour bar is in lx; axes are metres along ``right`` and ``up`` from
+    the grid centre; the title gives min, mean, max and uniformity.
+    """
+    from matplotlib.figure import Figure  # no pyplot: no global state, no display
+
+    lx = images["Ev_lx"]
+    lo, mean, hi, uni = _stats(lx)
+    w, h = grid.size
+    fig = Figure(figsize=(6.4, 4.8), dpi=100, layout="constrained")
+    ax = fig.add_subplot()
+    # row 0 is the far end along up: drawn on top
+    im = ax.imshow(lx, cmap="viridis", origin="upper", extent=(-w / 2, w / 2, -h / 2, h / 2), interpolation="nearest")
+    cbar = fig.colorbar(im, ax=ax)
+    cbar.set_label("illuminance (lx)")
+    ax.set_xlabel("along right (m)")
+    ax.set_ylabel("along up (m)")
+    ax.set_title(
+        f"{grid.name}: illuminance, {grid.nx} x {grid.ny} cells\n"
+        f"min / mean / max: {lo:.4g} / {mean:.4g} / {hi:.4g} lx\n"
+        f"uniformity (min/mean): {uni:.3f}",
+        fontsize=10,
+    )
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", metadata={"Software": None})
+    return buf.getvalue()
+
+
+def grid_outputs(csv_path: Path, grids: list, rows: list, meta: dict[str, str]) -> dict[Path, Content]:
+    """EXR and PNG maps of every grid.
+
+    Parameters
+    ----------
+    csv_path : Path
+    grids : list of simulator.config.GridConfig
+    rows : list of simulator.results.Reading
+        The run's rows (the grids' cells among them).
+    meta : dict of str to str
+        Run-wide metadata: ``seed``, ``method``, ``light_units``, ``stage``.
+
+    Returns
+    -------
+    dict of Path to content
+    """
+    values = {r.sensor.name: r.values for r in rows}
+    stems = output_names(csv_path, [g.name for g in grids], (".exr", ".png"))
+    files: dict[Path, Content] = {}
+    for g in grids:
+        images = grid_arrays(g, values)
+        lo, mean, hi, uni = _stats(images["Ev_lx"])
+        header = {
+            "probesim:kind": "grid",
+            "probesim:grid": g.name,
+            "probesim:units": "; ".join(f"{c}: {u}" for c, u in GRID_CHANNELS.items()),
+            "probesim:seed": str(meta.get("seed", "")),
+            "probesim:method": str(meta.get("method", "")),
+            "probesim:light_units": str(meta.get("light_units", "")),
+            "probesim:stage": str(meta.get("stage", "")),
+            "probesim:centre_m": _vec(g.centre),
+            "probesim:right": _vec(g.right),
+            "probesim:up": _vec(g.up),
+            "probesim:normal": _vec(g.normal),
+            "probesim:size_m": _vec(g.size),
+            "probesim:cells": f"{g.nx} {g.ny}",
+            "probesim:cell_size_m": _vec(g.cell_size),
+            "probesim:layout": (
+                "pixel (row r, column i) = cell (i, j = ny - 1 - r), centred at centre + "
+                "((i + 0.5)/nx - 0.5)*width*right + ((j + 0.5)/ny - 0.5)*height*up"
+            ),
+            "probesim:illuminance_min_mean_max_lx": f"{lo:.9g} {mean:.9g} {hi:.9g}",
+            "probesim:uniformity": f"{uni:.9g}",
+        }
+        stem = stems[g.name]
+        files[csv_path.with_name(stem + ".exr")] = _exr_writer(images, header)
+        files[csv_path.with_name(stem + ".png")] = grid_png(g, images)
+    return files
+
+
+def _exr_writer(channels: dict[str, np.ndarray], header: dict[str, str], latlong: bool = False):
+    from .exr import write_channels
+
+    def write(path: Path) -> None:
+        if latlong:
+            write_channels(path, channels, header, envmap="latlong")
+        else:
+            write_channels(path, channels, header)
+
+    return write
+
+
+# --------------------------------------------------------------------------- probes
+
+
+def _pair(value, stderr, unit_r: str, unit_p: str) -> dict:
+    return {
+        unit_r: float(value[0]), f"stderr_{unit_r}": float(stderr[0]),
+        unit_p: float(value[1]), f"stderr_{unit_p}": float(stderr[1]),
+    }  # fmt: skip
+
+
+def probe_record(result, map_file: str) -> dict:
+    """A probe's integrals as a JSON-ready dict (W/m² and lx, each with ``stderr_``).
+
+    Keys: ``sensor``, ``source``, ``position_m``, ``resolution``,
+    ``map_file``, ``frame`` (world axes of the map's x, y, z), ``passes``,
+    ``samples``, ``scalar_irradiance``, ``faces`` (``+X`` … ``-Z``),
+    ``vector_irradiance`` (``x``, ``y``, ``z``), ``mean_direction``
+    (radiometric and photometric unit vectors with their angular standard
+    errors in degrees), ``spherical_harmonics`` (``order`` of (l, m) and the
+    coefficient lists ``W_m2``, ``stderr_W_m2``, ``lx``, ``stderr_lx``), and
+    ``delta_lights`` (the exact part of each integral that point and angle-0
+    distant lights gave, same layout as above without errors).
+    """
+    from .probe_engine import FACE_NAMES, SH_NAMES
+
+    I, S, D = result.integrals, result.integrals_stderr, result.delta
+    md_r, md_r_se = result.mean_direction(0)
+    md_p, md_p_se = result.mean_direction(1)
+
+    def clean(x):
+        return None if not math.isfinite(x) else x
+
+    return {
+        "sensor": result.sensor.name,
+        "source": result.sensor.source,
+        "position_m": [float(x) for x in result.sensor.position],
+        "resolution": [int(result.sensor.resolution[0]), int(result.sensor.resolution[1])],
+        "map_file": map_file,
+        "frame": [[float(x) for x in result.frame[:, k]] for k in range(3)],
+        "passes": int(result.passes),
+        "samples": int(result.samples),
+        "scalar_irradiance": _pair(I[0], S[0], "W_m2", "lx"),
+        "faces": {n: _pair(I[1 + k], S[1 + k], "W_m2", "lx") for k, n in enumerate(FACE_NAMES)},
+        "vector_irradiance": {a: _pair(I[7 + k], S[7 + k], "W_m2", "lx") for k, a in enumerate("xyz")},
+        "mean_direction": {
+            "radiometric": [clean(float(x)) for x in md_r], "stderr_deg_radiometric": clean(md_r_se),
+            "photometric": [clean(float(x)) for x in md_p], "stderr_deg_photometric": clean(md_p_se),
+        },  # fmt: skip
+        "spherical_harmonics": {
+            "order": [f"{n}" for n in SH_NAMES],
+            "W_m2": [float(x) for x in I[10:19, 0]], "stderr_W_m2": [float(x) for x in S[10:19, 0]],
+            "lx": [float(x) for x in I[10:19, 1]], "stderr_lx": [float(x) for x in S[10:19, 1]],
+        },  # fmt: skip
+        "delta_lights": {
+            "scalar_irradiance": {"W_m2": float(D[0, 0]), "lx": float(D[0, 1])},
+            "faces": {n: {"W_m2": float(D[1 + k, 0]), "lx": float(D[1 + k, 1])} for k, n in enumerate(FACE_NAMES)},
+            "vector_irradiance": {a: {"W_m2": float(D[7 + k, 0]), "lx": float(D[7 + k, 1])} for k, a in enumerate("xyz")},
+            "spherical_harmonics": {"W_m2": [float(x) for x in D[10:19, 0]], "lx": [float(x) for x in D[10:19, 1]]},
+        },
+    }
+
+
+def probe_outputs(csv_path: Path, results: list, meta: dict[str, str]) -> tuple[dict[Path, Content], dict[str, str]]:
+    """EXR maps of every probe and the ``<csv stem>.probes.json`` side file.
+
+    Parameters
+    ----------
+    csv_path : Path
+    results : list of simulator.probe_engine.ProbeResult
+    meta : dict of str to str
+        Run-wide metadata: ``seed``, ``method``, ``light_units``, ``stage``,
+        and optionally ``taken`` (grid names, whose files come first).
+
+    Returns
+    -------
+    files : dict of Path to content
+    map_files : dict of str to str
+        Probe name → its EXR file name.
+    """
+    if not results:
+        return {}, {}
+    names = list(meta.get("taken", [])) + [r.sensor.name for r in results]
+    stems = output_names(csv_path, names, (".exr",))
+    photometric = meta.get("light_units", "photometric") == "photometric"
+    files: dict[Path, Content] = {}
+    map_files: dict[str, str] = {}
+    records = []
+    for r in results:
+        path = csv_path.with_name(stems[r.sensor.name] + ".exr")
+        map_files[r.sensor.name] = path.name
+        grey = r.radiance[..., 1 if photometric else 0]
+        channels = {
+            "R": grey, "G": grey, "B": grey,
+            "L_W_m2_sr": r.radiance[..., 0], "L_stderr_W_m2_sr": r.radiance_stderr[..., 0],
+            "Lv_cd_m2": r.radiance[..., 1], "Lv_stderr_cd_m2": r.radiance_stderr[..., 1],
+        }  # fmt: skip
+        rgb_unit = "cd/m2 (light_units photometric)" if photometric else "W/m2/sr (light_units radiometric)"
+        delta = "none"
+        if np.any(r.delta[0] > 0):
+            delta = (f"point or angle-0 distant lights give {r.delta[0, 0]:.9g} W/m2 ({r.delta[0, 1]:.9g} lx) of scalar "
+                     "irradiance that the map cannot show (no direction sees them); see the probes JSON")  # fmt: skip
+        header = {
+            "probesim:kind": "probe",
+            "probesim:sensor": r.sensor.name,
+            "probesim:units": "; ".join([f"R, G, B: {rgb_unit}"] + [f"{c}: {u}" for c, u in PROBE_CHANNELS.items()]),
+            "probesim:seed": str(meta.get("seed", "")),
+            "probesim:method": str(meta.get("method", "")),
+            "probesim:light_units": str(meta.get("light_units", "")),
+            "probesim:stage": str(meta.get("stage", "")),
+            "probesim:position_m": _vec(r.sensor.position),
+            "probesim:frame": "; ".join(_vec(r.frame[:, k]) for k in range(3)),
+            "probesim:convention": (
+                "OpenEXR lat-long in the frame above (world axes of the map's x; y; z): "
+                "d = cos(lat) sin(lon) x + sin(lat) y + cos(lat) cos(lon) z, lon = pi (1 - 2u), "
+                "lat = pi (1/2 - v), u = (column + 1/2)/width, v = (row + 1/2)/height at pixel centres, "
+                "row 0 on top; each pixel holds the mean radiance over its solid angle. The frame is that of an "
+                "untransformed DomeLight in the stage, so this file is that DomeLight's texture:file at intensity 1"
+            ),
+            "probesim:passes": str(r.passes),
+            "probesim:samples": str(r.samples),
+            "probesim:delta_lights": delta,
+        }
+        files[path] = _exr_writer(channels, header, latlong=True)
+        records.append(probe_record(r, path.name))
+    doc = {
+        "units": "W_m2: W/m2 (radiometric); lx: lux (photometric); stderr_*: standard error; SH coefficients "
+        "are integrals of radiance times real spherical harmonics over the sphere, world frame (Z up)",
+        "seed": meta.get("seed"),
+        "method": meta.get("method"),
+        "light_units": meta.get("light_units"),
+        "probes": records,
+    }
+    files[csv_path.with_name(f"{csv_path.stem}.probes.json")] = json.dumps(doc, indent=2) + "\n"
+    return files, map_files
