@@ -73,7 +73,7 @@ THREADS_PER_LAUNCH = 1 << 16
 #: most pixels in a probe map (keep equal to simulator.config.MAX_PROBE_PIXELS)
 MAX_PROBE_PIXELS = 1 << 19
 
-_Q = 19  # integrands per sample, see simulator.kernels.probe
+_Q = 22  # integrands per sample, see simulator.kernels.probe (19 reported + 3 for covariances)
 _C = 2  # channels: radiometric, photometric
 
 
@@ -165,6 +165,9 @@ class ProbeResult:
     integrals, integrals_stderr : ndarray, shape (19, 2)
         The sphere integrals in integrand order (fluence, six faces, vector
         x/y/z, nine SH), W/m² (channel 0) and lx (channel 1).
+    vector_cov : ndarray, shape (2, 3, 3)
+        Covariance matrix of the vector irradiance estimate per channel,
+        (W/m²)² and lx².
     delta : ndarray, shape (19, 2)
         The part of ``integrals`` that delta lights gave (exact).
     passes : int
@@ -185,6 +188,7 @@ class ProbeResult:
     solid_angle_sr: np.ndarray
     integrals: np.ndarray
     integrals_stderr: np.ndarray
+    vector_cov: np.ndarray
     delta: np.ndarray
     passes: int
     samples: int
@@ -216,17 +220,18 @@ class ProbeResult:
     def mean_direction(self, channel: int = 0) -> tuple[np.ndarray, float]:
         """Unit mean direction of arrival and its angular standard error, degrees.
 
-        The direction is v/|v| for the vector irradiance v. Its error is the
-        delta-method spread of the components perpendicular to it,
-        √(Σ_i σ_i²·(1 − m_i²))/|v| (component covariances neglected); NaN
-        where v = 0.
+        The direction is m = v/|v| for the vector irradiance v. Its error is
+        the delta-method RMS angle √(tr(P·Σ·P))/|v|, with Σ the covariance
+        of v (:attr:`vector_cov`) and P = I − m·mᵀ the projection across m:
+        the spread of v perpendicular to its direction. NaN where v = 0.
         """
-        v, se = self.integrals[7:10, channel], self.integrals_stderr[7:10, channel]
+        v = self.integrals[7:10, channel]
         norm = float(np.linalg.norm(v))
         if not norm > 0.0:
             return np.full(3, np.nan), math.nan
         m = v / norm
-        ang = math.sqrt(float(np.sum(se**2 * (1.0 - m**2)))) / norm
+        p = np.eye(3) - np.outer(m, m)
+        ang = math.sqrt(max(0.0, float(np.trace(p @ self.vector_cov[channel] @ p)))) / norm
         return m, math.degrees(ang)
 
 
@@ -431,6 +436,13 @@ def run_probes(
         passes = int(stats.count[0])
         total_samples += passes * n_pix
         val, se = _integrals(stats, omega, delta)
+        # Cov(v_i, v_j) = (Var(v_i + v_j) − Var v_i − Var v_j)/2 from the pair sums
+        var = se**2
+        cov = np.zeros((_C, 3, 3))
+        for a in range(3):
+            cov[:, a, a] = var[7 + a]
+        for q, (a, b) in zip((19, 20, 21), ((0, 1), (0, 2), (1, 2))):
+            cov[:, a, b] = cov[:, b, a] = 0.5 * (var[q] - var[7 + a] - var[7 + b])
         mean = stats.mean.reshape(n_pix, _Q, _C)[:, 0, :]
         pse = stats.stderr().reshape(n_pix, _Q, _C)[:, 0, :]
         warnings = []
@@ -443,9 +455,10 @@ def run_probes(
                 radiance=mean.reshape(h, w, _C).copy(),
                 radiance_stderr=pse.reshape(h, w, _C).copy(),
                 solid_angle_sr=omega.reshape(h, w),
-                integrals=val,
-                integrals_stderr=se,
-                delta=delta,
+                integrals=val[:19],
+                integrals_stderr=se[:19],
+                vector_cov=cov,
+                delta=delta[:19],
                 passes=passes,
                 samples=passes * n_pix,
                 seconds=time.perf_counter() - t0,
@@ -458,7 +471,7 @@ def run_probes(
 
 
 def _integrals(stats: RunningStats, omega: np.ndarray, delta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Stratified sphere integrals and their standard errors, each (19, 2)."""
+    """Stratified sphere integrals and their standard errors, each (22, 2)."""
     n = stats.count.astype(np.float64)[:, None]
     mean = stats.mean
     with np.errstate(invalid="ignore", divide="ignore"):

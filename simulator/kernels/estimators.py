@@ -150,6 +150,63 @@ def count_ray(scene: SceneRec, params: TraceParams):
         scene.ray_counts[params.thread] = scene.ray_counts[params.thread] + 1
 
 
+#: hits on planes a ray cannot cross that one query may skip (see first_hit)
+MAX_SKIPS = wp.constant(4)
+
+
+@wp.struct
+class RayHit:
+    t: float  # distance along the ray; RAY_INF when nothing is hit
+    face: int  # triangle hit, −1 when none
+    ng: wp.vec3  # its unit geometric normal
+
+
+@wp.func
+def crosses_plane(scene: SceneRec, face: int, o: wp.vec3, d: wp.vec3) -> bool:
+    """True if the ray (o, d) meets the plane of triangle ``face`` at some
+    t > 0: o lies strictly on one side and d heads to the other. Decided in
+    float64 on the float32 vertices (exact up to 1e-16 relative), so it
+    holds whatever the triangle's size; a degenerate triangle (no plane)
+    cannot be crossed."""
+    a = wp.vec3d(tri_vertex(scene, face, 0))
+    ng = wp.cross(wp.vec3d(tri_vertex(scene, face, 1)) - a, wp.vec3d(tri_vertex(scene, face, 2)) - a)
+    return wp.dot(wp.vec3d(o) - a, ng) * wp.dot(wp.vec3d(d), ng) < wp.float64(0.0)
+
+
+@wp.func
+def first_hit(scene: SceneRec, o: wp.vec3, d: wp.vec3, t_max: float) -> RayHit:
+    """The first surface the ray (o, d) meets before ``t_max``.
+
+    Warp's ray-triangle test works in float32 on vertices relative to the
+    ray origin, so its error grows with the triangle's coordinates, not with
+    the origin's: from a point 1e-5 m above a tilted 10 km ground plane
+    (vertices 5 km out, float32 spacing 5e-4 m) it reports the plane as hit
+    for rays that leave it (shadow acne: a receiver lying on the ground read
+    0). A reported hit on a plane the ray cannot cross (:func:`crosses_plane`)
+    is such an error; the query restarts just past it, so occluders beyond
+    are still found."""
+    h = RayHit()
+    h.t = RAY_INF
+    h.face = -1
+    h.ng = wp.vec3(0.0, 0.0, 1.0)
+    if scene.has_mesh == 0:
+        return h
+    start = float(0.0)
+    k = int(0)
+    while k < MAX_SKIPS and start < t_max:
+        q = wp.mesh_query_ray(scene.mesh, o + start * d, d, t_max - start)
+        if not q.result:
+            return h
+        if crosses_plane(scene, q.face, o, d):
+            h.t = start + q.t
+            h.face = q.face
+            h.ng = wp.normalize(q.normal)
+            return h
+        start = start + q.t + offset_length(scene, o + (start + q.t) * d)
+        k += 1
+    return h
+
+
 @wp.func
 def unoccluded(scene: SceneRec, o: wp.vec3, wi: wp.vec3, dist: float, tri: int) -> bool:
     """True if nothing blocks the segment from o along wi for ``dist``. A
@@ -159,10 +216,9 @@ def unoccluded(scene: SceneRec, o: wp.vec3, wi: wp.vec3, dist: float, tri: int) 
     if scene.has_mesh == 0:
         return True
     if tri >= 0:
-        q = wp.mesh_query_ray(scene.mesh, o, wi, dist * 1.001)
-        return (not q.result) or q.face == tri
-    q = wp.mesh_query_ray(scene.mesh, o, wi, dist)
-    return not q.result
+        h = first_hit(scene, o, wi, dist * 1.001)
+        return h.face < 0 or h.face == tri
+    return first_hit(scene, o, wi, dist).face < 0
 
 
 @wp.func
@@ -209,25 +265,25 @@ def vertex_irradiance(
         wi = to_world(local, n)
         pdf_b = local[2] * INV_PI
         w_dir = weight * PI
-        t_hit = float(RAY_INF)
-        face = int(-1)
-        ng = wp.vec3(0.0, 0.0, 1.0)
         count_ray(scene, params)
-        if scene.has_mesh != 0:
-            q = wp.mesh_query_ray(scene.mesh, o, wi, RAY_INF)
-            if q.result:
-                t_hit = q.t
-                face = q.face
-                ng = wp.normalize(q.normal)
-        # UsdLux area lights in front of the hit (they do not block)
+        hit = first_hit(scene, o, wi, RAY_INF)
+        t_hit = hit.t
+        face = hit.face
+        ng = hit.ng
+        # UsdLux area lights in front of the hit (they do not block). They are
+        # not geometry, so they are met from the true point p, as
+        # sample_light sees them: from o, pushed off the surface, a receiver
+        # 1 µm from a sphere light started inside it and saw nothing, and the
+        # MIS weights (pdf_light at o, not p) lost that light's share.
+        t_lim = t_hit + offset_length(scene, p)  # |o − p| ≤ offset: the hit is at most this far from p
         for li in range(scene.n_lights):
             l = scene.lights[li]
             if l.kind == RECT or l.kind == DISK or l.kind == SPHERE or l.kind == CYLINDER:
-                t = hit_light(l, o, wi, t_hit)
+                t = hit_light(l, p, wi, t_lim)
                 if t > 0.0 and count:
                     w = float(1.0)
                     if params.mis != 0 and params.nee != 0:
-                        w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, t, -1))
+                        w = power_heuristic(pdf_b, pdf_light(scene, li, p, n, wi, t, -1))
                     total += (w_dir * w) * l.emission
         if face < 0:
             for li in range(scene.n_lights):
@@ -235,7 +291,7 @@ def vertex_irradiance(
                 if (le[0] > 0.0 or le[1] > 0.0) and count:
                     w = float(1.0)
                     if params.mis != 0 and params.nee != 0:
-                        w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, RAY_INF, -1))
+                        w = power_heuristic(pdf_b, pdf_light(scene, li, p, n, wi, RAY_INF, -1))
                     total += (w_dir * w) * le
             break
         cos_view = -wp.dot(wi, ng)
@@ -271,16 +327,11 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     if s.one_minus_cos > 0.0:
         d = to_world(sample_uniform_cone(wp.vec2(wp.randf(rng), wp.randf(rng)), s.one_minus_cos), s.normal)
     o = s.position
-    t_hit = float(RAY_INF)
-    face = int(-1)
-    ng = wp.vec3(0.0, 0.0, 1.0)
     count_ray(scene, params)
-    if scene.has_mesh != 0:
-        q = wp.mesh_query_ray(scene.mesh, o, d, RAY_INF)
-        if q.result:
-            t_hit = q.t
-            face = q.face
-            ng = wp.normalize(q.normal)
+    hit = first_hit(scene, o, d, RAY_INF)
+    t_hit = hit.t
+    face = hit.face
+    ng = hit.ng
     # Emitters seen straight along the meter's ray, and the first surface's
     # reflection of the light reaching it straight from emitters, are the
     # direct component; with skip_direct both are left out.

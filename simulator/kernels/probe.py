@@ -11,6 +11,9 @@ q      integrand f(ω)·L(ω)          its integral over the sphere
 1–6    L·max(0, ±ω·axis)            face irradiance on +X, −X, +Y, −Y, +Z, −Z
 7–9    L·ω                          vector irradiance ∫ L ω dω (x, y, z)
 10–18  L·Y_lm(ω)                    real spherical-harmonic coefficients, l ≤ 2
+19–21  L·(x+y), L·(x+z), L·(y+z)    pair sums of 7–9: their variances give the
+                                    covariances of the vector irradiance
+                                    (Var(a+b) = Var a + Var b + 2 Cov(a, b))
 =====  ==========================  ===============================================
 
 (ω in the world frame). Directions are stratified: every *pass* draws one
@@ -50,7 +53,7 @@ from .sampling import sensor_stream_key
 wp.set_module_options({"enable_backward": False})
 
 #: integrands per sample (see the module docstring), each with 2 channels
-N_QUANTITIES = wp.constant(19)
+N_QUANTITIES = wp.constant(22)
 
 # SH normalisation constants (module docstring)
 _SH0 = wp.constant(0.28209479177387814)  # ½√(1/π)
@@ -149,7 +152,13 @@ def probe_weight(q: int, w: wp.vec3) -> float:
         return _SH20 * (3.0 * z * z - 1.0)
     if q == 17:
         return _SH2 * x * z
-    return _SH22 * (x * x - y * y)
+    if q == 18:
+        return _SH22 * (x * x - y * y)
+    if q == 19:
+        return x + y
+    if q == 20:
+        return x + z
+    return y + z
 
 
 @wp.func
@@ -211,7 +220,7 @@ def probe_kernel(
     """``mode`` 0: thread t (= tid + offset) draws passes
     [first_pass + b·pass_block, …) (at most ``pass_block``, within
     ``n_passes``) of pixel pixel_first + t // blocks, b = t mod blocks, and
-    writes the shifted sums of the 19 integrands (row t, column 2q + channel). Sample k of pixel p always uses the random stream
+    writes the shifted sums of the 22 integrands (row t, column 2q + channel). Sample k of pixel p always uses the random stream
     ``rand_init(sensor_stream_key(probe.key, p), k)``, whatever the batch
     layout. ``mode`` 1 (one thread): writes the delta lights' exact
     contributions to the integrals in ``out_sum[0]`` (shift and squares 0)."""
