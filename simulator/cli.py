@@ -148,6 +148,8 @@ def _cmd_run(args) -> int:
     if ad:
         print(f"{ad['sensors_met']}/{n} sensors reached a 95% half-width of {100 * ad['rel_error']:g}% of their reading")
     print(f"wrote {out.csv_path} and {out.record_path.name}")
+    if rec.get("maps"):
+        print(f"maps: {', '.join(rec['maps'])}")
     return 0
 
 

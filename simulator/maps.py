@@ -106,7 +106,7 @@ def sanitise_name(name: str) -> str:
     return s or "sensor"
 
 
-def output_names(csv_path: Path, names: list[str], suffixes: tuple[str, ...]) -> dict[str, str]:
+def output_names(csv_path: Path, names: list[str]) -> dict[str, str]:
     """Unique file stems ``<csv stem>.<sanitised name>`` for ``names``, in order.
 
     Two names that sanitise alike (or that would collide with the CSV's own
@@ -212,7 +212,7 @@ def grid_outputs(csv_path: Path, grids: list, rows: list, meta: dict[str, str]) 
     dict of Path to content
     """
     values = {r.sensor.name: r.values for r in rows}
-    stems = output_names(csv_path, [g.name for g in grids], (".exr", ".png"))
+    stems = output_names(csv_path, [g.name for g in grids])
     files: dict[Path, Content] = {}
     for g in grids:
         images = grid_arrays(g, values)
@@ -339,7 +339,7 @@ def probe_outputs(csv_path: Path, results: list, meta: dict[str, str]) -> tuple[
     if not results:
         return {}, {}
     names = list(meta.get("taken", [])) + [r.sensor.name for r in results]
-    stems = output_names(csv_path, names, (".exr",))
+    stems = output_names(csv_path, names)
     photometric = meta.get("light_units", "photometric") == "photometric"
     files: dict[Path, Content] = {}
     map_files: dict[str, str] = {}

@@ -358,7 +358,9 @@ def run_probes(
     rel_error, abs_error, max_samples, time_limit_s
         Adaptive stopping as for :meth:`simulator.engine.Engine.run`, applied
         to the probe's scalar irradiance (both channels); ``max_samples``
-        caps the directions per probe.
+        caps the directions per probe. ``time_limit_s`` counts from the start
+        of this call; a probe past it still finishes its current batch (at
+        least :data:`MIN_PASSES` passes).
     max_depth, component
         As for :meth:`simulator.engine.Engine.run`.
     progress : callable, optional

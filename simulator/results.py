@@ -149,7 +149,11 @@ def _atomic_write_all(files: dict) -> None:
             else:
                 with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
                     f.write(content)
+        # mkstemp makes 0600 files; give outputs the usual mode the umask allows
+        umask = os.umask(0)
+        os.umask(umask)
         for tmp, path in staged:
+            os.chmod(tmp, 0o666 & ~umask)
             os.replace(tmp, path)
     except BaseException:
         for tmp, _ in staged:

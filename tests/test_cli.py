@@ -4,6 +4,7 @@ good input writes a reproducible CSV with the documented columns."""
 from __future__ import annotations
 
 import csv
+import os
 import shutil
 from pathlib import Path
 
@@ -104,6 +105,9 @@ def test_same_seed_same_bytes_and_columns(tmp_path, capsys):
     assert irr["radiance_W_m2_sr"] == "" and irr["flux_W"] == ""  # not 0: does not apply
     assert rad["irradiance_W_m2"] == "" and float(rad["luminance_cd_m2"]) == pytest.approx(1000.0)
     assert sorted(p.name for p in out.parent.iterdir()) == ["run.csv", "run.run.json"]
+    umask = os.umask(0)
+    os.umask(umask)
+    assert out.stat().st_mode & 0o777 == 0o666 & ~umask  # not mkstemp's private 0600
     assert first[0]["method"] == "analytic"  # the plan: nothing blocks the light, a closed form
     # with a Monte Carlo method the seed matters
     assert main(["run", str(cfg), "-q", "--seed", "7", "--method", "light"]) == 0

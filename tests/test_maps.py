@@ -19,7 +19,6 @@ import pytest
 
 from simulator import closed_forms as cf
 from simulator.config import GridConfig, load_config
-from simulator.errors import UserError
 from simulator.maps import GRID_CHANNELS, PROBE_CHANNELS, grid_arrays, output_names, sanitise_name
 from simulator.run import run
 
@@ -194,7 +193,7 @@ def test_names_are_sanitised_and_unique():
     assert sanitise_name("/World/Probe A") == "World_Probe_A"
     assert sanitise_name("..") == "sensor"
     assert sanitise_name("a-b.c_d") == "a-b.c_d"
-    stems = output_names(Path("out/run.csv"), ["a b", "a_b", "run", "probes", "x"], (".exr",))
+    stems = output_names(Path("out/run.csv"), ["a b", "a_b", "run", "probes", "x"])
     assert stems == {"a b": "run.a_b", "a_b": "run.a_b_2", "run": "run.run_2", "probes": "run.probes_2", "x": "run.x"}
 
 

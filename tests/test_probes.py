@@ -12,7 +12,6 @@ direction to it.
 
 from __future__ import annotations
 
-import dataclasses
 import math
 import textwrap
 from pathlib import Path

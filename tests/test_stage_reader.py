@@ -768,3 +768,22 @@ def test_dome_stage_ground_is_wide_and_faces_up():
     p = g.points[g.triangles]
     at_origin = [i for i in range(g.n_triangles) if np.abs(p[i, :, :2]).max() <= 1.0]
     assert at_origin  # the origin lies in a triangle no larger than the 2 m centre tile
+
+
+def test_float_attributes_keep_their_digits_whatever_numpy_print_options(tmp_path):
+    """A float32 intensity of 1234.5677 must read back as authored even when
+    some imported package has switched numpy to its 6-digit legacy print mode
+    (the reader recovers authored decimals from float32 without str())."""
+    stage = tmp_path / "s.usda"
+    stage.write_text(
+        '#usda 1.0\n(\n    metersPerUnit = 1\n    upAxis = "Z"\n)\n'
+        'def SphereLight "L"\n{\n    float inputs:intensity = 1234.5677\n    float inputs:radius = 0.1\n'
+        '    bool treatAsPoint = 1\n}\n'
+    )
+    saved = np.get_printoptions()
+    try:
+        np.set_printoptions(legacy="1.13")
+        light = load_stage(stage, light_units="radiometric").lights[0]
+    finally:
+        np.set_printoptions(**saved)
+    assert light.emission[0] == pytest.approx(1234.5677 * np.pi * 0.1**2, rel=1e-12)

@@ -965,7 +965,10 @@ def _get(ctx: _Context, attr: Usd.Attribute):
 
 
 def _decimal_f32(v) -> float:
-    return float(str(np.float32(v)))
+    # the shortest decimal that round-trips in float32; format_float_positional
+    # with unique=True ignores numpy's global print options (which other
+    # packages may switch to a 6-digit legacy mode)
+    return float(np.format_float_positional(np.float32(v), unique=True, trim="-"))
 
 
 def _size_attr(ctx: _Context, prim: Usd.Prim, attr: Usd.Attribute, what: str) -> float:
