@@ -6,6 +6,8 @@ A user mistake is one line on stderr and exit status 2; nothing is written.
 from __future__ import annotations
 
 import argparse
+import math
+import os
 import sys
 import time
 
@@ -49,7 +51,38 @@ def _parser() -> argparse.ArgumentParser:
     v.add_argument("--quick", action="store_true", help="looser error target and one reflectance per enclosure")
     v.add_argument("-k", metavar="TEXT", help="only the cases whose name contains TEXT")
     v.add_argument("--device", choices=("cpu", "cuda", "auto"), default="cpu", help="Warp device (default cpu)")
+
+    ch = sub.add_parser("chart", help="error against time for every estimator on configs (log-log PNGs, CSV, summary)")
+    ch.add_argument("configs", nargs="*", metavar="CONFIG", help="configs to chart (default: the bundled reference stages)")
+    ch.add_argument("--out", default="out/chart", metavar="DIR", help="CSV, PNGs and cached references (default out/chart)")
+    ch.add_argument("--seeds", type=int, default=4, help="independent seeds per budget (default 4)")
+    ch.add_argument("--max-seconds", type=float, default=0.5, metavar="S",
+                    help="stop a method's ladder once one run takes S seconds (default 0.5)")
+    ch.add_argument("--device", choices=("cpu", "cuda", "auto"), default="cpu", help="Warp device (default cpu)")
+
+    st = sub.add_parser("stability", help="map where each estimator fails: methods x hard cases (CSV, heat map)")
+    st.add_argument("--out", default="out/stability", metavar="DIR", help="CSVs and heat map (default out/stability)")
+    st.add_argument("--quick", action="store_true", help="0.25 s per cell instead of 1 s")
+    st.add_argument("--seconds", type=float, metavar="S", help="budget per cell in seconds (overrides --quick)")
+    st.add_argument("--device", choices=("cpu", "cuda", "auto"), default="cpu", help="Warp device (default cpu)")
     return p
+
+
+def _cmd_chart(args) -> int:
+    from .chart import main_chart
+
+    return main_chart(args.configs, args.out, args.seeds, args.max_seconds, args.device, log=lambda m: print(m, flush=True))
+
+
+def _cmd_stability(args) -> int:
+    from pathlib import Path
+
+    from .stability import main_stability
+
+    if args.seconds is not None and not (args.seconds > 0 and math.isfinite(args.seconds)):
+        raise UserError(f"--seconds: must be a positive number of seconds, got {args.seconds}")
+    return main_stability(Path(args.out), quick=args.quick, device=args.device, seconds=args.seconds,
+                          log=lambda m: print(m, flush=True))  # fmt: skip
 
 
 def _cmd_verify(args) -> int:
@@ -166,12 +199,21 @@ def main(argv: list[str] | None = None) -> int:
             return _cmd_bench(args)
         if args.command == "verify":
             return _cmd_verify(args)
+        if args.command == "chart":
+            return _cmd_chart(args)
+        if args.command == "stability":
+            return _cmd_stability(args)
     except UserError as e:
         print(f"probesim: error: {e}", file=sys.stderr)
         return e.exit_code
     except KeyboardInterrupt:
         print("probesim: interrupted; nothing written", file=sys.stderr)
         return 130
+    except BrokenPipeError:
+        # the reader of our output went away (`probesim verify | head`): stop
+        # quietly, and keep Python from complaining while flushing stdout at exit
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
     return 1
 
 

@@ -117,6 +117,17 @@ def test_missing_optional_config_is_skipped_with_a_note(tmp_path):
     assert result.rows == [] and result.passed and len(notes) == 1 and "not_yet.toml" in notes[0]
 
 
+def test_a_broken_case_fails_its_row_and_the_others_still_run():
+    """A case whose config is missing (and not optional) is one failing row
+    naming the file; the next case still runs and passes."""
+    broken = V.Case("broken", "missing.toml", "light", lambda ctx, s, ch: 0.0)
+    result = V.run_suite(cases=(broken, _case("point_cm_yup")), quick=True)
+    assert not result.passed
+    assert result.rows[0].case == "broken" and not result.rows[0].passed and "missing.toml" in result.rows[0].note
+    assert all(r.passed for r in result.rows[1:]) and len(result.rows) == 5
+    assert "FAIL" in V.format_row(result.rows[0])
+
+
 def test_cli_prints_the_table_writes_csv_and_exits_0(tmp_path, capsys):
     """`probesim verify -k radiance_floor --csv OUT` prints a header, one row per
     receiver and a summary, writes the same rows as CSV, and exits 0."""

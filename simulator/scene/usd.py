@@ -14,6 +14,12 @@ Geometry
     has a negative determinant (a mirror swaps handedness); both together
     cancel. Other gprims (Cylinder, Cone, Capsule, Plane, curves, points,
     volumes) are skipped with a warning.
+    A Sphere becomes a UV sphere of :data:`SPHERE_SEGMENTS` (longitude
+    segments, latitude rings), vertices on the surface, so its facets lie
+    inside it by up to about r·((pi/n_lon)^2 + (pi/(2 n_lat))^2)/2: 0.24% of
+    r at 64 x 32. Where that matters (an integrating sphere) author
+    ``int2 probesim:tessellation = (512, 256)`` on the prim: 261,120
+    triangles, within 3.8e-5·r of the sphere.
 Materials
     The bound material's ``UsdPreviewSurface``: ``diffuseColor`` is the
     Lambertian albedo, ``emissiveColor`` the front-face emitted radiance in
@@ -156,6 +162,10 @@ DEFAULT_ALBEDO = 0.18
 
 #: UsdGeom.Sphere tessellation: (longitude segments, latitude rings)
 SPHERE_SEGMENTS = (64, 32)
+#: per-Sphere override of :data:`SPHERE_SEGMENTS`: ``int2 probesim:tessellation = (n_lon, n_lat)``
+TESSELLATION_ATTR = "probesim:tessellation"
+#: most faces (n_lon * n_lat) a tessellated Sphere may have
+MAX_SPHERE_FACES = 1 << 22
 
 # UsdPreviewSurface input fallbacks (from its specification).
 _PREVIEW_DEFAULTS = {
@@ -600,9 +610,26 @@ def _gprim_polygons(ctx: _Context, prim: Usd.Prim):
         radius = float(_get(ctx, UsdGeom.Sphere(prim).GetRadiusAttr()))
         if not math.isfinite(radius) or radius < 0:
             raise ctx.error(prim, f"Sphere radius must be a non-negative number, not {radius}")
-        return _sphere_polygons(radius, *SPHERE_SEGMENTS) if radius > 0 else None
+        return _sphere_polygons(radius, *_sphere_segments(ctx, prim)) if radius > 0 else None
     ctx.warn(f"{prim.GetPath()}: {prim.GetTypeName()} is not supported (only Mesh, Cube, Sphere); ignored")
     return None
+
+
+def _sphere_segments(ctx: _Context, prim: Usd.Prim) -> tuple[int, int]:
+    """``(longitude segments, latitude rings)`` of a Sphere: ``probesim:tessellation`` if authored,
+    else :data:`SPHERE_SEGMENTS`."""
+    attr = prim.GetAttribute(TESSELLATION_ATTR)
+    value = attr.Get(ctx.time) if attr and attr.HasAuthoredValue() else None
+    if value is None:
+        return SPHERE_SEGMENTS
+    try:
+        n_lon, n_lat = (int(v) for v in value)
+    except (TypeError, ValueError):
+        raise ctx.error(prim, f"{TESSELLATION_ATTR} must be two integers (int2), not {value!r}") from None
+    if n_lon < 3 or n_lat < 2 or n_lon * n_lat > MAX_SPHERE_FACES:
+        raise ctx.error(prim, f"{TESSELLATION_ATTR} {(n_lon, n_lat)} must have longitude segments >= 3, "
+                              f"latitude rings >= 2 and at most {MAX_SPHERE_FACES} faces in all")
+    return n_lon, n_lat
 
 
 def _mesh_polygons(ctx: _Context, prim: Usd.Prim):
