@@ -341,10 +341,31 @@ def chart_config(
         slope = "exact" if curve.exact else ("-" if curve.slope is None else f"{curve.slope:+.2f}")
         log(f"  {m:<9} {len(curve.budgets)} rungs to {curve.budgets[-1]:,} samples/sensor in {curve.seconds[-1]:.3f} s, "
             f"error {curve.errors[-1]:.1e}, slope {slope}")  # fmt: skip
+    suspect = _reference_suspect(chart.curves)
+    if suspect:
+        chart.notes.append(suspect)
+        log(f"  note: {suspect}")
     if plot:
         chart.png = Path(out_dir) / f"chart_{name}.png"
         _plot(chart, chart.png)
     return chart
+
+
+def _reference_suspect(curves: list[MethodCurve]) -> str:
+    """A note when two or more Monte Carlo methods level off together
+    (error flat in samples, slope > −0.25) at nearly the same error: unbiased
+    estimators that agree with one another and not with the reference
+    point at the reference."""
+    flat = [c for c in curves if not c.skipped and not c.exact and c.method != "analytic"
+            and c.slope_samples is not None and c.slope_samples > -0.25]  # fmt: skip
+    if len(flat) < 2:
+        return ""
+    best = min(c.errors[-1] for c in flat)
+    together = [c.method for c in flat if c.errors[-1] <= 2.0 * best]
+    if len(together) < 2:
+        return ""
+    return (f"{', '.join(together)} level off together at a relative error of {best:.1e}: they agree with one "
+            f"another, not with the reference, which is likely off by about that much")
 
 
 # --------------------------------------------------------------------------- outputs
@@ -402,7 +423,7 @@ def _plot(chart: ConfigChart, path: Path) -> None:
     ax.set_ylabel("relative RMS error over sensors (exact: 1e-7)")
     ax.set_title(f"{chart.config}: {chart.sensors} sensors, {chart.device}; reference: {chart.reference_kind}", fontsize=8.5)
     ax.grid(True, which="major", lw=0.4, alpha=0.5)
-    ax.legend(fontsize=7.5, loc="lower left")
+    ax.legend(fontsize=7.5, loc="best")
     fig.tight_layout()
     _atomic_write_all({path: lambda p: fig.savefig(p, format="png")})
     plt.close(fig)

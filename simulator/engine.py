@@ -24,9 +24,9 @@ import numpy as np
 
 from .errors import UserError
 from .scene.model import Light, LightKind, Scene, Sensor, SensorKind
-from .stats import Z95, RunningStats
+from .stats import RunningStats, z_for_confidence
 
-__all__ = ["COMPONENTS", "METHOD_FLAGS", "Engine", "EngineResult", "Progress", "resolve_device"]
+__all__ = ["COMPONENTS", "METHOD_FLAGS", "cuda_available", "Engine", "EngineResult", "Progress", "resolve_device"]
 
 #: samples one kernel thread draws for one sensor (a block)
 BLOCK = 32
@@ -75,6 +75,11 @@ def _warp():
             wp.init()
         _wp = wp
     return _wp
+
+
+def cuda_available() -> bool:
+    """Whether Warp finds a CUDA device on this machine."""
+    return _warp().get_cuda_device_count() > 0
 
 
 def resolve_device(requested: str) -> str:
@@ -422,6 +427,7 @@ class Engine:
         progress: Callable[[Progress], None] | None = None,
         count_rays: bool = False,
         sensor_ids: np.ndarray | None = None,
+        confidence: float = 0.95,
     ) -> EngineResult:
         """Estimate every sensor with ``method`` (light, bsdf, mis or path).
 
@@ -453,6 +459,7 @@ class Engine:
         seconds = np.zeros(n_s)
         nonfinite = np.zeros(n_s, np.int64)
         adaptive = rel_error is not None
+        z = z_for_confidence(confidence)  # half-width of the confidence interval, in standard errors
         cap = max_samples if adaptive else samples
         active = np.zeros(n_s, bool)
         active[ids_all] = True
@@ -477,13 +484,13 @@ class Engine:
             if adaptive:
                 se = stats.stderr()
                 target = np.maximum(rel_error * np.abs(stats.mean), abs_error)
-                ok = np.all(Z95 * se <= target, axis=1)
+                ok = np.all(z * se <= target, axis=1)
                 met |= ok & active
                 done |= ok
                 # next batch: enough to reach the target if the variance holds,
                 # at most doubling, at least one block
                 with np.errstate(divide="ignore", invalid="ignore"):
-                    ratio = np.max((Z95 * se / np.maximum(target, 1e-300)) ** 2, axis=1)
+                    ratio = np.max((z * se / np.maximum(target, 1e-300)) ** 2, axis=1)
                 need = np.ceil(stats.count * np.nan_to_num(ratio, nan=2.0, posinf=2.0) * 1.1) - stats.count
                 want = np.clip(need, BLOCK, np.maximum(stats.count, BLOCK)).astype(np.int64)
             active &= ~done

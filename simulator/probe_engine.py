@@ -45,7 +45,7 @@ import numpy as np
 
 from .errors import UserError
 from .scene.model import Sensor, SensorKind
-from .stats import Z95, RunningStats
+from .stats import RunningStats, z_for_confidence
 
 __all__ = [
     "FACE_NAMES",
@@ -331,6 +331,7 @@ def run_probes(
     seed: int,
     stream_ids: list[int] | None = None,
     rel_error: float | None = None,
+    confidence: float = 0.95,
     abs_error: float = 0.0,
     max_samples: int = 1 << 20,
     time_limit_s: float | None = None,
@@ -383,6 +384,7 @@ def run_probes(
     stream_ids = list(range(len(probes))) if stream_ids is None else list(stream_ids)
     frame = probe_frame(engine.scene.up_axis)
     adaptive = rel_error is not None
+    z = z_for_confidence(confidence)  # half-width of the confidence interval, in standard errors
     out: list[ProbeResult] = []
     t_start = time.perf_counter()
     total_samples = 0
@@ -420,11 +422,11 @@ def run_probes(
             if adaptive:
                 val, se = _integrals(stats, omega, delta)
                 target = np.maximum(rel_error * np.abs(val[0]), abs_error)
-                met = bool(np.all(Z95 * se[0] <= target))
+                met = bool(np.all(z * se[0] <= target))
                 done |= met
                 if not done:
                     with np.errstate(divide="ignore", invalid="ignore"):
-                        ratio = float(np.max((Z95 * se[0] / np.maximum(target, 1e-300)) ** 2))
+                        ratio = float(np.max((z * se[0] / np.maximum(target, 1e-300)) ** 2))
                     n = int(stats.count[0])
                     need = math.ceil(n * (ratio if math.isfinite(ratio) else 2.0) * 1.1) - n
                     want = int(np.clip(need, PASS_BLOCK, max(n, PASS_BLOCK)))

@@ -83,7 +83,7 @@ def run_plan(engine, plan: Plan, sim, progress=None) -> PlannedResult:
         r = engine.run(
             method, samples=sim.samples, seed=sim.seed, rel_error=sim.rel_error, abs_error=sim.abs_error,
             max_samples=sim.sample_cap, time_limit_s=sim.time_limit_s, max_depth=sim.max_depth,
-            component=sim.component, progress=progress, sensor_ids=ids,
+            component=sim.component, progress=progress, sensor_ids=ids, confidence=sim.confidence,
         )  # fmt: skip
         out.mean[ids], out.stderr[ids], out.samples[ids] = r.mean[ids], r.stderr[ids], r.samples[ids]
         out.seconds[ids], out.non_finite[ids] = r.seconds[ids], r.non_finite[ids]
@@ -155,7 +155,7 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
             probes, probe_method, samples=sim.samples, seed=sim.seed,
             stream_ids=[i for i, s in enumerate(sensors) if s.kind == SensorKind.PROBE], rel_error=sim.rel_error, abs_error=sim.abs_error,
             max_samples=sim.sample_cap, time_limit_s=sim.time_limit_s, max_depth=sim.max_depth,
-            component=sim.component, progress=progress,
+            component=sim.component, progress=progress, confidence=sim.confidence,
         )  # fmt: skip
         for p in probe_res:
             res.warnings.extend(p.warnings)
@@ -195,6 +195,7 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
         else {
             "rel_error": sim.rel_error,
             "abs_error": sim.abs_error,
+            "confidence": sim.confidence,
             "max_samples": sim.sample_cap,
             "time_limit_s": sim.time_limit_s,
             "sensors_met": int(res.target_met.sum()),

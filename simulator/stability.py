@@ -493,7 +493,7 @@ def _heatmap(cells: list[Cell], path: Path, title: str) -> None:
             v = c.verdict if c else "n/a"
             ax.add_patch(plt.Rectangle((j, i), 1, 1, facecolor=_COLOURS[v], edgecolor="white", linewidth=2))
             if c and v != "n/a":
-                txt = f"{v}\n{c.rel_error:.0e}" + (f" NaN" if c.non_finite else "")
+                txt = f"{v}\n{c.rel_error:.1e}" + (f" NaN" if c.non_finite else "")
                 ax.text(j + 0.5, i + 0.5, txt, ha="center", va="center", fontsize=7.5,
                         color="white" if v in ("biased", "blind") else "black")  # fmt: skip
             else:
@@ -510,7 +510,7 @@ def _heatmap(cells: list[Cell], path: Path, title: str) -> None:
     ax.legend(handles=[Patch(color=_COLOURS[v], label=v) for v in (*VERDICTS, "n/a")], loc="upper center",
               bbox_to_anchor=(0.5, -0.01), ncol=5, fontsize=7.5, frameon=False)  # fmt: skip
     fig.tight_layout()
-    fig.savefig(path)
+    fig.savefig(path, format="png")
     plt.close(fig)
 
 

@@ -15,10 +15,18 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["RunningStats", "Z95"]
+__all__ = ["RunningStats", "Z95", "z_for_confidence"]
 
 #: two-sided 95% normal quantile, for confidence half-widths
 Z95 = 1.959963984540054
+
+
+def z_for_confidence(confidence: float) -> float:
+    """Two-sided normal quantile: the half-width of a ``confidence`` interval
+    in standard errors (0.95 → 1.96, 0.999 → 3.29)."""
+    from statistics import NormalDist
+
+    return NormalDist().inv_cdf(0.5 + 0.5 * confidence)
 
 
 class RunningStats:

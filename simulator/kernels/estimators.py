@@ -169,15 +169,19 @@ class RayHit:
 
 
 @wp.func
-def crosses_plane(scene: SceneRec, face: int, o: wp.vec3, d: wp.vec3) -> bool:
-    """True if the ray (o, d) meets the plane of triangle ``face`` at some
-    t > 0: o lies strictly on one side and d heads to the other. Decided in
-    float64 on the float32 vertices (exact up to 1e-16 relative), so it
-    holds whatever the triangle's size; a degenerate triangle (no plane)
-    cannot be crossed."""
+def plane_distance(scene: SceneRec, face: int, o: wp.vec3, d: wp.vec3) -> float:
+    """Distance t > 0 at which the ray (o, d) meets the plane of triangle
+    ``face``, or −1 when it cannot meet it ahead: o lies on the plane, or d
+    is parallel to it or heads away. Solved in float64 on the float32
+    vertices (exact up to ~1e-16 relative), whatever the triangle's size; a
+    degenerate triangle has no plane and is never met."""
     a = wp.vec3d(tri_vertex(scene, face, 0))
     ng = wp.cross(wp.vec3d(tri_vertex(scene, face, 1)) - a, wp.vec3d(tri_vertex(scene, face, 2)) - a)
-    return wp.dot(wp.vec3d(o) - a, ng) * wp.dot(wp.vec3d(d), ng) < wp.float64(0.0)
+    side = wp.dot(wp.vec3d(o) - a, ng)
+    dn = wp.dot(wp.vec3d(d), ng)
+    if side * dn >= wp.float64(0.0):
+        return -1.0
+    return float(-side / dn)
 
 
 @wp.func
@@ -188,10 +192,12 @@ def first_hit(scene: SceneRec, o: wp.vec3, d: wp.vec3, t_max: float) -> RayHit:
     ray origin, so its error grows with the triangle's coordinates, not with
     the origin's: from a point 1e-5 m above a tilted 10 km ground plane
     (vertices 5 km out, float32 spacing 5e-4 m) it reports the plane as hit
-    for rays that leave it (shadow acne: a receiver lying on the ground read
-    0). A reported hit on a plane the ray cannot cross (:func:`crosses_plane`)
-    is such an error; the query restarts just past it, so occluders beyond
-    are still found."""
+    by rays that leave it (shadow acne: a receiver lying on the ground read
+    0), and puts hits up to ~1e-4 m off the plane (a path vertex may then lie
+    behind its own surface, which shadows it). So each hit's distance is
+    recomputed by :func:`plane_distance`; a reported hit on a plane the ray
+    cannot meet is skipped by restarting the query just past it, so
+    occluders beyond are still found."""
     h = RayHit()
     h.t = RAY_INF
     h.face = -1
@@ -204,8 +210,11 @@ def first_hit(scene: SceneRec, o: wp.vec3, d: wp.vec3, t_max: float) -> RayHit:
         q = wp.mesh_query_ray(scene.mesh, o + start * d, d, t_max - start)
         if not q.result:
             return h
-        if crosses_plane(scene, q.face, o, d):
-            h.t = start + q.t
+        t = plane_distance(scene, q.face, o, d)
+        if t > t_max:
+            return h  # the exact crossing lies past the segment's end: nothing in the way
+        if t > 0.0:
+            h.t = t
             h.face = q.face
             h.ng = wp.normalize(q.normal)
             return h
@@ -288,7 +297,7 @@ def vertex_irradiance(
     while depth < MAX_VERTICES:
         # Rays leave a surface from o, pushed off it (see offset_length). A
         # sensor within that push of a UsdLux light starts them at p itself:
-        # lights are not geometry, and crosses_plane (first_hit) still keeps
+        # lights are not geometry, and first_hit (plane_distance) still keeps
         # the surface a sensor may lie on from shadowing it.
         o = p
         off = offset_length(scene, p)
