@@ -90,6 +90,11 @@ REFERENCE_TIME_FACTOR = 40.0
 REFERENCE_REL_ERROR = 1.0e-6
 REFERENCE_SEED = 1_000_003
 TARGETS = (1.0e-2, 1.0e-3)
+#: the planner check: adaptive runs to this relative 95% half-width, from
+#: this first batch, median wall time over this many seeds
+ADAPTIVE_REL_ERROR = 0.01
+ADAPTIVE_PILOT = 256
+ADAPTIVE_SEEDS = 5
 
 
 @dataclass
@@ -128,6 +133,16 @@ class ConfigChart:
     rows: list[tuple]
     png: Path | None = None
     notes: list[str] = field(default_factory=list)
+    #: method (and "auto") → (median seconds of an adaptive run to 1%, every sensor met it)
+    adaptive: dict[str, tuple[float, bool]] = field(default_factory=dict)
+
+    def auto_ratio(self) -> tuple[float, str] | None:
+        """auto's adaptive time over the fastest single method's, and that method."""
+        singles = {m: t for m, (t, met) in self.adaptive.items() if m != "auto" and met}
+        if "auto" not in self.adaptive or not singles:
+            return None
+        best = min(singles, key=singles.get)
+        return self.adaptive["auto"][0] / singles[best], best
 
 
 # --------------------------------------------------------------------------- curve maths
@@ -255,6 +270,40 @@ def _skip_reason(method: str, scene, sensors, component: str) -> str:
     return ""
 
 
+def _adaptive_times(engine, scene, sensors, sim, methods: list[str], log) -> dict[str, tuple[float, bool]]:
+    """Wall time for every sensor to reach a 1% relative 95% half-width, for
+    each method and for the planner's ``auto`` (which reads each sensor its
+    own way): the measure the planner is judged by. Lights are culled per
+    sensor (the plan's mask) for every method alike."""
+    from dataclasses import replace
+
+    from .plan import make_plan
+    from .run import run_plan
+
+    plan = make_plan(scene, sensors, "auto", sim.component)
+    engine.set_light_mask(plan.light_mask([l.name for l in scene.lights]))
+    base = replace(sim, rel_error=ADAPTIVE_REL_ERROR, samples=ADAPTIVE_PILOT, confidence=0.95, time_limit_s=None)
+
+    def once(m: str, seed: int) -> tuple[float, bool]:
+        s = replace(base, seed=seed)
+        if m == "auto":
+            r = run_plan(engine, plan, s)
+        else:
+            r = engine.run(m, samples=s.samples, seed=seed, rel_error=s.rel_error, abs_error=s.abs_error,
+                           max_samples=s.sample_cap, max_depth=s.max_depth, component=s.component)  # fmt: skip
+        met = True if r.target_met is None else bool(np.all(r.target_met))
+        return r.wall_s, met
+
+    out = {}
+    for m in [*methods, "auto"]:
+        once(m, 0)  # warm-up
+        runs = [once(m, 7001 + k) for k in range(ADAPTIVE_SEEDS)]
+        out[m] = (float(np.median([t for t, _ in runs])), all(met for _, met in runs))
+    ratio = ", ".join(f"{m} {_fmt_time(t, False)}" + ("" if met else "*") for m, (t, met) in out.items())
+    log(f"  adaptive to 1%: {ratio}")
+    return out
+
+
 def _rel_rms(est: np.ndarray, ref: np.ndarray, use: np.ndarray) -> float:
     if not use.any():
         return 0.0
@@ -341,6 +390,7 @@ def chart_config(
         slope = "exact" if curve.exact else ("-" if curve.slope is None else f"{curve.slope:+.2f}")
         log(f"  {m:<9} {len(curve.budgets)} rungs to {curve.budgets[-1]:,} samples/sensor in {curve.seconds[-1]:.3f} s, "
             f"error {curve.errors[-1]:.1e}, slope {slope}")  # fmt: skip
+    chart.adaptive = _adaptive_times(engine, scene, sensors, sim, [c.method for c in chart.curves if not c.skipped], log)
     suspect = _reference_suspect(chart.curves)
     if suspect:
         chart.notes.append(suspect)
@@ -462,6 +512,23 @@ def format_summary(charts: list[ConfigChart]) -> str:
             slope_n = "exact" if c.exact else ("-" if c.slope_samples is None else f"{c.slope_samples:+.2f}")
             note = f"{len(c.budgets)} rungs to {c.budgets[-1]:,}/sensor" if c.budgets[-1] else "closed form"
             lines.append(f"{ch.config:<18} {c.method:<9} {t1:>11} {t2:>11} {eff:>10} {slope:>7} {slope_n:>7}  {note}")
+    lines += ["", format_auto_check(charts)]
+    return "\n".join(lines)
+
+
+def format_auto_check(charts: list[ConfigChart]) -> str:
+    """The planner check: per config, each method's adaptive time to 1% and
+    auto's, with auto's ratio to the fastest single method."""
+    head = f"{'config':<18} {'auto':>10} {'fastest single':>24} {'ratio':>6}  all methods (* = a sensor missed the target)"
+    lines = [head, "-" * len(head)]
+    for ch in charts:
+        r = ch.auto_ratio()
+        if r is None:
+            continue
+        ratio, best = r
+        others = ", ".join(f"{m} {_fmt_time(t, False)}" + ("" if met else "*") for m, (t, met) in ch.adaptive.items() if m != "auto")
+        fastest = f"{best} {_fmt_time(ch.adaptive[best][0], False)}"
+        lines.append(f"{ch.config:<18} {_fmt_time(ch.adaptive['auto'][0], False):>10} {fastest:>24} {ratio:>6.2f}  {others}")
     return "\n".join(lines)
 
 

@@ -888,3 +888,14 @@ def test_constants():
     """METHODS and DEVICES are the documented tuples."""
     assert METHODS == ("auto", "analytic", "light", "bsdf", "mis", "path")
     assert DEVICES == ("cpu", "cuda", "auto")
+
+
+def test_confidence_key_and_flag(write):
+    """`confidence` is a probability in (0.5, 1), in the config and as a flag."""
+    cfg = load_config(write("[simulation]\nconfidence = 0.999\n"))
+    assert cfg.simulation.confidence == 0.999
+    assert load_config(write("")).simulation.confidence == 0.95
+    msg = load_error(write("[simulation]\nconfidence = 95\n"))
+    assert "simulation.confidence: must be between 0.5 and 1" in msg
+    with pytest.raises(UserError, match="--confidence"):
+        apply_overrides(cfg, confidence=1.0)

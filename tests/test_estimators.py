@@ -132,3 +132,21 @@ def test_coverage_of_the_95_percent_interval():
     assert binom.cdf(179, 200, 0.95) + binom.sf(198, 200, 0.95) < 2e-3  # the bound quoted above
     print(f"coverage: {hits}/200 intervals contain the truth")
     assert 180 <= hits <= 198, hits
+
+
+def test_confidence_sets_the_stopping_interval():
+    """confidence = 0.999 stops each sensor at 3.29 standard errors ≤ 1% of its
+    reading (the two-sided 99.9% normal quantile), which takes about
+    (3.29/1.96)² = 2.8× the samples of the default 95%."""
+    from simulator.stats import z_for_confidence
+
+    assert z_for_confidence(0.95) == pytest.approx(1.959964, abs=1e-6)
+    assert z_for_confidence(0.999) == pytest.approx(3.290527, abs=1e-6)
+    _, scene, sensors = _load("rect")
+    sensors = [s for s in sensors if s.name == "centre"]
+    eng = Engine(scene, sensors)
+    loose = eng.run("bsdf", samples=256, seed=8, rel_error=0.01)
+    tight = eng.run("bsdf", samples=256, seed=8, rel_error=0.01, confidence=0.999)
+    assert tight.target_met.all()
+    assert np.all(3.290527 * tight.stderr <= 0.01 * np.abs(tight.mean))
+    assert 2.0 < tight.samples[0] / loose.samples[0] < 4.0

@@ -135,14 +135,14 @@ def test_lights_behind_a_sensor_are_not_sampled(tmp_path):
 
 def test_auto_never_picks_a_blind_or_biased_method():
     """Over every bundled config: `bsdf` (blind to delta lights) is never
-    chosen, and a direct-only method (`light`, `analytic`) only where no
+    chosen, and a direct-only method (`light`, `mis`, `analytic`) only where no
     surface the sensor sees reflects (otherwise it would be biased low)."""
     for path in sorted((ROOT / "configs").glob("*.toml")):
         cfg = load_config(path)
         scene = load_scene(cfg)
         sensors = [s for s in collect_sensors(cfg, scene) if s.kind.name != "PROBE"]
         for sp in make_plan(scene, sensors, "auto", cfg.simulation.component).sensors:
-            assert sp.method in ("analytic", "light", "path"), (path.name, sp)
+            assert sp.method in ("analytic", "light", "mis", "path"), (path.name, sp)
             if sp.method != "path" and cfg.simulation.component != "direct":
                 assert sp.geometry != "reflecting surfaces", (path.name, sp)
 
@@ -152,3 +152,16 @@ def test_one_spectral_channel_for_grey_scenes():
     scene = load_scene(cfg)
     plan = make_plan(scene, collect_sensors(cfg, scene))
     assert plan.channels == 1 and "grey" in plan.channel_reason
+
+
+def test_mis_for_a_large_source_light_for_a_small_one(tmp_path):
+    """Direct light from a sky covering the whole hemisphere (2π sr) behind a
+    black blocker: the plan adds cosine-weighted directions (`mis`). The twin
+    under a 1 m² lamp 2 m away (0.25 sr) keeps plain light sampling, whose
+    single shadow ray per sample is the cheaper way there."""
+    dome = 'def DomeLight "Sky"\n{\n    float inputs:intensity = 1\n}\n'
+    _, scene, sensors = _setup(tmp_path, dome + _quad("Blocker", 1.0, 0.2, 0.0))
+    sp = make_plan(scene, sensors).sensors[0]
+    assert sp.method == "mis" and "6.3 sr" in sp.reason
+    _, scene, sensors = _setup(tmp_path, _light() + _quad("Blocker", 1.0, 0.2, 0.0))
+    assert make_plan(scene, sensors).sensors[0].method == "light"

@@ -199,6 +199,29 @@ def _sample_sphere(l: LightRec, p: wp.vec3, n: wp.vec3, u: wp.vec3) -> LightSamp
 
 
 @wp.func
+def _area_sample(l: LightRec, p: wp.vec3, n: wp.vec3, q: wp.vec3, nl: wp.vec3) -> LightSample:
+    """A point q drawn uniformly on the light's area A (pdf 1/A), whose
+    emitting normal there is nl, as a direction sample from p: solid-angle
+    pdf d²/(A·cosθl); nothing when q faces away from p."""
+    s = _empty_sample()
+    d = q - p
+    dist = wp.length(d)
+    if dist <= 0.0:
+        return s
+    wi = d / dist
+    cos_l = -wp.dot(wi, nl)
+    if cos_l <= 0.0:
+        return s
+    s.wi = wi
+    s.dist = dist
+    s.pdf = dist * dist / (l.area * cos_l)
+    cos_r = wp.dot(wi, n)
+    if cos_r > 0.0:
+        s.value = l.emission * (cos_r / s.pdf)
+    return s
+
+
+@wp.func
 def _rect_corner(l: LightRec) -> wp.vec3:
     return l.position - 0.5 * l.width * l.ex - 0.5 * l.height * l.ey
 
@@ -210,54 +233,29 @@ def _sample_rect(l: LightRec, p: wp.vec3, n: wp.vec3, u: wp.vec3) -> LightSample
         return s  # behind a one-sided emitter
     corner = _rect_corner(l)
     sr = sphrect_setup(p, corner, l.ex, l.ey, l.width, l.height)
-    q = wp.vec3(0.0)
-    pdf = float(0.0)
-    if sr.solid_angle > SPHRECT_MIN_SOLID_ANGLE:
-        q = sphrect_sample(sr, wp.vec2(u[0], u[1]))
-        pdf = 1.0 / sr.solid_angle
-    else:
+    if sr.solid_angle <= SPHRECT_MIN_SOLID_ANGLE:
         q = corner + (u[0] * l.width) * l.ex + (u[1] * l.height) * l.ey
+        return _area_sample(l, p, n, q, -l.ez)
+    q = sphrect_sample(sr, wp.vec2(u[0], u[1]))
     d = q - p
     dist = wp.length(d)
     if dist <= 0.0:
         return s
-    wi = d / dist
-    if pdf == 0.0:
-        cos_l = wp.dot(wi, l.ez)
-        if cos_l <= 0.0:
-            return s
-        pdf = dist * dist / (l.area * cos_l)
-    s.wi = wi
+    s.wi = d / dist
     s.dist = dist
-    s.pdf = pdf
-    cos_r = wp.dot(wi, n)
+    s.pdf = 1.0 / sr.solid_angle
+    cos_r = wp.dot(s.wi, n)
     if cos_r > 0.0:
-        s.value = l.emission * (cos_r / pdf)
+        s.value = l.emission * (cos_r * sr.solid_angle)
     return s
 
 
 @wp.func
 def _sample_disk(l: LightRec, p: wp.vec3, n: wp.vec3, u: wp.vec3) -> LightSample:
-    s = _empty_sample()
     if wp.dot(p - l.position, l.ez) >= 0.0:
-        return s
+        return _empty_sample()  # behind a one-sided emitter
     dp = sample_concentric_disk(wp.vec2(u[0], u[1])) * l.radius
-    q = l.position + dp[0] * l.ex + dp[1] * l.ey
-    d = q - p
-    dist = wp.length(d)
-    if dist <= 0.0:
-        return s
-    wi = d / dist
-    cos_l = wp.dot(wi, l.ez)
-    if cos_l <= 0.0:
-        return s
-    s.wi = wi
-    s.dist = dist
-    s.pdf = dist * dist / (l.area * cos_l)
-    cos_r = wp.dot(wi, n)
-    if cos_r > 0.0:
-        s.value = l.emission * (cos_r / s.pdf)
-    return s
+    return _area_sample(l, p, n, l.position + dp[0] * l.ex + dp[1] * l.ey, -l.ez)
 
 
 @wp.func
@@ -323,25 +321,9 @@ def _sample_cylinder(l: LightRec, p: wp.vec3, n: wp.vec3, u: wp.vec3) -> LightSa
     whose outward normal faces p emit toward it. A point facing p is also
     the first point of the cylinder the ray meets (it is convex), so no
     self-occlusion test is needed."""
-    s = _empty_sample()
     phi = TWO_PI * u[1]
     nl = wp.cos(phi) * l.ey + wp.sin(phi) * l.ez
-    q = l.position + ((u[0] - 0.5) * l.length) * l.ex + l.radius * nl
-    d = q - p
-    dist = wp.length(d)
-    if dist <= 0.0:
-        return s
-    wi = d / dist
-    cos_l = -wp.dot(wi, nl)
-    if cos_l <= 0.0:
-        return s
-    s.wi = wi
-    s.dist = dist
-    s.pdf = dist * dist / (l.area * cos_l)
-    cos_r = wp.dot(wi, n)
-    if cos_r > 0.0:
-        s.value = l.emission * (cos_r / s.pdf)
-    return s
+    return _area_sample(l, p, n, l.position + ((u[0] - 0.5) * l.length) * l.ex + l.radius * nl, nl)
 
 
 @wp.func
