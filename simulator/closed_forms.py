@@ -35,8 +35,8 @@ References
        Comm. ACM 17(1), 32–42, 1974.
 .. [5] CIE 171:2006, *Test cases to assess the accuracy of lighting computer
        programs*, sections 5.2 and 5.8.
-.. [6] ``/work/shared/REFERENCES.md`` of this project, which collects the
-       formulas above.
+.. [6] J. R. Howell, M. P. Mengüç, K. Daun, R. Siegel, *Thermal Radiation
+       Heat Transfer*, 7th ed., CRC Press, 2021 (configuration factors).
 """
 
 from __future__ import annotations

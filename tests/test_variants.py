@@ -159,8 +159,8 @@ def _albedo_by_prim(scene) -> dict[str, float]:
 
 def test_selection_applies_to_every_prim_with_the_set(tmp_path):
     """Selecting shade = light switches both meshes (B already authored it);
-    shade = dark switches B away from its authored selection: the session
-    layer's selection is the strongest opinion."""
+    shade = dark switches B away from its authored selection: the in-memory
+    override layer's selection is the strongest opinion."""
     stage = _two_prim_stage(tmp_path)
     assert _albedo_by_prim(load_stage(stage)) == pytest.approx({"/A": 0.1, "/B": 0.7})
     assert _albedo_by_prim(load_stage(stage, variants={"shade": "light"})) == pytest.approx({"/A": 0.7, "/B": 0.7})

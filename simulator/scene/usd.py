@@ -64,7 +64,7 @@ Sensors
 Variants
     ``load_stage(..., variants={"reflectance": "rho_0_9"})`` (a config's
     ``variants`` table) selects that variant on every prim that has the
-    variant set, in the session layer, before anything is read: one stage can
+    variant set, in the stage's in-memory override layer, before anything is read: one stage can
     serve a whole parameter sweep. An unknown set or variant is an error that
     lists what the stage offers.
 
@@ -307,7 +307,8 @@ def load_stage(
 def _select_variants(stage: Usd.Stage, path: str, variants: dict[str, str]) -> None:
     """Select ``variants[set]`` on every prim that has variant set ``set``.
 
-    Selections go into the stage's session layer, the strongest, so they
+    Selections go into the stage's in-memory override layer
+    (``GetSessionLayer``), the strongest, so they
     override any selection the file authors, and the file is left unchanged.
     All prims are visited (inactive ones too, since a selection may activate
     them), and the walk repeats until nothing changes, so a variant set that
