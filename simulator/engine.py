@@ -320,6 +320,9 @@ class Engine:
         n_l = int(self._scene_rec.n_lights)
         full = np.ones((len(self.sensors), n_l), np.int32)
         full[:, : mask.shape[1]] = mask
+        if getattr(self, "_light_mask", None) is not None and np.array_equal(self._light_mask, full):
+            return  # already on the device: a plan run again (adaptive runs, charts) uploads nothing
+        self._light_mask = full
         with wp.ScopedDevice(self.device):
             self._scene_rec.light_mask = wp.array(full.reshape(-1) if full.size else np.ones(1, np.int32), dtype=wp.int32)
 
