@@ -31,6 +31,8 @@ __all__ = [
     "K_M",
     "SPECTRA",
     "luminous_efficacy",
+    "efficacy_from_tables",
+    "NAMED_EFFICACY",
     "emission_pair",
     "luminance_grey",
 ]
@@ -61,9 +63,34 @@ def _spectrum_values(spectrum: str | float) -> np.ndarray:
     return np.asarray(colour.sd_blackbody(float(spectrum), shape).values, float)
 
 
-@lru_cache(maxsize=64)
+#: K(S) of the named spectra, lm/W, from the tables as in :func:`efficacy_from_tables`
+#: (kept as numbers so a run need not import colour-science, ~0.9 s; a test
+#: checks them against the tables)
+NAMED_EFFICACY = {"D65": 205.15204596800118, "E": 182.4573017755176}
+
+
 def luminous_efficacy(spectrum: str | float) -> float:
     """Luminous efficacy of radiation of a spectrum, lm/W.
+
+    Parameters
+    ----------
+    spectrum : {"D65", "E"} or float
+        A named spectrum, or a blackbody temperature in kelvin.
+
+    Returns
+    -------
+    float
+        K(S) in lm/W over 380–780 nm (see module Notes).
+    """
+    if isinstance(spectrum, str) and spectrum in NAMED_EFFICACY:
+        return NAMED_EFFICACY[spectrum]
+    return efficacy_from_tables(spectrum)
+
+
+@lru_cache(maxsize=64)
+def efficacy_from_tables(spectrum: str | float) -> float:
+    """Luminous efficacy of radiation computed from the CIE tables (V(λ),
+    D65, Planck's law via colour-science), lm/W.
 
     Parameters
     ----------
