@@ -21,6 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .bundled import bundled_configs
 from .config import load_config
 from .errors import UserError
 from .plan import MC_METHODS, analytic_refusal
@@ -59,13 +60,8 @@ def processor_name() -> str:
 
 
 def default_configs() -> list[Path]:
-    """Bundled configs: ``configs/`` under the working directory, else beside the package."""
-    for root in (Path.cwd(), Path(__file__).resolve().parents[1]):
-        d = root / "configs"
-        found = [d / f"{n}.toml" for n in DEFAULT_CONFIGS if (d / f"{n}.toml").exists()]
-        if found:
-            return found
-    raise UserError("bench: no bundled configs found (run from the project directory, or name configs)")
+    """The bundled configs benchmarked by default."""
+    return bundled_configs(DEFAULT_CONFIGS, "bench")
 
 
 def _bench_one(engine, scene, sensors, method: str, samples: int, cap: int) -> BenchRow:

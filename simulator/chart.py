@@ -57,6 +57,7 @@ from pathlib import Path
 import numpy as np
 
 from . import __version__
+from .bundled import bundled_configs
 from .errors import UserError
 
 __all__ = [
@@ -533,13 +534,8 @@ def format_auto_check(charts: list[ConfigChart]) -> str:
 
 
 def default_configs() -> list[Path]:
-    """The bundled reference stages' configs, from ``configs/`` under the working directory or the package."""
-    for root in (Path.cwd(), Path(__file__).resolve().parents[1]):
-        d = root / "configs"
-        found = [d / f"{n}.toml" for n in DEFAULT_CONFIGS if (d / f"{n}.toml").exists()]
-        if found:
-            return found
-    raise UserError("chart: no bundled configs found (run from the project directory, or name configs)")
+    """The bundled reference stages' configs."""
+    return bundled_configs(DEFAULT_CONFIGS, "chart")
 
 
 def run_chart(

@@ -43,6 +43,7 @@ from typing import Callable
 import numpy as np
 
 from . import closed_forms as cf
+from .bundled import configs_dir as bundled_configs_dir
 from .errors import UserError
 from .scene.model import Light, LightKind, Scene, Sensor, SensorKind
 
@@ -262,12 +263,8 @@ _CASES = {c.name: c for c in CASES}
 
 
 def configs_dir() -> Path:
-    """``configs/stability`` under the working directory, else beside the package."""
-    for root in (Path.cwd(), Path(__file__).resolve().parents[1]):
-        d = root / "configs" / "stability"
-        if d.is_dir():
-            return d
-    raise UserError("stability: configs/stability not found (run from the project directory)")
+    """The stability cases' configs folder."""
+    return bundled_configs_dir("stability", command="stability")
 
 
 def truth_for(case: str, scene: Scene, sensors: list[Sensor]) -> tuple[np.ndarray, np.ndarray]:

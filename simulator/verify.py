@@ -49,6 +49,7 @@ import numpy as np
 
 from . import closed_forms as cf
 from .config import RunConfig, load_config
+from .bundled import configs_dir as bundled_configs_dir
 from .errors import UserError
 from .scene.model import Light, LightKind, Scene, Sensor, SensorKind
 
@@ -740,8 +741,8 @@ CASES: tuple[Case, ...] = (
 
 
 def default_configs_dir() -> Path:
-    """The bundled configs folder (beside the package in a source checkout)."""
-    return Path(__file__).resolve().parents[1] / "configs"
+    """The bundled configs folder."""
+    return bundled_configs_dir(command="verify")
 
 
 def _load_case(case: Case, configs_dir: Path):
