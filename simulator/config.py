@@ -73,7 +73,7 @@ from typing import Any
 import numpy as np
 
 from simulator.errors import UserError
-from simulator.scene.model import Sensor, SensorKind
+from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SENSOR_KINDS, Sensor, SensorKind
 from simulator.units import SPECTRA
 
 __all__ = [
@@ -100,16 +100,6 @@ COMPONENTS = ("total", "direct", "indirect")
 DEVICES = ("cpu", "cuda", "auto")
 #: accepted values of ``light_units``
 LIGHT_UNITS = ("photometric", "radiometric")
-#: ``[[sensor]] kind`` names and the kinds they map to
-SENSOR_KINDS = {
-    "irradiance": SensorKind.IRRADIANCE,
-    "radiance": SensorKind.RADIANCE,
-    "patch": SensorKind.PATCH,
-    "probe": SensorKind.PROBE,
-}
-#: lat-long map size ``(width, height)`` of a probe without ``resolution``
-#: (the same default as a stage-authored probe)
-DEFAULT_PROBE_RESOLUTION = (64, 32)
 #: most pixels in a probe map (1024 × 512): each pixel keeps float64
 #: running sums of 19 integrands in 2 channels (about 600 B)
 MAX_PROBE_PIXELS = 1 << 19

@@ -26,7 +26,7 @@ from .errors import UserError
 from .scene.model import Light, LightKind, Scene, Sensor, SensorKind
 from .stats import RunningStats, z_for_confidence
 
-__all__ = ["COMPONENTS", "METHOD_FLAGS", "cuda_available", "Engine", "EngineResult", "Progress", "resolve_device"]
+__all__ = ["COMPONENTS", "METHOD_FLAGS", "cuda_available", "warp_version", "Engine", "EngineResult", "Progress", "resolve_device"]
 
 #: samples one kernel thread draws for one sensor (a block)
 BLOCK = 32
@@ -75,6 +75,11 @@ def _warp():
             wp.init()
         _wp = wp
     return _wp
+
+
+def warp_version() -> str:
+    """The Warp version in use (for run records)."""
+    return _warp().config.version
 
 
 def cuda_available() -> bool:

@@ -32,7 +32,7 @@ class RunOutput:
 
 
 def load_scene(cfg: RunConfig) -> Scene:
-    from .scene.usd import load_stage  # the only module that imports pxr
+    from .scene.usd import load_stage  # the stage reader: the only code that imports pxr
 
     return load_stage(cfg.stage, light_units=cfg.light_units, radiometric_spectrum=cfg.radiometric_spectrum,
                       variants=cfg.variants)
@@ -100,20 +100,16 @@ def _sha256(path: Path) -> str:
 
 def _versions() -> dict:
     import numpy
-    import warp
 
-    try:
-        from pxr import Usd
+    from .engine import warp_version
+    from .scene.usd import usd_version
 
-        usd = ".".join(map(str, Usd.GetVersion()))
-    except Exception:  # pragma: no cover - version lookup only
-        usd = "unknown"
     return {
         "probesim": __version__,
         "python": platform.python_version(),
         "numpy": numpy.__version__,
-        "warp": warp.config.version,
-        "usd": usd,
+        "warp": warp_version(),
+        "usd": usd_version(),
     }
 
 

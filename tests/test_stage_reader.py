@@ -1,4 +1,4 @@
-"""Tests for the USD stage reader (simulator/scene/usd.py).
+"""Tests for the USD stage reader (the simulator/scene/usd package).
 
 Each test builds a tiny stage as usda text in ``tmp_path`` and checks what the
 reader hands on: positions in metres with Z up, triangle counts and winding,

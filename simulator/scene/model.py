@@ -19,7 +19,7 @@ from enum import IntEnum
 
 import numpy as np
 
-__all__ = ["LightKind", "Light", "Geometry", "SensorKind", "Sensor", "Scene"]
+__all__ = ["LightKind", "Light", "Geometry", "SensorKind", "SENSOR_KINDS", "DEFAULT_PROBE_RESOLUTION", "Sensor", "Scene"]
 
 
 class LightKind(IntEnum):
@@ -135,6 +135,18 @@ class SensorKind(IntEnum):
     RADIANCE = 1  #: mean radiance arriving from a cone around ``direction``
     PATCH = 2  #: rectangle; flux through it from the side it faces
     PROBE = 3  #: full-sphere light probe
+
+
+#: sensor kind names, as configs and ``probesim:sensor:kind`` spell them
+SENSOR_KINDS = {
+    "irradiance": SensorKind.IRRADIANCE,
+    "radiance": SensorKind.RADIANCE,
+    "patch": SensorKind.PATCH,
+    "probe": SensorKind.PROBE,
+}
+
+#: lat-long map size ``(width, height)`` of a probe that does not say
+DEFAULT_PROBE_RESOLUTION = (64, 32)
 
 
 @dataclass

@@ -1,0 +1,284 @@
+"""Read a USD stage into a :class:`~simulator.scene.model.Scene`.
+
+This package is the only code in probesim that imports ``pxr``. It turns a
+stage into numpy arrays and small records in the *probesim world frame*
+(metres, right-handed, Z up), so nothing downstream needs to know about USD.
+
+One job per module: :mod:`.stage` opens the stage, applies variants, sets
+the world frame and walks the prims; :mod:`.geometry` (with the pure-numpy
+:mod:`.tessellation`) turns gprims into triangles; :mod:`.materials` reads
+surfaces; :mod:`.lights` reads UsdLux and geometry lights; :mod:`.sensors`
+reads stage-authored sensors. :mod:`.context` holds what they share and
+:mod:`.transforms` the world transforms.
+
+What is read
+------------
+Geometry
+    ``UsdGeom.Mesh`` (any polygon counts), ``UsdGeom.Cube`` and
+    ``UsdGeom.Sphere``, merged into one triangle soup. Faces are wound so that
+    ``cross(p1 - p0, p2 - p0)`` is the front face in world space: a
+    ``leftHanded`` prim is re-wound, and so is a prim whose world transform
+    has a negative determinant (a mirror swaps handedness); both together
+    cancel. Other gprims (Cylinder, Cone, Capsule, Plane, curves, points,
+    volumes) are skipped with a warning.
+    A Sphere becomes a UV sphere of :data:`SPHERE_SEGMENTS` (longitude
+    segments, latitude rings), vertices on the surface, so its facets lie
+    inside it by up to about r·((pi/n_lon)^2 + (pi/(2 n_lat))^2)/2: 0.24% of
+    r at 64 x 32. Where that matters (an integrating sphere) author
+    ``int2 probesim:tessellation = (512, 256)`` on the prim: 261,120
+    triangles, within 3.8e-5·r of the sphere.
+Materials
+    The bound material's ``UsdPreviewSurface``: ``diffuseColor`` is the
+    Lambertian albedo, ``emissiveColor`` the front-face emitted radiance in
+    the stage's light units, ``opacity`` 0 removes the prim (it blocks
+    nothing). Inputs are followed through connections to authored constant
+    values (e.g. a Material interface input); anything else (a texture)
+    falls back to the UsdPreviewSurface default with a warning. With no bound
+    material, ``primvars:displayColor`` is the albedo if authored, else
+    UsdPreviewSurface's default 0.18. Colours become their luminance-weighted
+    grey (BT.709 Y), with one warning naming the prims whose colour was not
+    grey.
+Lights
+    UsdLux Sphere, Rect, Disk, Distant, Dome (and DomeLight_1) and Cylinder
+    lights, resolved to world size and emission as described in
+    :func:`load_stage`. Lights emit but are not geometry: they neither
+    reflect nor block. ``Light.frame`` is the right-handed orthonormal frame
+    of the prim's world rotation, except for domes, where it is the frame of
+    the lat-long texture in the OpenEXR convention: latitude +pi/2 along
+    ``frame[:, 1]``, (lat 0, lon 0) along ``frame[:, 2]``, (lat 0, lon pi/2)
+    along ``frame[:, 0]`` (UsdLux DomeLight: the prim's own frame;
+    DomeLight_1 with a Z ``poleAxis``: the prim frame turned +90 deg about X).
+    A dome's ``texture:file`` must be a lat-long OpenEXR image
+    (``texture:format`` ``latlong``, or ``automatic`` for a ``.exr`` file);
+    it is read into ``Light.texture_map`` as luminance grey (BT.709 Y) and
+    scales the dome's emission texel by texel (see :mod:`simulator.latlong`
+    for the pixel <-> direction map). Portal and plugin lights are ignored
+    with a warning.
+Geometry lights
+    A Mesh, Cube or Sphere with ``MeshLightAPI`` (or ``LightAPI`` applied
+    directly) is geometry that emits: it blocks light like any surface and
+    emits from its front face (both faces when ``doubleSided``) the radiance
+    ``intensity * 2**exposure * grey(color)``, divided by its world area when
+    ``normalize`` is on, with the spectrum rules of other lights. The bound
+    material's ``emissiveColor`` is not added (warned when non-zero): the
+    light's own inputs set its emission. Its albedo is the bound
+    UsdPreviewSurface's ``diffuseColor``, or 0 when no material is bound or
+    ``light:materialSyncMode`` is ``noMaterialResponse`` (a light with no
+    material response reflects nothing). ``VolumeLightAPI`` is ignored with
+    a warning (the prim is read as a plain surface).
+Sensors
+    See "Stage-authored sensors" below.
+Variants
+    ``load_stage(..., variants={"reflectance": "rho_0_9"})`` (a config's
+    ``variants`` table) selects that variant on every prim that has the
+    variant set, in the stage's in-memory override layer, before anything is read: one stage can
+    serve a whole parameter sweep. An unknown set or variant is an error that
+    lists what the stage offers.
+
+Prims are traversed through instance proxies, so instanceable prims count.
+Inactive prims are skipped (with their subtrees). Geometry and lights are
+skipped when their computed visibility is ``invisible`` or their computed
+purpose is ``guide`` or ``proxy``; sensors are measurement points, not
+rendered things, so visibility and purpose do not hide them (deactivate a
+sensor prim to drop it). Time-varying attributes are read at
+``Usd.TimeCode.EarliestTime()`` (the first time sample, or the default value).
+
+World frame
+-----------
+Stage coordinates are scaled by ``UsdGeom.GetStageMetersPerUnit``. A Y-up
+stage is rotated +90 degrees about X, ``(x, y, z)_Yup -> (x, -z, y)_Zup``, so
+stage "up" becomes world +Z. Positions, directions, frames and lengths all go
+through the same map ``p_world = s * R_up @ (A_stage @ p + t_stage)``.
+
+Stage-authored sensors
+----------------------
+Any prim (usually an ``Xform``) that has the attribute
+``probesim:sensor:kind`` is a sensor:
+
+===============================  ===========  ===========================================
+attribute                        type         meaning
+===============================  ===========  ===========================================
+``probesim:sensor:kind``         token/string ``irradiance``, ``radiance``, ``patch`` or
+                                              ``probe`` (required)
+``probesim:sensor:name``         string       name in results (default: the prim path)
+``probesim:sensor:halfAngleDeg`` float        radiance: cone half-angle, degrees, in
+                                              [0, 90] (default 0: one direction)
+``probesim:sensor:size``         float2       patch: (width, height) in stage units along
+                                              the prim's local X and Y (required); the
+                                              world transform's scale applies too
+``probesim:sensor:resolution``   int2         probe: lat-long map (width, height) in
+                                              pixels (default (64, 32))
+===============================  ===========  ===========================================
+
+The sensor sits at the prim's world origin and faces down its local -Z axis,
+like a USD camera: ``normal = world(-Z)`` and ``up = world(+Y)``
+orthonormalised against it. An upward-facing irradiance sensor is therefore
+an Xform rotated 180 degrees about X. ``Sensor.source`` is the prim path.
+
+Example::
+
+    def Xform "TableSensor"
+    {
+        token probesim:sensor:kind = "irradiance"
+        double3 xformOp:translate = (0, 0, 0.75)
+        float3 xformOp:rotateXYZ = (180, 0, 0)
+        uniform token[] xformOpOrder = ["xformOp:translate", "xformOp:rotateXYZ"]
+    }
+"""
+
+from __future__ import annotations
+
+import os
+
+from pxr import Usd, UsdGeom, UsdLux
+
+from ..model import Geometry, Light, Scene, Sensor
+from .context import _Context
+
+# The public constants live with the code that uses them and are re-exported
+# here; so are TESSELLATION_ATTR, MAX_SPHERE_FACES and DOME_TEXTURE_FORMATS.
+from .geometry import MAX_SPHERE_FACES, SPHERE_SEGMENTS, TESSELLATION_ATTR  # noqa: F401
+from .geometry import _GeometryBuilder, _read_gprim
+from .lights import DOME_TEXTURE_FORMATS, _read_light  # noqa: F401
+from .materials import DEFAULT_ALBEDO, _finish_warnings
+from .sensors import DEFAULT_PROBE_RESOLUTION, SENSOR_ATTR_PREFIX, SENSOR_KINDS, _is_sensor, _read_sensor
+from .stage import (
+    _check_options,
+    _collect_composition_errors,
+    _is_rendered,
+    _open_stage,
+    _reading_context,
+    _select_variants,
+    _traverse,
+    _world_frame,
+)
+
+__all__ = [
+    "usd_version",
+    "load_stage",
+    "SENSOR_ATTR_PREFIX",
+    "SENSOR_KINDS",
+    "DEFAULT_PROBE_RESOLUTION",
+    "DEFAULT_ALBEDO",
+    "SPHERE_SEGMENTS",
+]
+
+
+def usd_version() -> str:
+    """The OpenUSD version in use (for run records)."""
+    from pxr import Usd
+
+    return ".".join(map(str, Usd.GetVersion()))
+
+
+def load_stage(
+    path: str | os.PathLike,
+    light_units: str = "photometric",
+    radiometric_spectrum: str | float = "E",
+    variants: dict[str, str] | None = None,
+) -> Scene:
+    """Read a USD stage into a :class:`Scene` in world metres, Z up.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        A ``.usda``, ``.usdc``, ``.usd`` or ``.usdz`` file.
+    light_units : {"photometric", "radiometric"}
+        How to read the stage's light numbers. ``"photometric"`` (UsdLux's
+        own): intensities are luminance (nits), a delta or normalized
+        DistantLight gives illuminance (lux), and the spectrum is Illuminant
+        D65. ``"radiometric"``: the same numbers are W m^-2 sr^-1 (W/m^2),
+        with spectral shape ``radiometric_spectrum``.
+    radiometric_spectrum : {"E", "D65"} or float
+        Spectrum assumed for emitters in radiometric mode (a float is a
+        blackbody temperature in kelvin). A light with
+        ``enableColorTemperature`` uses its blackbody in either mode.
+    variants : dict of str to str, optional
+        Variant selections, variant-set name to variant name (a config's
+        ``variants`` table), applied before anything is read; see
+        :func:`_select_variants`.
+
+    Returns
+    -------
+    Scene
+        Geometry (one triangle soup), lights, stage-authored sensors,
+        ``meters_per_unit``, ``up_axis`` and any warnings.
+
+    Raises
+    ------
+    UserError
+        The file is missing or not a USD stage, or the stage has a value
+        probesim cannot honour (negative intensity or size, albedo outside
+        [0, 1), NaN/Inf transform, unknown sensor kind, ...). The message
+        names the file and the prim.
+
+    Notes
+    -----
+    UsdLux emission (the "Quantities and units" rules)::
+
+        value      = intensity * 2**exposure * grey(color) / sizeFactor
+        sizeFactor = 1                          unless normalize
+                   = world area                 Rect w*h, Disk pi r^2,
+                                                Sphere 4 pi r^2, Cylinder 2 pi r len
+                   = pi * sin(half_angle)**2    DistantLight, half_angle = angle/2
+
+    ``value`` is a radiance for area, sphere, cylinder, dome and distant
+    lights with an angle. Special cases:
+
+    * A SphereLight with ``treatAsPoint`` (or radius 0) is a point source
+      of intensity ``I = L * pi * r**2``; with ``normalize`` that is
+      ``intensity * 2**exposure * grey(color) / 4``, finite even at r = 0.
+      Without ``normalize``, radius 0 emits nothing (warned).
+    * A DistantLight with ``angle`` 0 is a delta direction whose emission is
+      the normal irradiance ``value`` (with or without ``normalize``): the
+      limit of a normalized light as the angle shrinks, which is how
+      renderers treat a zero-angle sun.
+    * The blackbody colour of ``colorTemperature`` is luminance-normalised in
+      UsdLux, so it changes only the spectrum (hence the radiometric/
+      photometric ratio), not ``grey(color)``.
+    * A zero-area Rect, Disk or Cylinder light emits nothing and is dropped
+      with a warning.
+
+    ``emission = emission_pair(value, light_units, spectrum)`` with spectrum
+    the blackbody temperature when enabled, else ``"D65"`` (photometric) or
+    ``radiometric_spectrum`` (radiometric). Sizes are world sizes: the
+    transform's scale (and metersPerUnit) applies to width, height, radius
+    and length; a non-uniform scale on a round shape uses the mean scale of
+    the affected axes, with a warning.
+    """
+    _check_options(path, light_units, radiometric_spectrum)
+    stage = _open_stage(path)
+    _select_variants(stage, str(path), variants or {})
+    mpu, up_axis = _world_frame(stage, path)
+    ctx = _reading_context(path, mpu, up_axis, light_units, radiometric_spectrum)
+    _collect_composition_errors(stage, ctx)
+    geometry, lights, sensors = _read_prims(ctx, stage)
+    _finish_warnings(ctx)
+    return Scene(
+        geometry=geometry,
+        lights=lights,
+        sensors=sensors,
+        path=str(path),
+        meters_per_unit=mpu,
+        up_axis=up_axis,
+        warnings=ctx.warnings,
+    )
+
+
+def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light], list[Sensor]]:
+    """Walk every active prim, instance proxies included, and sort it into geometry, lights, sensors."""
+    geo = _GeometryBuilder()
+    lights: list[Light] = []
+    sensors: list[Sensor] = []
+    for prim in _traverse(stage):
+        if _is_sensor(prim):
+            sensors.append(_read_sensor(ctx, prim))  # sensors ignore visibility and purpose
+        if not _is_rendered(ctx, prim):
+            continue
+        if prim.IsA(UsdGeom.Gprim):
+            _read_gprim(ctx, prim, geo)  # MeshLightAPI prims too: geometry that emits
+        elif prim.HasAPI(UsdLux.LightAPI):
+            light = _read_light(ctx, prim)
+            if light is not None:
+                lights.append(light)
+    return geo.build(), lights, sensors

@@ -1,0 +1,90 @@
+"""What every part of the stage reader shares: the reading context and attribute values.
+
+:class:`_Context` carries the file name for messages, the time code, the
+stage -> world map, the light units and the warnings gathered so far;
+:func:`_get` reads an attribute's value the way the stage states it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from pxr import Usd, UsdGeom
+
+from ...errors import UserError
+from ...units import emission_pair
+
+# How many prim paths a summary warning names before "and N more".
+_MAX_NAMED = 10
+
+
+@dataclass
+class _Context:
+    """What every helper needs: the file name for messages, time, world map, units."""
+
+    path: str
+    time: Usd.TimeCode
+    to_world: np.ndarray  # 3x3: metersPerUnit * (up-axis rotation)
+    light_units: str
+    default_spectrum: str | float
+    xforms: UsdGeom.XformCache | None = None
+    warnings: list[str] = field(default_factory=list)
+    coloured: dict[str, None] = field(default_factory=dict)  # ordered set of prim paths
+    materials: dict[str, dict] = field(default_factory=dict)  # material path -> raw inputs
+
+    def warn(self, message: str) -> None:
+        if message not in self.warnings:
+            self.warnings.append(message)
+
+    def error(self, prim: Usd.Prim | str, message: str) -> UserError:
+        return UserError(f"{self.path}: {prim if isinstance(prim, str) else prim.GetPath()}: {message}")
+
+    def emission(self, value: float, spectrum: str | float | None = None) -> tuple[float, float]:
+        """``(radiometric, photometric)`` pair of an emission ``value`` in the stage's light units.
+
+        ``spectrum`` defaults to the run's (D65 photometric, else
+        ``radiometric_spectrum``); a value that is not positive emits
+        nothing, ``(0, 0)``.
+        """
+        spectrum = self.default_spectrum if spectrum is None else spectrum
+        return emission_pair(value, self.light_units, spectrum) if value > 0 else (0.0, 0.0)
+
+
+def _get(ctx: _Context, attr: Usd.Attribute):
+    """An attribute's value with ``float`` (32-bit) numbers read as the decimals authored.
+
+    ``float inputs:width = 1.2`` is stored as 1.2000000476837158; the shortest
+    decimal that round-trips in float32 (numpy's ``str``) gives back 1.2, so
+    closed-form checks see the numbers the stage states. Other types pass
+    through unchanged (tuples for vectors).
+    """
+    value = attr.Get(ctx.time)
+    if value is None:
+        return None
+    is_f32 = attr.GetTypeName().scalarType.type.typeName in ("float", "GfVec2f", "GfVec3f", "GfVec4f")
+    if hasattr(value, "__len__") and not isinstance(value, str):
+        return tuple(_decimal_f32(v) if is_f32 else v for v in value)
+    return _decimal_f32(value) if is_f32 else value
+
+
+def _decimal_f32(v) -> float:
+    # the shortest decimal that round-trips in float32; format_float_positional
+    # with unique=True ignores numpy's global print options (which other
+    # packages may switch to a 6-digit legacy mode)
+    return float(np.format_float_positional(np.float32(v), unique=True, trim="-"))
+
+
+def _not_uniform(spread: float, largest: float) -> bool:
+    """True when values spread (max - min) by more than 1e-6 of the largest: a real difference, not float noise.
+
+    Used for colours (a colour that is not grey) and axis scales (a round
+    shape scaled non-uniformly); the 1e-300 floor keeps all-zero values uniform.
+    """
+    return spread > 1e-6 * max(largest, 1e-300)
+
+
+def _name_list(names: list[str]) -> str:
+    shown = ", ".join(names[:_MAX_NAMED])
+    more = len(names) - _MAX_NAMED
+    return shown + (f" and {more} more" if more > 0 else "")

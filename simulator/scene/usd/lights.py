@@ -1,0 +1,275 @@
+"""UsdLux lights and geometry lights: shapes in world size, the emission rule, dome maps.
+
+A UsdLux light becomes a :class:`~simulator.scene.model.Light` whose
+emission follows the UsdLux "Quantities and units" rule (see
+:func:`simulator.scene.usd.load_stage`)::
+
+    value = intensity * 2**exposure * grey(color) / sizeFactor
+
+with its sizes in world metres. A textured DomeLight carries its lat-long
+OpenEXR map as luminance grey. A gprim with ``MeshLightAPI`` (or
+``LightAPI`` applied directly) is geometry that emits: the same light
+inputs give its radiance, and its bound material gives only its albedo.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+
+import numpy as np
+from pxr import Usd, UsdGeom, UsdLux
+
+from ...errors import UserError
+from ...units import luminance_grey
+from ..model import Light, LightKind
+from .context import _Context, _get, _not_uniform
+from .materials import _albedo, _grey, _material_inputs
+from .tessellation import _parallelogram_areas
+from .transforms import _axis_scales, _frame, _mean_scale, _world_affine
+
+# Light schemas we read, in the order they are tested.
+_LIGHT_SCHEMAS = (
+    (UsdLux.SphereLight, LightKind.SPHERE),
+    (UsdLux.RectLight, LightKind.RECT),
+    (UsdLux.DiskLight, LightKind.DISK),
+    (UsdLux.DistantLight, LightKind.DISTANT),
+    (UsdLux.DomeLight, LightKind.DOME),
+    (UsdLux.DomeLight_1, LightKind.DOME),
+    (UsdLux.CylinderLight, LightKind.CYLINDER),
+)
+
+#: ``texture:format`` values a DomeLight may have (``automatic`` only for ``.exr`` files)
+DOME_TEXTURE_FORMATS = ("latlong", "automatic")
+
+
+def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:
+    """One UsdLux light resolved to world size and an emission pair (None if unsupported/empty)."""
+    kind = next((k for schema, k in _LIGHT_SCHEMAS if prim.IsA(schema)), None)
+    if kind is None:
+        ctx.warn(f"{prim.GetPath()}: {prim.GetTypeName() or 'light'} is not a supported light; ignored")
+        return None
+    a, t = _world_affine(ctx, prim)
+    raw, spectrum, normalize = _light_inputs(ctx, prim)
+    light = Light(name=str(prim.GetPath()), kind=kind, position=t, frame=_frame(ctx, prim, a), emission=(0.0, 0.0))
+    value = _shape_light(ctx, prim, light, a, raw, normalize)
+    if value is None:
+        return None
+    light.emission = ctx.emission(value, spectrum)
+    return light
+
+
+def _light_inputs(ctx: _Context, prim: Usd.Prim) -> tuple[float, str | float, bool]:
+    """``(value, spectrum, normalize)`` of any light: :func:`_light_value` and its ``normalize`` flag.
+
+    Shaping (cone, focus, IES profile) is not modelled: warned about and ignored.
+    """
+    if prim.HasAPI(UsdLux.ShapingAPI):
+        ctx.warn(f"{prim.GetPath()}: UsdLuxShapingAPI (cone, focus, IES) ignored")
+    raw, spectrum = _light_value(ctx, prim)
+    return raw, spectrum, bool(UsdLux.LightAPI(prim).GetNormalizeAttr().Get(ctx.time))
+
+
+def _light_value(ctx: _Context, prim: Usd.Prim) -> tuple[float, str | float]:
+    """``intensity * 2**exposure * grey(color)`` and the emitter's spectrum."""
+    api = UsdLux.LightAPI(prim)
+    intensity = float(_get(ctx, api.GetIntensityAttr()))
+    exposure = float(_get(ctx, api.GetExposureAttr()))
+    if not (math.isfinite(intensity) and intensity >= 0):
+        raise ctx.error(prim, f"intensity must be a non-negative number, not {intensity:g}")
+    if not math.isfinite(exposure):
+        raise ctx.error(prim, f"exposure must be finite, not {exposure:g}")
+    grey = _grey(ctx, prim, _get(ctx, api.GetColorAttr()))
+    if not (math.isfinite(grey) and grey >= 0):
+        raise ctx.error(prim, f"color must be non-negative, grey {grey:g}")
+    spectrum: str | float = ctx.default_spectrum
+    if api.GetEnableColorTemperatureAttr().Get(ctx.time):
+        temperature = float(_get(ctx, api.GetColorTemperatureAttr()))
+        if not (math.isfinite(temperature) and temperature > 0):
+            raise ctx.error(prim, f"colorTemperature must be a positive number of kelvin, not {temperature:g}")
+        spectrum = temperature
+    return intensity * 2.0 ** exposure * grey, spectrum
+
+
+def _size_attr(ctx: _Context, prim: Usd.Prim, attr: Usd.Attribute, what: str) -> float:
+    """A non-negative light dimension in stage units (before the world scale)."""
+    value = float(_get(ctx, attr))
+    if not (math.isfinite(value) and value >= 0):
+        raise ctx.error(prim, f"{what} must be a non-negative number, not {value:g}")
+    return value
+
+
+def _shape_light(ctx: _Context, prim: Usd.Prim, light: Light, a: np.ndarray, raw: float,
+                 normalize: bool) -> float | None:
+    """Fill the light's world dimensions; return its emission value (None: drop the light)."""
+    scales = _axis_scales(a)
+    kind = light.kind
+    if kind == LightKind.SPHERE:
+        sphere = UsdLux.SphereLight(prim)
+        r = _size_attr(ctx, prim, sphere.GetRadiusAttr(), "radius")
+        r *= _mean_scale(ctx, prim, scales, "SphereLight") if r > 0 else 1.0
+        if sphere.GetTreatAsPointAttr().Get(ctx.time) or r == 0.0:
+            light.kind = LightKind.POINT
+            # I = L * pi r^2, with L = raw / (4 pi r^2) when normalized -> raw / 4.
+            intensity = raw / 4.0 if normalize else raw * math.pi * r * r
+            if intensity == 0.0 and raw > 0:
+                ctx.warn(f"{prim.GetPath()}: SphereLight of radius 0 without normalize emits nothing")
+            return intensity
+        light.radius = r
+        return raw / (4 * math.pi * r * r) if normalize else raw
+    if kind == LightKind.RECT:
+        rect = UsdLux.RectLight(prim)
+        light.width = float(_size_attr(ctx, prim, rect.GetWidthAttr(), "width") * scales[0])
+        light.height = float(_size_attr(ctx, prim, rect.GetHeightAttr(), "height") * scales[1])
+        if rect.GetTextureFileAttr().Get(ctx.time):
+            ctx.warn(f"{prim.GetPath()}: RectLight texture ignored (uniform radiance)")
+        return _per_area(ctx, prim, raw, normalize, light.width * light.height)
+    if kind == LightKind.DISK:
+        r = _size_attr(ctx, prim, UsdLux.DiskLight(prim).GetRadiusAttr(), "radius")
+        light.radius = r * (_mean_scale(ctx, prim, scales[:2], "DiskLight") if r > 0 else 1.0)
+        return _per_area(ctx, prim, raw, normalize, math.pi * light.radius ** 2)
+    if kind == LightKind.CYLINDER:
+        cyl = UsdLux.CylinderLight(prim)
+        r = _size_attr(ctx, prim, cyl.GetRadiusAttr(), "radius")
+        light.radius = r * (_mean_scale(ctx, prim, scales[1:], "CylinderLight") if r > 0 else 1.0)
+        light.length = float(_size_attr(ctx, prim, cyl.GetLengthAttr(), "length") * scales[0])
+        if cyl.GetTreatAsLineAttr().Get(ctx.time):
+            ctx.warn(f"{prim.GetPath()}: CylinderLight treatAsLine ignored (traced as a cylinder)")
+        return _per_area(ctx, prim, raw, normalize, 2 * math.pi * light.radius * light.length)
+    if kind == LightKind.DISTANT:
+        angle = _size_attr(ctx, prim, UsdLux.DistantLight(prim).GetAngleAttr(), "angle")
+        if angle > 180.0:
+            raise ctx.error(prim, f"angle must be at most 180 degrees, not {angle:g}")
+        light.half_angle = math.radians(angle / 2.0)
+        if light.half_angle == 0.0:
+            return raw  # delta sun: emission is normal irradiance (the normalized limit)
+        return raw / (math.pi * math.sin(light.half_angle) ** 2) if normalize else raw
+    if kind == LightKind.DOME:
+        light.texture = _dome_texture(ctx, prim)
+        light.frame = _dome_texture_frame(ctx, prim, light.frame)
+        if light.texture:
+            light.texture_map = _dome_texture_map(ctx, prim, light.texture)
+        return raw
+    raise AssertionError(kind)  # pragma: no cover
+
+
+def _per_area(ctx: _Context, prim: Usd.Prim, raw: float, normalize: bool, area: float) -> float | None:
+    """Radiance of an area light: raw, or raw / world area when normalized; None for zero area."""
+    if area <= 0.0:
+        ctx.warn(f"{prim.GetPath()}: light has zero area and emits nothing; ignored")
+        return None
+    return raw / area if normalize else raw
+
+
+def _dome_texture(ctx: _Context, prim: Usd.Prim) -> str:
+    """Resolved absolute path of a DomeLight's ``texture:file``, "" if none is authored."""
+    attr = prim.GetAttribute("inputs:texture:file")  # same name on DomeLight and DomeLight_1
+    asset = attr.Get(ctx.time) if attr else None
+    if not asset or not asset.path:
+        return ""
+    if not asset.resolvedPath:
+        raise ctx.error(prim, f"texture:file {asset.path!r} not found")
+    return os.path.abspath(asset.resolvedPath)
+
+
+def _dome_texture_frame(ctx: _Context, prim: Usd.Prim, frame: np.ndarray) -> np.ndarray:
+    """The frame in which the dome's lat-long map follows the OpenEXR convention.
+
+    OpenEXR lat-long: latitude +pi/2 is +Y, (lat 0, lon 0) is +Z and
+    (lat 0, lon pi/2) is +X. A DomeLight uses that in its own frame (pole =
+    its +Y). A DomeLight_1 whose ``poleAxis`` resolves to Z ("Z", or "scene"
+    on a Z-up stage) puts the pole on its +Z and (0, 0) on its -Y: that is the
+    prim frame turned +90 degrees about X, columns ``(x, z, -y)``.
+    """
+    if not prim.IsA(UsdLux.DomeLight_1):
+        return frame
+    pole = str(UsdLux.DomeLight_1(prim).GetPoleAxisAttr().Get(ctx.time))
+    if pole == "scene":
+        pole = str(UsdGeom.GetStageUpAxis(prim.GetStage()))
+    if pole != "Z":
+        return frame
+    return np.column_stack([frame[:, 0], frame[:, 2], -frame[:, 1]])
+
+
+def _dome_texture_map(ctx: _Context, prim: Usd.Prim, path: str) -> np.ndarray:
+    """A dome's lat-long map as luminance grey, shape (H, W), float64 (see :mod:`simulator.latlong`).
+
+    ``texture:format`` must be ``latlong``, or ``automatic`` for a ``.exr``
+    file whose header does not declare a cube map. RGB becomes BT.709 Y (the
+    weights of :func:`simulator.units.luminance_grey`); a grey ``Y`` image is
+    used as is. Values must be finite and non-negative.
+    """
+    from ... import exr
+
+    attr = prim.GetAttribute("inputs:texture:format")
+    fmt = str((attr.Get(ctx.time) if attr else None) or "automatic")
+    if fmt not in DOME_TEXTURE_FORMATS:
+        raise ctx.error(prim, f"texture:format {fmt!r} of texture:file {path} is not supported "
+                              "(only 'latlong', or 'automatic' for a lat-long .exr)")
+    if not path.lower().endswith(".exr"):
+        raise ctx.error(prim, f"texture:file {path}: only lat-long OpenEXR (.exr) maps are supported")
+    try:
+        header = exr.read_header(path) if fmt == "automatic" else {}
+        rgb = exr.read_rgb(path)
+    except UserError as err:  # names the file; add the stage and prim
+        raise ctx.error(prim, f"texture:file {err}") from None
+    if "CUBE" in str(header.get("envmap", "")).upper():
+        raise ctx.error(prim, f"texture:file {path} is a cube map (envmap header); only lat-long maps are supported")
+    bad = int(np.sum(~np.isfinite(rgb).all(axis=-1) | (rgb < 0).any(axis=-1)))
+    if bad:
+        raise ctx.error(prim, f"texture:file {path}: {bad} texel(s) are negative, NaN or Inf")
+    weights = np.array([luminance_grey(e) for e in np.eye(3)])  # BT.709 Y per channel
+    rgb = rgb.astype(np.float64)
+    if _not_uniform(np.ptp(rgb, axis=-1).max(), float(rgb.max())):
+        ctx.coloured[str(prim.GetPath())] = None
+    h, w = rgb.shape[:2]
+    if w != 2 * h:
+        ctx.warn(f"{prim.GetPath()}: texture:file {path} is {w} x {h}, not 2:1; read as lat-long anyway")
+    return rgb @ weights
+
+
+def _is_geometry_light(ctx: _Context, prim: Usd.Prim) -> bool:
+    """True for a gprim with MeshLightAPI (or LightAPI applied directly): geometry that emits."""
+    if not prim.HasAPI(UsdLux.LightAPI):
+        return False
+    if prim.HasAPI(UsdLux.VolumeLightAPI):
+        ctx.warn(f"{prim.GetPath()}: VolumeLightAPI ignored (read as a plain surface)")
+        return False
+    return True
+
+
+def _geometry_light_surface(ctx: _Context, prim: Usd.Prim) -> tuple[float, tuple[float, float]]:
+    """``(albedo, (0, 0))`` of a geometry light; its emission comes from its light inputs.
+
+    The albedo is the bound UsdPreviewSurface's diffuseColor; 0 with no
+    (usable) bound material or with ``light:materialSyncMode``
+    ``noMaterialResponse``. Opacity is ignored: a light's surface is opaque.
+    """
+    sync = UsdLux.LightAPI(prim).GetMaterialSyncModeAttr().Get(ctx.time)
+    if str(sync) == "noMaterialResponse":
+        return 0.0, (0.0, 0.0)
+    inputs = _material_inputs(ctx, prim)
+    if inputs is None:
+        return 0.0, (0.0, 0.0)
+    albedo = _albedo(ctx, prim, inputs)
+    if float(inputs["opacity"][0]) < 1.0:
+        ctx.warn(f"{prim.GetPath()}: opacity of a mesh light ignored (its surface is opaque)")
+    if _grey(ctx, prim, inputs["emissiveColor"][0]) != 0.0:
+        ctx.warn(f"{prim.GetPath()}: emissiveColor of the bound material ignored; "
+                 "a mesh light emits what its light inputs (intensity, exposure, color) say")
+    return albedo, (0.0, 0.0)
+
+
+def _geometry_light_emission(ctx: _Context, prim: Usd.Prim, world: np.ndarray,
+                             tris: np.ndarray) -> tuple[float, float]:
+    """Emission pair of a geometry light: ``intensity * 2**exposure * grey(color)``,
+    divided by its world area (one side) when ``normalize`` is on."""
+    raw, spectrum, normalize = _light_inputs(ctx, prim)
+    value = raw
+    if normalize:
+        area = float(0.5 * _parallelogram_areas(world, tris).sum())
+        if area <= 0.0:
+            ctx.warn(f"{prim.GetPath()}: mesh light has zero area and emits nothing")
+            return (0.0, 0.0)
+        value = raw / area
+    return ctx.emission(value, spectrum)

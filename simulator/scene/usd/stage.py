@@ -1,0 +1,174 @@
+"""Opening a stage and walking it: options, files, variants, the world frame, traversal.
+
+Everything here happens before (or around) reading a prim: bad options and
+files that are missing or not USD become one-line ``UserError`` messages,
+variant selections go into the session layer, ``metersPerUnit`` and
+``upAxis`` become the stage -> world map of the reading context, and the
+traversal decides which prims are seen at all.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterator
+from pathlib import Path
+
+import numpy as np
+from pxr import Usd, UsdGeom
+
+from ...errors import UserError
+from ...units import SPECTRA
+from .context import _MAX_NAMED, _Context
+
+# (x, y, z)_Yup -> (x, -z, y)_Zup: +90 degrees about X.
+_Y_UP_TO_Z_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
+
+
+def _check_options(path, light_units: str, spectrum) -> None:
+    """Reject bad ``light_units`` / ``radiometric_spectrum`` before opening anything."""
+    if light_units not in ("photometric", "radiometric"):
+        raise UserError(f"{path}: light_units must be 'photometric' or 'radiometric', not {light_units!r}")
+    if isinstance(spectrum, str):
+        if spectrum not in SPECTRA:
+            raise UserError(
+                f"{path}: radiometric_spectrum must be one of {SPECTRA} or a temperature in K, not {spectrum!r}"
+            )
+    elif not (isinstance(spectrum, (int, float)) and math.isfinite(spectrum) and spectrum > 0):
+        raise UserError(
+            f"{path}: radiometric_spectrum temperature must be a positive number of kelvin, not {spectrum!r}"
+        )
+
+
+def _open_stage(path) -> Usd.Stage:
+    """Open the stage, turning every pxr failure into a one-line UserError."""
+    p = Path(path)
+    if not p.exists():
+        raise UserError(f"{path}: no such file")
+    if not p.is_file():
+        raise UserError(f"{path}: not a file")
+    try:
+        stage = Usd.Stage.Open(str(p))
+    except Exception as exc:  # Tf.ErrorException and friends
+        raise UserError(f"{path}: not a readable USD stage ({_pxr_reason(exc)})") from None
+    if stage is None:
+        raise UserError(f"{path}: not a readable USD stage")
+    return stage
+
+
+def _pxr_reason(exc: Exception) -> str:
+    """First human part of a pxr error: the quoted text after ``in file ... :``."""
+    text = str(exc)
+    found = re.findall(r" : '(.*?)'(?:\n|$)", text, flags=re.S)
+    reason = found[0] if found else text
+    return " ".join(reason.split())[:300] or type(exc).__name__
+
+
+def _select_variants(stage: Usd.Stage, path: str, variants: dict[str, str]) -> None:
+    """Select ``variants[set]`` on every prim that has variant set ``set``.
+
+    Selections go into the stage's in-memory override layer
+    (``GetSessionLayer``), the strongest, so they
+    override any selection the file authors, and the file is left unchanged.
+    All prims are visited (inactive ones too, since a selection may activate
+    them), and the walk repeats until nothing changes, so a variant set that
+    appears only inside another set's selected variant is honoured as well.
+    Prims inside instance prototypes cannot be edited through their
+    instances: author the variant set on the instanceable prim or above it.
+
+    Raises
+    ------
+    UserError
+        ``variants.<set>``: no prim has that variant set (the message lists
+        the sets the stage offers), or a prim's set does not offer the
+        selection (the message lists the variants it offers).
+    """
+    if not variants:
+        return
+    stage.SetEditTarget(Usd.EditTarget(stage.GetSessionLayer()))
+    found: set[str] = set()
+    for _ in range(64):  # nesting depth bound: a fixed point comes long before
+        changed = False
+        # a list first: a selection recomposes the stage under a live iterator
+        for prim in list(Usd.PrimRange.Stage(stage, Usd.PrimAllPrimsPredicate)):
+            if not prim.IsValid():  # removed by a selection made earlier in this pass
+                continue
+            sets = prim.GetVariantSets()
+            for name, choice in variants.items():
+                if not sets.HasVariantSet(name):
+                    continue
+                found.add(name)
+                vset = sets.GetVariantSet(name)
+                offered = vset.GetVariantNames()
+                if choice not in offered:
+                    raise UserError(f"{path}: variants.{name}: {prim.GetPath()} offers no variant {choice!r} "
+                                    f"(its variant set {name!r} offers: {', '.join(offered) or 'nothing'})")
+                if vset.GetVariantSelection() != choice:
+                    vset.SetVariantSelection(choice)
+                    changed = True
+        if not changed:
+            break
+    for name in variants:
+        if name not in found:
+            offered = sorted({s for prim in Usd.PrimRange.Stage(stage, Usd.PrimAllPrimsPredicate)
+                              for s in prim.GetVariantSets().GetNames()})
+            raise UserError(f"{path}: variants.{name}: no prim has a variant set {name!r} "
+                            f"(the stage offers: {', '.join(offered) or 'no variant sets'})")
+
+
+def _world_frame(stage: Usd.Stage, path) -> tuple[float, str]:
+    """The stage's ``(metersPerUnit, upAxis)``, checked: a positive number, and ``"Y"`` or ``"Z"``."""
+    mpu = float(UsdGeom.GetStageMetersPerUnit(stage))
+    up_axis = str(UsdGeom.GetStageUpAxis(stage))
+    if not (math.isfinite(mpu) and mpu > 0):
+        raise UserError(f"{path}: metersPerUnit must be a positive number, not {mpu}")
+    if up_axis not in ("Y", "Z"):
+        raise UserError(f"{path}: upAxis must be 'Y' or 'Z', not {up_axis!r}")
+    return mpu, up_axis
+
+
+def _reading_context(path, mpu: float, up_axis: str, light_units: str,
+                     radiometric_spectrum: str | float) -> _Context:
+    """The context every reader shares: stage -> world map, time code, transform cache, spectra.
+
+    Attributes are read at ``Usd.TimeCode.EarliestTime()``; one
+    ``UsdGeom.XformCache`` at that time serves every prim's world transform.
+    """
+    ctx = _Context(
+        path=str(path),
+        time=Usd.TimeCode.EarliestTime(),
+        to_world=mpu * (_Y_UP_TO_Z_UP if up_axis == "Y" else np.eye(3)),
+        light_units=light_units,
+        default_spectrum="D65" if light_units == "photometric" else radiometric_spectrum,
+    )
+    ctx.xforms = UsdGeom.XformCache(ctx.time)
+    return ctx
+
+
+def _collect_composition_errors(stage: Usd.Stage, ctx: _Context) -> None:
+    """Unresolved references and the like do not stop the read; say so."""
+    try:
+        errors = stage.GetCompositionErrors()
+    except Exception:  # older USD without the API
+        return
+    for err in errors[:_MAX_NAMED]:
+        ctx.warn(f"composition error: {' '.join(str(err).split())}")
+
+
+def _traverse(stage: Usd.Stage) -> Iterator[Usd.Prim]:
+    """Every active prim of the stage, instance proxies included (the pseudo-root is not a prim)."""
+    # The default predicate already drops inactive, undefined, unloaded and
+    # abstract (class) prims; TraverseInstanceProxies walks into instances.
+    for prim in Usd.PrimRange(stage.GetPseudoRoot(), Usd.TraverseInstanceProxies()):
+        if not prim.IsPseudoRoot():
+            yield prim
+
+
+def _is_rendered(ctx: _Context, prim: Usd.Prim) -> bool:
+    """False for invisible prims and guide/proxy purpose (render and default are kept)."""
+    img = UsdGeom.Imageable(prim)
+    if not img:
+        return True
+    if img.ComputeVisibility(ctx.time) == UsdGeom.Tokens.invisible:
+        return False
+    return img.ComputePurpose() not in (UsdGeom.Tokens.guide, UsdGeom.Tokens.proxy)

@@ -1,0 +1,59 @@
+"""Prim transforms in the world frame: affine maps, axis scales and orthonormal frames.
+
+Every world quantity goes through ``p_world = s * R_up @ (A_stage @ p + t_stage)``
+(see "World frame" in :mod:`simulator.scene.usd`); ``ctx.to_world`` is
+``s * R_up`` and ``ctx.xforms`` caches the stage's local-to-world matrices.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from pxr import Usd
+
+from .context import _Context, _not_uniform
+
+
+def _world_affine(ctx: _Context, prim: Usd.Prim) -> tuple[np.ndarray, np.ndarray]:
+    """World map ``p -> A @ p + t`` in metres, Z up.
+
+    USD matrices act on row vectors (``p' = p M``, translation in the last
+    row), so the column-vector linear part is ``M[:3, :3].T``.
+    """
+    m = np.array(ctx.xforms.GetLocalToWorldTransform(prim), dtype=float)
+    if not np.all(np.isfinite(m)):
+        raise ctx.error(prim, "transform contains NaN or Inf")
+    a = ctx.to_world @ m[:3, :3].T
+    t = ctx.to_world @ m[3, :3]
+    return a, t
+
+
+def _axis_scales(a: np.ndarray) -> np.ndarray:
+    """World length of the prim's unit X, Y, Z axes (metres per local unit)."""
+    return np.linalg.norm(a, axis=0)
+
+
+def _unit(v: np.ndarray) -> np.ndarray | None:
+    n = float(np.linalg.norm(v))
+    return v / n if n > 0 and math.isfinite(n) else None
+
+
+def _frame(ctx: _Context, prim: Usd.Prim, a: np.ndarray) -> np.ndarray:
+    """Right-handed orthonormal frame whose Z (and X, as far as possible) follow the prim's.
+
+    Gram-Schmidt from Z keeps the emission axis exact; Y = Z x X makes the
+    frame right-handed even under a mirroring transform.
+    """
+    z = _unit(a[:, 2])
+    x = None if z is None else _unit(a[:, 0] - np.dot(a[:, 0], z) * z)
+    if z is None or x is None:
+        raise ctx.error(prim, "transform is degenerate (zero scale); cannot orient it")
+    return np.column_stack([x, np.cross(z, x), z])
+
+
+def _mean_scale(ctx: _Context, prim: Usd.Prim, scales: np.ndarray, what: str) -> float:
+    """Mean of the given axis scales; warn when they differ (shape becomes round again)."""
+    if _not_uniform(np.ptp(scales), float(np.max(scales))):
+        ctx.warn(f"{prim.GetPath()}: non-uniform scale on a {what}; using the mean scale")
+    return float(np.mean(scales))
