@@ -23,7 +23,6 @@ import numpy as np
 
 from .bundled import bundled_configs
 from .config import load_config
-from .errors import UserError
 from .plan import MC_METHODS, analytic_refusal
 from .run import collect_sensors, load_scene
 

@@ -457,7 +457,7 @@ def _plot(chart: ConfigChart, path: Path) -> None:
         if t1 is not None and not c.exact:
             ax.plot([t1], [1e-2], marker="|", color=st.get("color"), ms=14, mew=2)
     if all_t:
-        lo, hi = min(all_t), max(all_t)
+        hi = max(all_t)
         ax.axhline(1e-2, color="grey", lw=0.8, ls=":")
         ax.text(hi, 1e-2, " 1%", va="center", ha="left", fontsize=8, color="grey")
         # the 1/√t slope through the first fitted rung of a Monte Carlo method

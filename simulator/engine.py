@@ -130,6 +130,9 @@ class EngineResult:
         Adaptive runs only: whether the error target was reached.
     non_finite : ndarray, shape (S,)
         Samples that came out NaN or Inf (counted, left out of the mean).
+    methods : list of str or None
+        The method that read each sensor, when they differ (a planned run);
+        ``method`` then names them all, joined by "+".
     """
 
     method: str
@@ -142,6 +145,7 @@ class EngineResult:
     non_finite: np.ndarray
     wall_s: float
     warnings: list[str] = field(default_factory=list)
+    methods: list[str] | None = None  #: per sensor, when a plan mixed methods (see run.run_plan)
 
 
 class Engine:
@@ -226,7 +230,7 @@ class Engine:
             rec.emit_tris = wp.array(emit_ids.astype(np.int32), dtype=wp.int32)
             rec.emit_cdf = wp.array(cdf.astype(np.float32), dtype=float)
             em = K.LightRec()
-            em.kind = 7
+            em.kind = K.EMISSIVE  # emissive geometry: one light record for all emitting triangles
             lights.append(em)
             self.emissive_light = len(lights) - 1
         else:

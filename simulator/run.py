@@ -13,6 +13,7 @@ import numpy as np
 
 from . import __version__
 from .config import RunConfig
+from .engine import EngineResult
 from .errors import UserError
 from .maps import grid_outputs, probe_outputs
 from .plan import Plan, choose_method, make_plan
@@ -54,32 +55,21 @@ def collect_sensors(cfg: RunConfig, scene: Scene) -> list[Sensor]:
     return sensors
 
 
-@dataclass
-class PlannedResult:
-    """Readings of every plain sensor, each by its planned method."""
-
-    methods: list[str]
-    mean: np.ndarray
-    stderr: np.ndarray
-    samples: np.ndarray
-    seconds: np.ndarray
-    target_met: np.ndarray | None
-    non_finite: np.ndarray
-    wall_s: float
-    device: str
-    warnings: list[str]
-
-
-def run_plan(engine, plan: Plan, sim, progress=None) -> PlannedResult:
-    """Run each method's group of sensors and gather the readings in sensor order.
+def run_plan(engine, plan: Plan, sim, progress=None) -> EngineResult:
+    """Run each method's group of sensors and gather the readings in sensor
+    order; ``methods`` says which method read each sensor.
 
     Closed-form readings count as meeting any error target (they are exact).
     """
     n = len(plan.sensors)
-    out = PlannedResult([sp.method for sp in plan.sensors], np.zeros((n, 2)), np.zeros((n, 2)), np.zeros(n, np.int64),
-                        np.zeros(n), np.ones(n, bool) if sim.adaptive else None, np.zeros(n, np.int64), 0.0, engine.device, [])  # fmt: skip
+    groups = plan.groups()
+    out = EngineResult(
+        method="+".join(groups), device=engine.device, mean=np.zeros((n, 2)), stderr=np.zeros((n, 2)),
+        samples=np.zeros(n, np.int64), seconds=np.zeros(n), target_met=np.ones(n, bool) if sim.adaptive else None,
+        non_finite=np.zeros(n, np.int64), wall_s=0.0, methods=[sp.method for sp in plan.sensors],
+    )  # fmt: skip
     engine.set_light_mask(plan.light_mask([l.name for l in engine.scene.lights]))
-    for method, ids in plan.groups().items():
+    for method, ids in groups.items():
         r = engine.run(
             method, samples=sim.samples, seed=sim.seed, rel_error=sim.rel_error, abs_error=sim.abs_error,
             max_samples=sim.sample_cap, time_limit_s=sim.time_limit_s, max_depth=sim.max_depth,

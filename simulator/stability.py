@@ -44,7 +44,6 @@ import numpy as np
 
 from . import closed_forms as cf
 from .bundled import configs_dir as bundled_configs_dir
-from .errors import UserError
 from .scene.model import Light, LightKind, Scene, Sensor, SensorKind
 
 __all__ = [
@@ -490,7 +489,7 @@ def _heatmap(cells: list[Cell], path: Path, title: str) -> None:
             v = c.verdict if c else "n/a"
             ax.add_patch(plt.Rectangle((j, i), 1, 1, facecolor=_COLOURS[v], edgecolor="white", linewidth=2))
             if c and v != "n/a":
-                txt = f"{v}\n{c.rel_error:.1e}" + (f" NaN" if c.non_finite else "")
+                txt = f"{v}\n{c.rel_error:.1e}" + (" NaN" if c.non_finite else "")
                 ax.text(j + 0.5, i + 0.5, txt, ha="center", va="center", fontsize=7.5,
                         color="white" if v in ("biased", "blind") else "black")  # fmt: skip
             else:

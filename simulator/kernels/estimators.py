@@ -66,8 +66,6 @@ from .sampling import (
     INV_PI,
     PI,
     pdf_cosine_hemisphere,
-    pdf_uniform_cone,
-    sample_concentric_disk,
     sample_cosine_hemisphere,
     sample_uniform_cone,
     sensor_stream_key,

@@ -41,7 +41,6 @@ from .sampling import (
     PI,
     TWO_PI,
     SPHRECT_MIN_SOLID_ANGLE,
-    SphRect,
     one_minus_cos_from_sin2,
     pdf_cosine_hemisphere,
     pdf_uniform_cone,
