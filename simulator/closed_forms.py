@@ -46,6 +46,10 @@ from typing import NamedTuple
 import numpy as np
 
 __all__ = [
+    "cie_overcast_luminance",
+    "cie_overcast_row_means",
+    "cie_overcast_illuminance",
+    "latlong_rows_illuminance",
     "point_irradiance",
     "sphere_irradiance",
     "polygon_irradiance",
@@ -1079,3 +1083,59 @@ def cie171_indirect_illuminance(flux_lm, reflectance, total_area):
     if np.any(area <= 0.0):
         raise ValueError("cie171_indirect_illuminance: total_area must be > 0")
     return _out(rho * flux / ((1.0 - rho) * area))
+
+
+# --------------------------------------------------------------------------- #
+# CIE standard overcast sky, and skies stored as lat-long rows
+# --------------------------------------------------------------------------- #
+
+
+def cie_overcast_luminance(zenith_luminance, theta):
+    """Luminance of the CIE standard overcast sky (Moon & Spencer 1942),
+    L(θ) = L_z·(1 + 2·cosθ)/3, θ the zenith angle (rad), for θ ≤ π/2."""
+    return zenith_luminance * (1.0 + 2.0 * np.cos(theta)) / 3.0
+
+
+def cie_overcast_row_means(zenith_luminance, n_rows):
+    """Mean luminance of the CIE overcast sky over each row of a lat-long map
+    of ``n_rows`` rows (row j spans θ ∈ [jπ/n, (j+1)π/n]), averaged over the
+    row's solid angle; rows below the horizon are 0.
+
+    Notes
+    -----
+    ∫(1 + 2cosθ)·sinθ dθ / ∫sinθ dθ over [θ0, θ1] = 1 + (sin²θ1 − sin²θ0)/(cosθ0 − cosθ1).
+    """
+    t = np.linspace(0.0, np.pi, n_rows + 1)
+    t0, t1 = t[:-1], t[1:]
+    mean = zenith_luminance * (1.0 + (np.sin(t1) ** 2 - np.sin(t0) ** 2) / (np.cos(t0) - np.cos(t1))) / 3.0
+    return np.where(t1 <= np.pi / 2 + 1e-12, mean, 0.0)
+
+
+def cie_overcast_illuminance(zenith_luminance, vertical=False):
+    """Illuminance from the CIE overcast sky alone (no ground), on a horizontal
+    receiver, E = 7π·L_z/9, or on a vertical one, E = L_z·(π/6 + 4/9)
+    (∫∫ L·cosγ dω over the sky; the vertical/horizontal ratio is 0.396)."""
+    if vertical:
+        return zenith_luminance * (np.pi / 6.0 + 4.0 / 9.0)
+    return 7.0 * np.pi * zenith_luminance / 9.0
+
+
+def latlong_rows_illuminance(row_luminance, vertical=False):
+    """Illuminance on a horizontal (or vertical) receiver from a sky map whose
+    rows are uniform in azimuth, with row j spanning θ ∈ [jπ/n, (j+1)π/n]:
+    exact for the piecewise-constant map.
+
+    Notes
+    -----
+    Horizontal: Σ_j L_j·π·(sin²θ1 − sin²θ0) (∫ cosθ dω over the row).
+    Vertical (upper rows only: its half of each row faces it):
+    Σ_j L_j·∫ 2 sin²θ dθ = Σ_j L_j·[θ − sinθ·cosθ] from θ0 to θ1, since the
+    azimuth integral of max(0, sinθ·cosφ) is 2·sinθ.
+    """
+    row_luminance = np.asarray(row_luminance, float)
+    t = np.linspace(0.0, np.pi, len(row_luminance) + 1)
+    t0, t1 = t[:-1], t[1:]
+    if vertical:
+        g = lambda x: x - np.sin(x) * np.cos(x)  # noqa: E731
+        return float(np.sum(row_luminance * (g(t1) - g(t0))))
+    return float(np.sum(row_luminance * np.pi * (np.sin(t1) ** 2 - np.sin(t0) ** 2)))

@@ -162,6 +162,9 @@ def write_channels(path: str | os.PathLike, channels: dict[str, np.ndarray], hea
     os.close(fd)
     try:
         OpenEXR.File(hdr, arrays).write(tmp)
+        umask = os.umask(0)  # mkstemp makes 0600 files; give the usual mode the umask allows
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
         os.replace(tmp, dest)
     except BaseException:
         with contextlib.suppress(OSError):

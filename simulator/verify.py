@@ -491,6 +491,44 @@ def _dome(ctx: CaseContext, s: Sensor, ch: int) -> float:
     raise _no_closed_form(ctx, s, "radiance meter looking at the ground")
 
 
+def _overcast_rows(ctx: CaseContext) -> tuple:
+    """(dome light, its map's row values) for a sky map uniform in azimuth,
+    whose lat-long pole the stage turned to the zenith (+Z)."""
+    l = _one_light(ctx.scene, LightKind.DOME)
+    m = l.texture_map
+    if m is None or ctx.scene.geometry.n_triangles:
+        raise UserError(f"{ctx.scene.path}: the overcast case expects one textured DomeLight and no geometry")
+    if not np.allclose(m, m[:, :1]) or float(l.frame[2, 1]) < 1.0 - 1e-9:
+        raise UserError(f"{ctx.scene.path}: the overcast case expects a map uniform in azimuth with its pole at +Z")
+    return l, m[:, 0].astype(float)
+
+
+def _overcast(ctx: CaseContext, s: Sensor, ch: int) -> float:
+    """The CIE standard overcast sky stored as lat-long rows (each the exact
+    solid-angle mean of L_z(1 + 2cosθ)/3): horizontal and vertical receivers
+    read the row-exact sums of ∫L·cosγ dω
+    (closed_forms.latlong_rows_illuminance); a meter whose cone lies inside the
+    top row reads that row's luminance."""
+    l, rows = _overcast_rows(ctx)
+    if s.kind == SensorKind.IRRADIANCE and abs(abs(s.normal[2]) - 1.0) < 1e-12 and s.normal[2] > 0:
+        return l.emission[ch] * cf.latlong_rows_illuminance(rows)
+    if s.kind == SensorKind.IRRADIANCE and abs(s.normal[2]) < 1e-12:
+        return l.emission[ch] * cf.latlong_rows_illuminance(rows, vertical=True)
+    if s.kind == SensorKind.RADIANCE and s.normal[2] > 0 and math.acos(min(1.0, s.normal[2])) + s.half_angle < math.pi / len(rows):
+        return l.emission[ch] * rows[0]
+    raise _no_closed_form(ctx, s, "only horizontal, vertical and zenith receivers")
+
+
+def _overcast_note(ctx: CaseContext, s: Sensor, ch: int) -> str:
+    l, rows = _overcast_rows(ctx)
+    if s.kind != SensorKind.IRRADIANCE:
+        return ""
+    vertical = abs(s.normal[2]) < 1e-12
+    sky = l.emission[ch] * rows[0] / float(cf.cie_overcast_row_means(1.0, len(rows))[0])  # L_z
+    cont = cf.cie_overcast_illuminance(sky, vertical=vertical)
+    return f"continuous CIE sky {cont:.5g} (map {_overcast(ctx, s, ch) / cont - 1.0:+.2%})"
+
+
 def _emissive_polygon(scene: Scene) -> tuple[np.ndarray, np.ndarray, tuple[float, float]]:
     """(vertices in authored order, front-face normal, emitted radiance pair)
     of a stage whose only geometry is one emissive, albedo-0 polygon."""
@@ -701,6 +739,7 @@ _BASE_CASES: tuple[Case, ...] = (
     Case("polygon", "polygon.toml", "mis", _polygon),
     Case("distant_occluder", "distant_occluder.toml", "light", _distant_occluder),
     Case("dome", "dome.toml", "light", _dome),
+    Case("cie_overcast", "cie_overcast.toml", "mis", _overcast, note=_overcast_note),
     Case("radiance_floor", "radiance_floor.toml", "light", _radiance_floor),
 )
 
