@@ -1091,19 +1091,59 @@ def cie171_indirect_illuminance(flux_lm, reflectance, total_area):
 
 
 def cie_overcast_luminance(zenith_luminance, theta):
-    """Luminance of the CIE standard overcast sky (Moon & Spencer 1942),
-    L(θ) = L_z·(1 + 2·cosθ)/3, θ the zenith angle (rad), for θ ≤ π/2."""
+    """Luminance of the CIE standard overcast sky.
+
+    Parameters
+    ----------
+    zenith_luminance : float or array_like
+        L_z, cd/m² (or W m⁻² sr⁻¹).
+    theta : float or array_like
+        Zenith angle, rad, 0 ≤ θ ≤ π/2.
+
+    Returns
+    -------
+    float or ndarray
+        L(θ), in the units of ``zenith_luminance``.
+
+    Notes
+    -----
+    L(θ) = L_z·(1 + 2·cosθ)/3: a third of the zenith value at the horizon,
+    independent of azimuth.
+
+    References
+    ----------
+    P. Moon, D. E. Spencer, "Illumination from a non-uniform sky",
+    Illuminating Engineering 37, 707–726, 1942; CIE S 011/E:2003, *Spatial
+    distribution of daylight — CIE standard general sky* (type 16).
+    """
     return zenith_luminance * (1.0 + 2.0 * np.cos(theta)) / 3.0
 
 
 def cie_overcast_row_means(zenith_luminance, n_rows):
-    """Mean luminance of the CIE overcast sky over each row of a lat-long map
-    of ``n_rows`` rows (row j spans θ ∈ [jπ/n, (j+1)π/n]), averaged over the
-    row's solid angle; rows below the horizon are 0.
+    """The CIE overcast sky as the rows of a lat-long map.
+
+    Parameters
+    ----------
+    zenith_luminance : float
+        L_z, cd/m².
+    n_rows : int
+        Rows of the map; row j spans θ ∈ [jπ/n, (j+1)π/n] (row 0 at the zenith).
+
+    Returns
+    -------
+    ndarray, shape (n_rows,)
+        Each row's luminance averaged over its solid angle; 0 below the horizon.
 
     Notes
     -----
-    ∫(1 + 2cosθ)·sinθ dθ / ∫sinθ dθ over [θ0, θ1] = 1 + (sin²θ1 − sin²θ0)/(cosθ0 − cosθ1).
+    ∫(1 + 2cosθ)·sinθ dθ / ∫sinθ dθ over [θ0, θ1]
+    = 1 + (sin²θ1 − sin²θ0)/(cosθ0 − cosθ1), times L_z/3.
+
+    References
+    ----------
+    P. Moon, D. E. Spencer, "Illumination from a non-uniform sky",
+    Illuminating Engineering 37, 707–726, 1942; CIE S 011/E:2003, *Spatial
+    distribution of daylight — CIE standard general sky* (type 16).
     """
     t = np.linspace(0.0, np.pi, n_rows + 1)
     t0, t1 = t[:-1], t[1:]
@@ -1112,25 +1152,64 @@ def cie_overcast_row_means(zenith_luminance, n_rows):
 
 
 def cie_overcast_illuminance(zenith_luminance, vertical=False):
-    """Illuminance from the CIE overcast sky alone (no ground), on a horizontal
-    receiver, E = 7π·L_z/9, or on a vertical one, E = L_z·(π/6 + 4/9)
-    (∫∫ L·cosγ dω over the sky; the vertical/horizontal ratio is 0.396)."""
+    """Illuminance from the CIE overcast sky alone (no ground).
+
+    Parameters
+    ----------
+    zenith_luminance : float
+        L_z, cd/m².
+    vertical : bool
+        A vertical receiver instead of a horizontal one.
+
+    Returns
+    -------
+    float
+        Illuminance, lx (W/m² for radiometric input).
+
+    Notes
+    -----
+    E = ∫∫ L·cosγ dω over the sky: horizontal, 2π·∫(L_z/3)(1 + 2cosθ)cosθ sinθ dθ
+    = 7π·L_z/9; vertical, ∫(L_z/3)(1 + 2cosθ)·2sin²θ dθ = L_z·(π/6 + 4/9)
+    (the azimuth integral of max(0, sinθ·cosφ) is 2·sinθ). Their ratio is 0.396.
+
+    References
+    ----------
+    P. Moon, D. E. Spencer, "Illumination from a non-uniform sky",
+    Illuminating Engineering 37, 707–726, 1942; CIE S 011/E:2003, *Spatial
+    distribution of daylight — CIE standard general sky* (type 16).
+    """
     if vertical:
         return zenith_luminance * (np.pi / 6.0 + 4.0 / 9.0)
     return 7.0 * np.pi * zenith_luminance / 9.0
 
 
 def latlong_rows_illuminance(row_luminance, vertical=False):
-    """Illuminance on a horizontal (or vertical) receiver from a sky map whose
-    rows are uniform in azimuth, with row j spanning θ ∈ [jπ/n, (j+1)π/n]:
-    exact for the piecewise-constant map.
+    """Illuminance from a sky map whose rows are uniform in azimuth, exact for
+    the piecewise-constant map.
+
+    Parameters
+    ----------
+    row_luminance : array_like, shape (n,)
+        Luminance of each row; row j spans θ ∈ [jπ/n, (j+1)π/n].
+    vertical : bool
+        A vertical receiver instead of a horizontal one (rows below the
+        horizon must be 0: the formula counts the upper hemisphere).
+
+    Returns
+    -------
+    float
+        Illuminance, in the luminance's units × sr.
 
     Notes
     -----
-    Horizontal: Σ_j L_j·π·(sin²θ1 − sin²θ0) (∫ cosθ dω over the row).
-    Vertical (upper rows only: its half of each row faces it):
-    Σ_j L_j·∫ 2 sin²θ dθ = Σ_j L_j·[θ − sinθ·cosθ] from θ0 to θ1, since the
-    azimuth integral of max(0, sinθ·cosφ) is 2·sinθ.
+    Horizontal: Σ_j L_j·π·(sin²θ1 − sin²θ0), the integral of cosθ dω over
+    the row. Vertical: Σ_j L_j·[θ − sinθ·cosθ] from θ0 to θ1, the integral
+    of 2·sin²θ dθ (the azimuth integral of max(0, sinθ·cosφ) is 2·sinθ).
+
+    References
+    ----------
+    The lat-long convention of ``simulator.latlong`` (OpenEXR environment
+    maps): rows of equal angular height from the pole.
     """
     row_luminance = np.asarray(row_luminance, float)
     t = np.linspace(0.0, np.pi, len(row_luminance) + 1)
