@@ -2,7 +2,7 @@
 
 Everything here happens before (or around) reading a prim: bad options and
 files that are missing or not USD become one-line ``UserError`` messages,
-variant selections go into the session layer, ``metersPerUnit`` and
+variant selections go into the in-memory override layer, ``metersPerUnit`` and
 ``upAxis`` become the stage -> world map of the reading context, and the
 traversal decides which prims are seen at all.
 """
