@@ -29,6 +29,8 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("--samples", type=int, help="samples per sensor (overrides [simulation] samples)")
     r.add_argument("--method", help="estimator: auto, analytic, light, bsdf, mis or path")
     r.add_argument("--rel-error", type=float, metavar="R", help="adaptive: stop each sensor when its confidence half-width is under R × its reading")
+    r.add_argument("--variant", action="append", metavar="SET=VARIANT",
+                   help="select a USD variant before reading (repeatable; overrides the config's variants)")
     r.add_argument("--confidence", type=float, metavar="C", help="confidence of that interval (default 0.95; 0.999 for a guarantee over many sensors)")
     r.add_argument("--device", choices=("cpu", "cuda", "auto"), help="Warp device (auto: CUDA when present)")
     r.add_argument("-q", "--quiet", action="store_true", help="print no table")
@@ -155,7 +157,7 @@ def _cmd_run(args) -> int:
     cfg = load_config(args.config)
     cfg = apply_overrides(
         cfg, seed=args.seed, samples=args.samples, device=args.device, csv=args.output, method=args.method, rel_error=args.rel_error,
-        confidence=args.confidence,
+        confidence=args.confidence, variants=args.variant,
     )
     t0 = time.perf_counter()
     bar = ProgressBar("tracing")

@@ -759,6 +759,7 @@ def apply_overrides(
     method: str | None = None,
     rel_error: float | None = None,
     confidence: float | None = None,
+    variants: list[str] | None = None,
 ) -> RunConfig:
     """Apply command-line flags to a config.
 
@@ -780,6 +781,9 @@ def apply_overrides(
         Replaces ``simulation.rel_error`` (makes the run adaptive); in (0, 1).
     confidence : float, optional
         Replaces ``simulation.confidence``; in (0.5, 1).
+    variants : list of str, optional
+        ``"set=variant"`` selections (``--variant``), added to the config's
+        ``variants`` table and overriding the same set there.
 
     Returns
     -------
@@ -819,6 +823,14 @@ def apply_overrides(
             raise ck.fail("--confidence", f"must be between 0.5 and 1 (exclusive), got {c:g}")
         sim["confidence"] = c
         given["confidence"] = c
+    chosen = dict(cfg.variants)
+    for item in variants or ():
+        name, sep, choice = str(item).partition("=")
+        if not sep or not name.strip() or not choice.strip():
+            raise ck.fail("--variant", f"expected SET=VARIANT, got {item!r}")
+        chosen[name.strip()] = choice.strip()
+    if variants:
+        given["variants"] = list(variants)
     output = cfg.output
     if csv is not None:
         text = os.fspath(csv)
@@ -830,6 +842,7 @@ def apply_overrides(
         cfg,
         simulation=replace(cfg.simulation, **sim),
         output=output,
+        variants=chosen,
         overrides={**cfg.overrides, **given},
     )
 

@@ -7,6 +7,9 @@ stage serves a whole sweep (stages/furnace.usda: rho_0_5, rho_0_9, rho_0_95).
 
 from __future__ import annotations
 
+import csv
+import json
+import math
 import textwrap
 from pathlib import Path
 
@@ -199,3 +202,18 @@ def test_cli_unknown_variant_exits_2_and_writes_nothing(tmp_path, capsys):
     err = capsys.readouterr().err.strip()
     assert "\n" not in err and "variants.reflectance" in err and "rho_0_5, rho_0_9, rho_0_95" in err, err
     assert not csv.exists()
+
+
+def test_variant_flag_overrides_the_config(tmp_path):
+    """`--variant reflectance=rho_0_5` replaces the furnace config's own
+    rho_0_95 selection: the run reads the ρ = 0.5 furnace (E = 2π·L_e, within
+    4 standard errors) and its run record names the selection it used."""
+    root = Path(__file__).resolve().parents[1]
+    out = tmp_path / "f.csv"
+    assert main(["run", str(root / "configs" / "furnace.toml"), "--variant", "reflectance=rho_0_5",
+                 "--samples", "4096", "-o", str(out), "-q"]) == 0  # fmt: skip
+    rec = json.loads(out.with_name("f.run.json").read_text())
+    assert rec["stage"]["variants"] == {"reflectance": "rho_0_5"}
+    row = next(r for r in csv.DictReader(out.open()) if r["sensor"] == "centre_up")
+    e, se = float(row["irradiance_W_m2"]), float(row["irradiance_stderr_W_m2"])
+    assert abs(e - 2 * math.pi) <= 4 * se
