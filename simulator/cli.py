@@ -135,6 +135,9 @@ def _cmd_bench(args) -> int:
     configs = [Path(c) for c in args.configs] or default_configs()
     if args.samples < 1:
         raise UserError(f"--samples: must be >= 1, got {args.samples}")
+    for c in configs:
+        if not c.is_file():
+            raise UserError(f"{c}: config file not found")
     print(format_bench([], header=True))
     rows, info = run_bench(configs, device=args.device, samples=args.samples)
     print(f"device {info['device']} ({info['processor']}, {info['threads']} threads); "

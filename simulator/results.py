@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .errors import UserError
 from .scene.model import Sensor, SensorKind
 
 __all__ = ["COLUMNS", "PROBE_COLUMNS", "Reading", "readings_from", "probe_readings", "write_outputs", "format_table"]
@@ -137,8 +138,11 @@ def _atomic_write_all(files: dict) -> None:
     staged = []
     try:
         for path, content in files.items():
-            path.parent.mkdir(parents=True, exist_ok=True)
-            fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+            try:
+                path.parent.mkdir(parents=True, exist_ok=True)
+                fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+            except OSError as e:  # a path the user chose that cannot be written
+                raise UserError(f"{path}: cannot write output: {e.strerror or e}") from None
             staged.append((tmp, path))
             if callable(content):
                 os.close(fd)

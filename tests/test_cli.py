@@ -115,3 +115,14 @@ def test_same_seed_same_bytes_and_columns(tmp_path, capsys):
     assert main(["run", str(cfg), "-q", "--seed", "8", "--method", "light"]) == 0
     mc8 = list(csv.DictReader(out.open()))
     assert mc8[0]["irradiance_W_m2"] != mc7[0]["irradiance_W_m2"]
+
+
+def test_output_that_cannot_be_written(tmp_path, capsys):
+    """An output path under a regular file cannot be created: one line naming
+    the path, exit 2, no traceback."""
+    (tmp_path / "stage.usda").write_text(POINT_STAGE)
+    (tmp_path / "afile").write_text("not a folder")
+    code = main(["run", str(_config(tmp_path)), "-q", "-o", str(tmp_path / "afile" / "x.csv")])
+    err = capsys.readouterr().err.strip()
+    assert code == 2 and err.count("\n") == 0
+    assert "afile" in err and "cannot write output" in err
