@@ -5,7 +5,9 @@ The CLI prints its message on one line and exits with status 2; no traceback,
 no output file.
 """
 
-__all__ = ["UserError"]
+from pathlib import Path
+
+__all__ = ["UserError", "require_file"]
 
 
 class UserError(Exception):
@@ -16,3 +18,13 @@ class UserError(Exception):
     """
 
     exit_code = 2
+
+
+def require_file(path) -> Path:
+    """``path`` as a Path, or a UserError if it is missing or not a regular file."""
+    p = Path(path)
+    if not p.exists():
+        raise UserError(f"{path}: no such file")
+    if not p.is_file():
+        raise UserError(f"{path}: not a file")
+    return p

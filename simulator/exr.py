@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import UserError
+from .errors import UserError, require_file
 
 __all__ = ["read_rgb", "read_header", "read_channels", "write_channels", "RESERVED_HEADER_KEYS"]
 
@@ -42,11 +42,7 @@ RESERVED_HEADER_KEYS = frozenset({
 def _open(path: str | os.PathLike, header_only: bool = False):
     import OpenEXR
 
-    p = Path(path)
-    if not p.exists():
-        raise UserError(f"{path}: no such file")
-    if not p.is_file():
-        raise UserError(f"{path}: not a file")
+    p = require_file(path)
     try:
         if not OpenEXR.isOpenExrFile(str(p)):
             raise UserError(f"{path}: not an OpenEXR file")

@@ -12,12 +12,11 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Iterator
-from pathlib import Path
 
 import numpy as np
 from pxr import Usd, UsdGeom
 
-from ...errors import UserError
+from ...errors import UserError, require_file
 from ...units import SPECTRA
 from .context import _MAX_NAMED, _Context
 
@@ -42,11 +41,7 @@ def _check_options(path, light_units: str, spectrum) -> None:
 
 def _open_stage(path) -> Usd.Stage:
     """Open the stage, turning every pxr failure into a one-line UserError."""
-    p = Path(path)
-    if not p.exists():
-        raise UserError(f"{path}: no such file")
-    if not p.is_file():
-        raise UserError(f"{path}: not a file")
+    p = require_file(path)
     try:
         stage = Usd.Stage.Open(str(p))
     except Exception as exc:  # Tf.ErrorException and friends
