@@ -30,7 +30,7 @@ import numpy as np
 from .errors import UserError
 from .scene.model import LightKind, Scene, Sensor, SensorKind
 
-__all__ = ["MC_METHODS", "SensorPlan", "Plan", "make_plan", "choose_method", "analytic_refusal", "lights_behind", "format_plan"]
+__all__ = ["MC_METHODS", "SensorPlan", "Plan", "make_plan", "probe_method", "analytic_refusal", "lights_behind", "format_plan"]
 
 #: methods with a Monte Carlo kernel
 MC_METHODS = ("light", "bsdf", "mis", "path")
@@ -43,26 +43,23 @@ MC_METHODS = ("light", "bsdf", "mis", "path")
 LARGE_SOURCE_SR = 1.0
 
 
-def choose_method(scene: Scene, sensors: list[Sensor], requested: str, component: str = "total") -> tuple[str, str]:
-    """Return ``(method, reason)`` for the run."""
+def probe_method(scene: Scene, requested: str, component: str = "total") -> tuple[str, str]:
+    """``(method, reason)`` for the run's probes, which look in every direction
+    and have no closed form: paths if any surface reflects (or for the
+    indirect component), else direct light sampling; an explicit Monte Carlo
+    method as asked (``analytic`` falls back to this choice)."""
     reflects = scene.geometry.n_triangles > 0 and bool(np.any(scene.geometry.albedo > 0))
-    if requested == "auto":
+    if requested in ("auto", "analytic"):
         if component == "indirect":
-            return "path", "auto: the indirect component is light reflected on the way: paths"
+            return "path", "the indirect component is light reflected on the way: paths"
         if reflects:
-            return "path", "auto: surfaces reflect (albedo > 0), so interreflection needs paths"
-        return "light", "auto: no surface reflects, so direct light sampling is exact in expectation and cheapest"
-    if requested == "analytic":
-        for sensor in sensors:
-            why = analytic_refusal(scene, sensor)
-            if why is not None:
-                raise UserError(f"method analytic cannot read sensor {sensor.name!r}: {why} (use light, mis, path or auto)")
-        return "analytic", "as requested; every sensor has a closed form and nothing can block its lights"
+            return "path", "surfaces reflect (albedo > 0), so interreflection needs paths"
+        return "light", "no surface reflects, so direct light sampling"
     if requested in MC_METHODS:
         if requested != "path" and reflects:
             return requested, f"as requested; direct light only: interreflection is ignored ({requested} does not bounce)"
         return requested, "as requested"
-    raise UserError(f"simulation.method: {requested!r} is not available yet (use auto, light, bsdf, mis or path)")
+    raise UserError(f"simulation.method: {requested!r} is not a method (use auto, analytic, light, bsdf, mis or path)")
 
 
 def _front_of_plane(points: np.ndarray, origin: np.ndarray, normal: np.ndarray, tol: float) -> np.ndarray:

@@ -16,7 +16,7 @@ from .config import RunConfig
 from .engine import EngineResult
 from .errors import UserError
 from .maps import grid_outputs, probe_outputs
-from .plan import Plan, choose_method, make_plan
+from .plan import Plan, make_plan, probe_method
 from .results import Reading, probe_readings, readings_from, write_outputs
 from .scene.model import Scene, Sensor, SensorKind
 
@@ -125,9 +125,9 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     sim = cfg.simulation
     plan = make_plan(scene, plain, sim.method, sim.component)
     reason = "per-sensor plan (see plan)" if sim.method == "auto" else "as requested"
-    probe_method = None
+    probes_method = None
     if probes:  # no closed form for a probe: its method is chosen for the run
-        probe_method, why = choose_method(scene, [], "auto" if sim.method == "analytic" else sim.method, sim.component)
+        probes_method, why = probe_method(scene, sim.method, sim.component)
         reason += f"; probes: {why}"
     for w in scene.warnings:
         log(f"warning: {w}")
@@ -138,7 +138,7 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     probe_res = []
     if probes:
         probe_res = engine.run_probes(
-            probes, probe_method, samples=sim.samples, seed=sim.seed,
+            probes, probes_method, samples=sim.samples, seed=sim.seed,
             stream_ids=[i for i, s in enumerate(sensors) if s.kind == SensorKind.PROBE], rel_error=sim.rel_error, abs_error=sim.abs_error,
             max_samples=sim.sample_cap, time_limit_s=sim.time_limit_s, max_depth=sim.max_depth,
             component=sim.component, progress=progress, confidence=sim.confidence,
@@ -148,11 +148,11 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     for w in res.warnings:
         log(f"warning: {w}")
     by_name = {r.sensor.name: r for r in readings_from(plain, res.mean, res.stderr, res.samples, res.seconds, res.methods, res.target_met)}
-    by_name.update({r.sensor.name: r for r in probe_readings(probe_res, probe_method)})
+    by_name.update({r.sensor.name: r for r in probe_readings(probe_res, probes_method)})
     rows = [by_name[s.name] for s in sensors]
     meta = {"seed": sim.seed, "method": "+".join(plan.groups()), "light_units": cfg.light_units, "stage": cfg.stage.name}
     extra = grid_outputs(cfg.output.csv, cfg.grids, rows, meta)
-    probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, {**meta, "method": probe_method, "taken": [g.name for g in cfg.grids]})
+    probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, {**meta, "method": probes_method, "taken": [g.name for g in cfg.grids]})
     extra.update(probe_files)
     t_end = time.perf_counter()
     record = {
@@ -164,7 +164,7 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
         "seed": sim.seed,
         "samples_requested": sim.samples,
         "samples_total": int(res.samples.sum()) + sum(p.samples for p in probe_res),
-        "method": {"requested": sim.method, "used": {m: len(ix) for m, ix in plan.groups().items()}, "probes": probe_method, "reason": reason},
+        "method": {"requested": sim.method, "used": {m: len(ix) for m, ix in plan.groups().items()}, "probes": probes_method, "reason": reason},
         "plan": plan.to_record(),
         "component": sim.component,
         "device": res.device,

@@ -13,7 +13,7 @@ from scipy.stats import binom
 from simulator.config import load_config
 from simulator.engine import Engine
 from simulator.errors import UserError
-from simulator.plan import analytic_refusal, choose_method
+from simulator.plan import analytic_refusal, make_plan
 from simulator.run import collect_sensors, load_scene
 from simulator.scene.model import SensorKind
 
@@ -80,7 +80,7 @@ def test_analytic_refuses_where_an_occluder_could_block():
     _, scene, sensors = _load("distant_occluder")
     assert all("may block" in analytic_refusal(scene, s) for s in sensors)
     with pytest.raises(UserError, match="method analytic cannot read sensor 'shadow'.*Occluder may block"):
-        choose_method(scene, sensors, "analytic")
+        make_plan(scene, sensors, "analytic")
 
 
 def test_analytic_refuses_radiance_meters():
