@@ -255,9 +255,8 @@ class Engine:
         r.ez = wp.vec3(*map(float, f[:, 2]))
         r.emission = wp.vec2(float(l.emission[0]), float(l.emission[1]))
         r.width, r.height, r.radius = float(l.width), float(l.height), float(l.radius)
-        r.one_minus_cos = float(1.0 - math.cos(l.half_angle)) if l.kind == LightKind.DISTANT else 0.0
-        if l.kind == LightKind.DISTANT and l.half_angle > 0:
-            r.one_minus_cos = 2.0 * math.sin(0.5 * l.half_angle) ** 2  # 1 − cos without cancellation
+        # a distant light's cone: 1 − cosθ as 2·sin²(θ/2), without cancellation; 0 = delta
+        r.one_minus_cos = 2.0 * math.sin(0.5 * l.half_angle) ** 2 if l.kind == LightKind.DISTANT else 0.0
         r.area = {
             LightKind.RECT: l.width * l.height,
             LightKind.DISK: math.pi * l.radius**2,

@@ -97,6 +97,8 @@ def analytic_refusal(scene: Scene, sensor: Sensor) -> str | None:
     if g.n_triangles == 0:
         return None
     pts = g.points[g.triangles]  # (T, 3, 3)
+    # vertices within float64 rounding of the sensor's plane (a floor under a
+    # sensor lying on it) count as behind it, not in front
     tol = 1e-9 * max(1.0, float(np.abs(pts).max()))
     suspects = _front_of_plane(pts, sensor.position, sensor.normal, tol)  # a patch is planar too
     if not suspects.any():
@@ -263,6 +265,8 @@ def _reflecting_in_front(scene: Scene, sensor: Sensor) -> tuple[str, bool]:
         return "none", False
     if sensor.kind in (SensorKind.IRRADIANCE, SensorKind.PATCH):
         pts = g.points[g.triangles]
+        # vertices within float64 rounding of the sensor's plane (a floor under a
+        # sensor lying on it) count as behind it, not in front
         tol = 1e-9 * max(1.0, float(np.abs(pts).max()))
         front = _front_of_plane(pts, sensor.position, sensor.normal, tol)
     else:  # meters and probes look everywhere
