@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .errors import UserError
+from simulator.errors import UserError
 
 __all__ = ["configs_dir", "bundled_configs"]
 

@@ -2,7 +2,7 @@
 
 from pathlib import Path
 
-from simulator.bench import format_bench, run_bench
+from simulator.commands.bench import format_bench, run_bench
 
 CONFIGS = Path(__file__).resolve().parents[1] / "configs"
 

@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 import warp as wp
 
-from simulator.engine import Engine
+from simulator.engine.driver import Engine
 from simulator.kernels.estimators import unoccluded
 from simulator.kernels.lights import SceneRec
 from simulator.scene.model import Geometry, Scene, Sensor, SensorKind

@@ -9,8 +9,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from simulator.chart import CSV_COLUMNS, fit_slope, run_chart, time_to
-from simulator.cli import main
+from simulator.commands.chart import CSV_COLUMNS, fit_slope, run_chart, time_to
+from simulator.commands.cli import main
 
 CONFIGS = Path(__file__).resolve().parents[1] / "configs"
 

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from simulator.cli import main
-from simulator.results import COLUMNS
+from simulator.commands.cli import main
+from simulator.io.results import COLUMNS
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -75,7 +75,7 @@ def test_bad_flag_value(tmp_path, capsys):
 
 
 def test_cuda_requested_without_cuda(tmp_path, capsys):
-    from simulator.engine import cuda_available
+    from simulator.engine.driver import cuda_available
 
     if cuda_available():
         pytest.skip("this machine has CUDA")

@@ -1,4 +1,4 @@
-"""Tests for simulator.closed_forms: every closed form against an independent
+"""Tests for simulator.reference.closed_forms: every closed form against an independent
 computation (numerical quadrature of the defining integral, a discretised
 radiosity solve, an exact geometric identity, or a published table).
 
@@ -23,7 +23,7 @@ import numpy as np
 import pytest
 from numpy.polynomial.legendre import leggauss
 
-from simulator import closed_forms as cf
+from simulator.reference import closed_forms as cf
 
 PI = np.pi
 

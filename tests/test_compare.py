@@ -1,7 +1,7 @@
 """``probesim compare A.exr B.exr``: error figures of one map against another.
 
 Expected values are computed by hand from the constructed maps (formulas in
-simulator.compare's docstring).
+simulator.commands.compare's docstring).
 """
 
 from __future__ import annotations
@@ -11,11 +11,11 @@ import math
 import numpy as np
 import pytest
 
-from simulator.cli import main
-from simulator.compare import compare_arrays, compare_files
+from simulator.commands.cli import main
+from simulator.commands.compare import compare_arrays, compare_files
 from simulator.errors import UserError
-from simulator.exr import write_channels
-from simulator.latlong import latlong_uv_to_direction
+from simulator.io.exr import write_channels
+from simulator.io.latlong import latlong_uv_to_direction
 
 
 def _grey(path, values, **extra):

@@ -1,4 +1,4 @@
-"""Tests for simulator.config: loading, validation messages, grids, overrides."""
+"""Tests for simulator.config.loader: loading, validation messages, grids, overrides."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from simulator.config import (
+from simulator.config.loader import (
     DEFAULT_MAX_SAMPLES,
     DEVICES,
     METHODS,

@@ -7,9 +7,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from simulator.config import load_config
-from simulator.engine import Engine, cuda_available
-from simulator.run import collect_sensors, load_scene
+from simulator.config.loader import load_config
+from simulator.engine.driver import Engine, cuda_available
+from simulator.pipeline import collect_sensors, load_scene
 
 CONFIGS = Path(__file__).resolve().parents[1] / "configs"
 

@@ -1,6 +1,6 @@
 """The `light` estimator on every bundled closed-form stage, in both light-unit modes.
 
-Each expected value comes from ``simulator.closed_forms`` (an independent
+Each expected value comes from ``simulator.reference.closed_forms`` (an independent
 numpy implementation of the formulas in REFERENCES.md), evaluated with the
 light parameters the stage reader produced. A reading passes when
 |estimate − truth| ≤ 4·stderr + 2e-6·|truth|: four standard errors is the
@@ -20,10 +20,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from simulator import closed_forms as cf
-from simulator.config import load_config
-from simulator.engine import Engine
-from simulator.run import collect_sensors, load_scene
+from simulator.reference import closed_forms as cf
+from simulator.config.loader import load_config
+from simulator.engine.driver import Engine
+from simulator.pipeline import collect_sensors, load_scene
 from simulator.scene.model import LightKind, SensorKind
 
 CONFIGS = Path(__file__).resolve().parents[1] / "configs"

@@ -3,7 +3,7 @@
 Every case runs the ``path`` method (multiple importance sampling at every
 vertex, Russian roulette, no bounce cap) on a bundled stage and config, with
 a fixed seed, and checks each reading against a closed form of
-``simulator.closed_forms`` (sources in REFERENCES.md, "Enclosures" and
+``simulator.reference.closed_forms`` (sources in REFERENCES.md, "Enclosures" and
 "CIE 171:2006 test cases"):
 
 - furnace (stages/furnace.usda, ρ = 0.5, 0.9, 0.95 by variant): radiance
@@ -32,10 +32,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from simulator import closed_forms as cf
-from simulator.config import load_config
-from simulator.engine import Engine
-from simulator.run import collect_sensors, load_scene
+from simulator.reference import closed_forms as cf
+from simulator.config.loader import load_config
+from simulator.engine.driver import Engine
+from simulator.pipeline import collect_sensors, load_scene
 from simulator.scene.model import LightKind, Sensor, SensorKind
 
 CONFIGS = Path(__file__).resolve().parents[1] / "configs"

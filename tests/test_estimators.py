@@ -10,11 +10,11 @@ import numpy as np
 import pytest
 from scipy.stats import binom
 
-from simulator.config import load_config
-from simulator.engine import Engine
+from simulator.config.loader import load_config
+from simulator.engine.driver import Engine
 from simulator.errors import UserError
-from simulator.plan import analytic_refusal, make_plan
-from simulator.run import collect_sensors, load_scene
+from simulator.plan.planner import analytic_refusal, make_plan
+from simulator.pipeline import collect_sensors, load_scene
 from simulator.scene.model import SensorKind
 
 from test_direct_light import FLOAT32_SLACK, expected
@@ -137,7 +137,7 @@ def test_confidence_sets_the_stopping_interval():
     """confidence = 0.999 stops each sensor at 3.29 standard errors ≤ 1% of its
     reading (the two-sided 99.9% normal quantile), which takes about
     (3.29/1.96)² = 2.8× the samples of the default 95%."""
-    from simulator.stats import z_for_confidence
+    from simulator.engine.stats import z_for_confidence
 
     assert z_for_confidence(0.95) == pytest.approx(1.959964, abs=1e-6)
     assert z_for_confidence(0.999) == pytest.approx(3.290527, abs=1e-6)

@@ -28,7 +28,7 @@ import numpy as np
 import pytest
 from scipy import stats
 
-from simulator.engine import Engine
+from simulator.engine.driver import Engine
 from simulator.scene.model import SensorKind
 from simulator.scene.usd import load_stage
 

@@ -17,10 +17,10 @@ import numpy as np
 import OpenEXR
 import pytest
 
-from simulator import closed_forms as cf
-from simulator.config import GridConfig, load_config
-from simulator.maps import GRID_CHANNELS, PROBE_CHANNELS, grid_arrays, output_names, sanitise_name
-from simulator.run import run
+from simulator.reference import closed_forms as cf
+from simulator.config.loader import GridConfig, load_config
+from simulator.io.maps import GRID_CHANNELS, PROBE_CHANNELS, grid_arrays, output_names, sanitise_name
+from simulator.pipeline import run
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = 7
@@ -175,12 +175,12 @@ def test_probe_exr_json_and_csv_row(outputs):
 def test_outputs_are_written_together_or_not_at_all(tmp_path, monkeypatch):
     """If writing a map fails, the run leaves nothing behind: no CSV, no run
     record, no other map, no temporary file."""
-    import simulator.exr
+    import simulator.io.exr
 
     def broken(*args, **kwargs):
         raise OSError("disk full")
 
-    monkeypatch.setattr(simulator.exr, "write_channels", broken)
+    monkeypatch.setattr(simulator.io.exr, "write_channels", broken)
     cfg = load_config(_config(tmp_path))
     with pytest.raises(OSError, match="disk full"):
         run(cfg, log=lambda m: None)

@@ -3,12 +3,12 @@
 Reference values come from formulas evaluated in numpy, independently of the
 kernels: exact texel integrals of n·ω over a lat-long map, a fine surface
 quadrature over a cylinder's side, Lambert's polygon formula
-(``simulator.closed_forms``). A statistical reading passes when
+(``simulator.reference.closed_forms``). A statistical reading passes when
 |estimate − truth| ≤ 4·stderr + float32 slack (+ the stated quadrature error
 bound where the reference is a quadrature), with fixed seeds. Samplers get
 chi-square tests against their pdf.
 
-EXR maps are written by the tests (``simulator.exr``) into tmp_path.
+EXR maps are written by the tests (``simulator.io.exr``) into tmp_path.
 """
 
 from __future__ import annotations
@@ -21,9 +21,9 @@ import pytest
 import warp as wp
 from scipy import stats
 
-from simulator import closed_forms as cf
-from simulator import exr, latlong
-from simulator.engine import Engine
+from simulator.reference import closed_forms as cf
+from simulator.io import exr, latlong
+from simulator.engine.driver import Engine
 from simulator.errors import UserError
 from simulator.kernels import distributions as D
 from simulator.scene.model import LightKind, Sensor, SensorKind

@@ -8,11 +8,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from simulator import closed_forms as cf
-from simulator.config import load_config
-from simulator.engine import Engine
-from simulator.plan import make_plan
-from simulator.run import collect_sensors, load_scene, run_plan
+from simulator.reference import closed_forms as cf
+from simulator.config.loader import load_config
+from simulator.engine.driver import Engine
+from simulator.plan.planner import make_plan
+from simulator.pipeline import collect_sensors, load_scene, run_plan
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -19,12 +19,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from simulator import closed_forms as cf
-from simulator.config import DEFAULT_PROBE_RESOLUTION, load_config
-from simulator.engine import Engine
+from simulator.reference import closed_forms as cf
+from simulator.config.loader import DEFAULT_PROBE_RESOLUTION, load_config
+from simulator.engine.driver import Engine
 from simulator.errors import UserError
-from simulator.latlong import latlong_uv_to_direction, texel_solid_angles
-from simulator.probe_engine import FACE_NAMES, latlong_layout, pixel_solid_angles, probe_frame
+from simulator.io.latlong import latlong_uv_to_direction, texel_solid_angles
+from simulator.engine.probes import FACE_NAMES, latlong_layout, pixel_solid_angles, probe_frame
 from simulator.scene.model import LightKind, Sensor, SensorKind
 from simulator.scene.usd import load_stage
 
@@ -93,7 +93,7 @@ def test_config_probe_kind(tmp_path):
 def test_pixel_layout_is_the_shared_latlong_convention(w, h):
     """The kernel's pixel (i, j) spans lon0 + [i, i+1]·dlon, lat0 + [j, j+1]·dlat
     with d = (sin lon cos lat, sin lat, cos lon cos lat): every pixel corner
-    must be the direction simulator.latlong gives for (u, v) = (i/W, j/H), and
+    must be the direction simulator.io.latlong gives for (u, v) = (i/W, j/H), and
     the pixel solid angles must tile the sphere (Σ = 4π)."""
     lon0, dlon, lat0, dlat = latlong_layout(w, h)
     i, j = np.meshgrid(np.arange(w + 1), np.arange(h + 1))
@@ -280,7 +280,7 @@ def _sky_map(seed=5, h=8, w=16) -> np.ndarray:
 
 
 def _textured_stage(tmp_path, sky: np.ndarray, up="Z", floor_albedo: float | None = None) -> Path:
-    from simulator.exr import write_channels
+    from simulator.io.exr import write_channels
 
     write_channels(tmp_path / "sky.exr", {"R": sky, "G": sky, "B": sky})
     floor = ""
@@ -347,7 +347,7 @@ def test_probe_map_relights_an_empty_stage(tmp_path, up):
     for its six faces, within 4·√(σ_probe² + σ_sensor²) (+ float32 slack):
     this checks the EXR's orientation, frame, units (R = G = B in the stage's
     light units, photometric here) and the face integrals together."""
-    from simulator.run import run
+    from simulator.pipeline import run
 
     sky = _sky_map(seed=11)
     a_dir = tmp_path / "a"
@@ -434,8 +434,8 @@ def test_stage_authored_probe_runs_end_to_end(tmp_path):
     uniform environment of luminance 1 cd/m² (photometric units) is read like
     a config probe: its CSV row holds scalar illuminance 4π lx exactly and
     its EXR is 8 × 4 with R = G = B = 1 cd/m²."""
-    from simulator.exr import read_channels
-    from simulator.run import run
+    from simulator.io.exr import read_channels
+    from simulator.pipeline import run
 
     _stage(tmp_path, textwrap.dedent('''\
         def DomeLight "Sky"
@@ -464,7 +464,7 @@ def test_dark_probe(tmp_path):
     """No light reaches a probe inside a closed black box: every integral is
     0 with zero standard error, the map is black, and the mean direction is
     undefined (NaN; its CSV columns are left empty)."""
-    from simulator.results import probe_readings
+    from simulator.io.results import probe_readings
 
     box = textwrap.dedent('''\
         def Cube "Box"

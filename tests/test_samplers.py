@@ -29,8 +29,8 @@ import pytest
 import warp as wp
 from scipy import stats
 
-from simulator import closed_forms as cf
-from simulator.engine import Engine, _warp
+from simulator.reference import closed_forms as cf
+from simulator.engine.driver import Engine, _warp
 from simulator.kernels.lights import SceneRec, pdf_light, sample_light
 from simulator.kernels.sampling import (
     frame_x,

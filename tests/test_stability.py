@@ -2,7 +2,7 @@
 
 Cells here run a fixed number of samples with a fixed seed (reproducible),
 not the wall-clock budget of ``probesim stability``. Readings are compared
-with the closed forms of ``simulator.stability`` (``simulator.closed_forms``)
+with the closed forms of ``simulator.commands.stability`` (``simulator.reference.closed_forms``)
 within 4 standard errors plus float32 slack (2e-6 relative, as in
 test_direct_light.py).
 """
@@ -15,10 +15,10 @@ import math
 import numpy as np
 import pytest
 
-from simulator.config import load_config
-from simulator.engine import Engine
-from simulator.run import collect_sensors, load_scene
-from simulator.stability import (
+from simulator.config.loader import load_config
+from simulator.engine.driver import Engine
+from simulator.pipeline import collect_sensors, load_scene
+from simulator.commands.stability import (
     CASES,
     CSV_COLUMNS,
     METHODS,

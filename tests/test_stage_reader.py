@@ -539,7 +539,7 @@ def test_rotated_rect_light_frame(tmp_path):
 
 def test_dome_texture_resolved(tmp_path):
     """texture:file is stored as an absolute path; a missing texture is a UserError naming the prim."""
-    from simulator import exr
+    from simulator.io import exr
 
     exr.write_channels(tmp_path / "sky.exr", {"Y": np.ones((2, 4))})  # the map is read too (test_more_lights)
     s = light_stage(tmp_path, "DomeLight", "asset inputs:texture:file = @./sky.exr@")

@@ -15,10 +15,10 @@ from pathlib import Path
 
 import pytest
 
-from simulator.cli import main
-from simulator.config import load_config
+from simulator.commands.cli import main
+from simulator.config.loader import load_config
 from simulator.errors import UserError
-from simulator.run import load_scene
+from simulator.pipeline import load_scene
 from simulator.scene.usd import load_stage
 
 ROOT = Path(__file__).resolve().parents[1]

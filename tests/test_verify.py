@@ -10,9 +10,9 @@ import math
 import numpy as np
 import pytest
 
-from simulator import closed_forms as cf
-from simulator import verify as V
-from simulator.cli import main
+from simulator.reference import closed_forms as cf
+from simulator.commands import verify as V
+from simulator.commands.cli import main
 
 QUICK_SUBSET = ("cie171_5_2", "point_cm_yup", "distant_occluder", "radiance_floor [W]")
 

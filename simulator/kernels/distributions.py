@@ -2,7 +2,7 @@
 
 A 2-D piecewise-constant distribution over the unit square ``(u, v)`` is
 stored as two CDF tables (built on the host by
-:func:`simulator.latlong.build_distribution`):
+:func:`simulator.io.latlong.build_distribution`):
 
 - ``marg``: ``H + 1`` values, ``marg[j] = P(row < j)`` (0 first, 1 last);
 - ``cond``: ``H * (W + 1)`` values, row ``j`` at ``j * (W + 1)``:
@@ -14,7 +14,7 @@ stored as two CDF tables (built on the host by
 tables, ``H (marg[j+1] − marg[j]) · W (cond[j, i+1] − cond[j, i])``, so the
 pair agrees exactly whatever rounding the tables carry.
 
-On a lat-long map (the convention of :mod:`simulator.latlong`:
+On a lat-long map (the convention of :mod:`simulator.io.latlong`:
 ``lon = π(1 − 2u)``, ``θ = πv`` from the pole ``ey``, direction
 ``sinθ sin(lon)·ex + cosθ·ey + sinθ cos(lon)·ez``), ``dω = 2π² sinθ du dv``, so
 the solid-angle pdf is ``pdf_uv / (2π² sinθ)`` (:func:`sample_latlong`,
@@ -106,7 +106,7 @@ def pdf_piecewise_2d(
 @wp.func
 def latlong_uv_to_direction(uv: wp.vec2, ex: wp.vec3, ey: wp.vec3, ez: wp.vec3) -> wp.vec3:
     """Unit direction of texture coordinates ``uv`` in the map frame (ex, ey = pole, ez);
-    twin of :func:`simulator.latlong.latlong_uv_to_direction`."""
+    twin of :func:`simulator.io.latlong.latlong_uv_to_direction`."""
     lon = PI * (1.0 - 2.0 * uv[0])
     theta = PI * uv[1]
     st = wp.sin(theta)
@@ -116,7 +116,7 @@ def latlong_uv_to_direction(uv: wp.vec2, ex: wp.vec3, ey: wp.vec3, ez: wp.vec3) 
 @wp.func
 def direction_to_latlong_uv(d: wp.vec3, ex: wp.vec3, ey: wp.vec3, ez: wp.vec3) -> wp.vec2:
     """Texture coordinates of unit direction ``d``; twin of
-    :func:`simulator.latlong.direction_to_latlong_uv`."""
+    :func:`simulator.io.latlong.direction_to_latlong_uv`."""
     lx = wp.dot(d, ex)
     ly = wp.dot(d, ey)
     lz = wp.dot(d, ez)

@@ -30,7 +30,7 @@ EMISSIVE       triangle ∝ its power, then uniform in area             P(tri)·
 A textured dome's radiance is ``emission × map[texel]`` with the texel of
 the direction looked up *nearest* (no filtering), so the radiance is
 piecewise constant exactly like the sampling density; the lat-long
-convention is :mod:`simulator.latlong`'s. An untextured dome keeps cosine
+convention is :mod:`simulator.io.latlong`'s. An untextured dome keeps cosine
 sampling, which is optimal for uniform radiance (zero variance unoccluded).
 """
 

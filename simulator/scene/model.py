@@ -80,7 +80,7 @@ class Light:
     half_angle: float = 0.0
     texture: str = ""  #: DomeLight lat-long EXR (resolved path), "" if untextured
     #: textured DomeLight: the map as luminance grey, shape (H, W), float64, row 0
-    #: at the pole ``frame[:, 1]`` (the convention of :mod:`simulator.latlong`);
+    #: at the pole ``frame[:, 1]`` (the convention of :mod:`simulator.io.latlong`);
     #: radiance along a direction = ``emission × texture_map[texel]``. None if untextured.
     texture_map: np.ndarray | None = None
 

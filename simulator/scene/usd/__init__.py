@@ -51,7 +51,7 @@ Lights
     A dome's ``texture:file`` must be a lat-long OpenEXR image
     (``texture:format`` ``latlong``, or ``automatic`` for a ``.exr`` file);
     it is read into ``Light.texture_map`` as luminance grey (BT.709 Y) and
-    scales the dome's emission texel by texel (see :mod:`simulator.latlong`
+    scales the dome's emission texel by texel (see :mod:`simulator.io.latlong`
     for the pixel <-> direction map). Portal and plugin lights are ignored
     with a warning.
 Geometry lights
@@ -132,17 +132,17 @@ import os
 
 from pxr import Usd, UsdGeom, UsdLux
 
-from ..model import Geometry, Light, Scene, Sensor
-from .context import _Context
+from simulator.scene.model import Geometry, Light, Scene, Sensor
+from simulator.scene.usd.context import _Context
 
 # The public constants live with the code that uses them and are re-exported
 # here; so are TESSELLATION_ATTR, MAX_SPHERE_FACES and DOME_TEXTURE_FORMATS.
-from .geometry import MAX_SPHERE_FACES, SPHERE_SEGMENTS, TESSELLATION_ATTR  # noqa: F401
-from .geometry import _GeometryBuilder, _read_gprim
-from .lights import DOME_TEXTURE_FORMATS, _read_light  # noqa: F401
-from .materials import DEFAULT_ALBEDO, _finish_warnings
-from .sensors import DEFAULT_PROBE_RESOLUTION, SENSOR_ATTR_PREFIX, SENSOR_KINDS, _is_sensor, _read_sensor
-from .stage import (
+from simulator.scene.usd.geometry import MAX_SPHERE_FACES, SPHERE_SEGMENTS, TESSELLATION_ATTR  # noqa: F401
+from simulator.scene.usd.geometry import _GeometryBuilder, _read_gprim
+from simulator.scene.usd.lights import DOME_TEXTURE_FORMATS, _read_light  # noqa: F401
+from simulator.scene.usd.materials import DEFAULT_ALBEDO, _finish_warnings
+from simulator.scene.usd.sensors import DEFAULT_PROBE_RESOLUTION, SENSOR_ATTR_PREFIX, SENSOR_KINDS, _is_sensor, _read_sensor
+from simulator.scene.usd.stage import (
     _check_options,
     _collect_composition_errors,
     _is_rendered,

@@ -12,8 +12,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from pxr import Usd, UsdGeom
 
-from ...errors import UserError
-from ...units import emission_pair
+from simulator.errors import UserError
+from simulator.units import emission_pair
 
 # How many prim paths a summary warning names before "and N more".
 _MAX_NAMED = 10

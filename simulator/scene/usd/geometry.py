@@ -14,12 +14,12 @@ import math
 import numpy as np
 from pxr import Usd, UsdGeom
 
-from ..model import Geometry
-from .context import _Context, _get
-from .lights import _geometry_light_emission, _geometry_light_surface, _is_geometry_light
-from .materials import _surface
-from .tessellation import _cube_polygons, _drop_zero_area, _sphere_polygons, _triangulate
-from .transforms import _world_affine
+from simulator.scene.model import Geometry
+from simulator.scene.usd.context import _Context, _get
+from simulator.scene.usd.lights import _geometry_light_emission, _geometry_light_surface, _is_geometry_light
+from simulator.scene.usd.materials import _surface
+from simulator.scene.usd.tessellation import _cube_polygons, _drop_zero_area, _sphere_polygons, _triangulate
+from simulator.scene.usd.transforms import _world_affine
 
 #: UsdGeom.Sphere tessellation: (longitude segments, latitude rings)
 SPHERE_SEGMENTS = (64, 32)

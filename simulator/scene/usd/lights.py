@@ -20,13 +20,13 @@ import os
 import numpy as np
 from pxr import Usd, UsdGeom, UsdLux
 
-from ...errors import UserError
-from ...units import luminance_grey
-from ..model import Light, LightKind
-from .context import _Context, _get, _not_uniform
-from .materials import _albedo, _grey, _material_inputs
-from .tessellation import _parallelogram_areas
-from .transforms import _axis_scales, _frame, _mean_scale, _world_affine
+from simulator.errors import UserError
+from simulator.units import luminance_grey
+from simulator.scene.model import Light, LightKind
+from simulator.scene.usd.context import _Context, _get, _not_uniform
+from simulator.scene.usd.materials import _albedo, _grey, _material_inputs
+from simulator.scene.usd.tessellation import _parallelogram_areas
+from simulator.scene.usd.transforms import _axis_scales, _frame, _mean_scale, _world_affine
 
 # Light schemas we read, in the order they are tested.
 _LIGHT_SCHEMAS = (
@@ -192,14 +192,14 @@ def _dome_texture_frame(ctx: _Context, prim: Usd.Prim, frame: np.ndarray) -> np.
 
 
 def _dome_texture_map(ctx: _Context, prim: Usd.Prim, path: str) -> np.ndarray:
-    """A dome's lat-long map as luminance grey, shape (H, W), float64 (see :mod:`simulator.latlong`).
+    """A dome's lat-long map as luminance grey, shape (H, W), float64 (see :mod:`simulator.io.latlong`).
 
     ``texture:format`` must be ``latlong``, or ``automatic`` for a ``.exr``
     file whose header does not declare a cube map. RGB becomes BT.709 Y (the
     weights of :func:`simulator.units.luminance_grey`); a grey ``Y`` image is
     used as is. Values must be finite and non-negative.
     """
-    from ... import exr
+    from simulator.io import exr
 
     attr = prim.GetAttribute("inputs:texture:format")
     fmt = str((attr.Get(ctx.time) if attr else None) or "automatic")

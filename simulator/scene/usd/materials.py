@@ -16,8 +16,8 @@ import math
 import numpy as np
 from pxr import Usd, UsdGeom, UsdShade
 
-from ...units import luminance_grey
-from .context import _Context, _get, _name_list, _not_uniform
+from simulator.units import luminance_grey
+from simulator.scene.usd.context import _Context, _get, _name_list, _not_uniform
 
 #: UsdPreviewSurface's fallback diffuseColor (0.18, 0.18, 0.18), used when nothing is authored
 DEFAULT_ALBEDO = 0.18

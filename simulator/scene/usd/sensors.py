@@ -14,9 +14,9 @@ import math
 import numpy as np
 from pxr import Usd
 
-from ..model import DEFAULT_PROBE_RESOLUTION, SENSOR_KINDS, Sensor, SensorKind
-from .context import _Context, _get
-from .transforms import _axis_scales, _unit, _world_affine
+from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SENSOR_KINDS, Sensor, SensorKind
+from simulator.scene.usd.context import _Context, _get
+from simulator.scene.usd.transforms import _axis_scales, _unit, _world_affine
 
 #: namespace of the attributes that make a prim a sensor
 SENSOR_ATTR_PREFIX = "probesim:sensor:"

@@ -16,9 +16,9 @@ from collections.abc import Iterator
 import numpy as np
 from pxr import Usd, UsdGeom
 
-from ...errors import UserError, require_file
-from ...units import SPECTRA
-from .context import _MAX_NAMED, _Context
+from simulator.errors import UserError, require_file
+from simulator.units import SPECTRA
+from simulator.scene.usd.context import _MAX_NAMED, _Context
 
 # (x, y, z)_Yup -> (x, -z, y)_Zup: +90 degrees about X.
 _Y_UP_TO_Z_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .transforms import _unit
+from simulator.scene.usd.transforms import _unit
 
 
 def _cube_polygons(size: float):

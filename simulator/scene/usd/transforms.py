@@ -12,7 +12,7 @@ import math
 import numpy as np
 from pxr import Usd
 
-from .context import _Context, _not_uniform
+from simulator.scene.usd.context import _Context, _not_uniform
 
 
 def _world_affine(ctx: _Context, prim: Usd.Prim) -> tuple[np.ndarray, np.ndarray]:

@@ -3,7 +3,7 @@
 Writers only: plain numbers in, file contents out (no Warp, no USD). Each
 function returns ``{path: content}`` where content is ``str`` (text),
 ``bytes``, or a callable that writes the file at the path it is given; the
-caller (:func:`simulator.results.write_outputs`) stages every file under a
+caller (:func:`simulator.io.results.write_outputs`) stages every file under a
 temporary name and renames them all together with the CSV.
 
 Grid maps, for every ``[[grid]]`` of a run
@@ -35,7 +35,7 @@ mean, maximum and uniformity (min/mean) in the title.
 Probe maps, for every probe of a run
 ------------------------------------
 ``<csv stem>.<probe>.exr``: a lat-long map of incident radiance (see
-:mod:`simulator.latlong` for the convention, :mod:`simulator.probe_engine`
+:mod:`simulator.io.latlong` for the convention, :mod:`simulator.engine.probes`
 for the frame), float32 channels
 
 =====================  ========  ==================================================
@@ -137,7 +137,7 @@ def grid_arrays(grid, values: dict[str, dict[str, float]]) -> dict[str, np.ndarr
 
     Parameters
     ----------
-    grid : simulator.config.GridConfig
+    grid : simulator.config.loader.GridConfig
     values : dict
         Sensor name → its CSV values (``irradiance_W_m2``, …).
 
@@ -201,8 +201,8 @@ def grid_outputs(csv_path: Path, grids: list, rows: list, meta: dict[str, str]) 
     Parameters
     ----------
     csv_path : Path
-    grids : list of simulator.config.GridConfig
-    rows : list of simulator.results.Reading
+    grids : list of simulator.config.loader.GridConfig
+    rows : list of simulator.io.results.Reading
         The run's rows (the grids' cells among them).
     meta : dict of str to str
         Run-wide metadata: ``seed``, ``method``, ``light_units``, ``stage``.
@@ -246,7 +246,7 @@ def grid_outputs(csv_path: Path, grids: list, rows: list, meta: dict[str, str]) 
 
 
 def _exr_writer(channels: dict[str, np.ndarray], header: dict[str, str], latlong: bool = False):
-    from .exr import write_channels
+    from simulator.io.exr import write_channels
 
     def write(path: Path) -> None:
         if latlong:
@@ -280,7 +280,7 @@ def probe_record(result, map_file: str) -> dict:
     ``delta_lights`` (the exact part of each integral that point and angle-0
     distant lights gave, same layout as above without errors).
     """
-    from .probe_engine import FACE_NAMES, SH_NAMES
+    from simulator.engine.probes import FACE_NAMES, SH_NAMES
 
     I, S, D = result.integrals, result.integrals_stderr, result.delta
     md_r, md_r_se = result.mean_direction(0)
@@ -325,7 +325,7 @@ def probe_outputs(csv_path: Path, results: list, meta: dict[str, str]) -> tuple[
     Parameters
     ----------
     csv_path : Path
-    results : list of simulator.probe_engine.ProbeResult
+    results : list of simulator.engine.probes.ProbeResult
     meta : dict of str to str
         Run-wide metadata: ``seed``, ``method``, ``light_units``, ``stage``,
         and optionally ``taken`` (grid names, whose files come first).

@@ -11,14 +11,14 @@ from pathlib import Path
 
 import numpy as np
 
-from . import __version__
-from .config import RunConfig
-from .engine import EngineResult
-from .errors import UserError
-from .maps import grid_outputs, probe_outputs
-from .plan import Plan, make_plan, probe_method
-from .results import Reading, probe_readings, readings_from, write_outputs
-from .scene.model import Scene, Sensor, SensorKind
+from simulator import __version__
+from simulator.config.loader import RunConfig
+from simulator.engine.driver import EngineResult
+from simulator.errors import UserError
+from simulator.io.maps import grid_outputs, probe_outputs
+from simulator.plan.planner import Plan, make_plan, probe_method
+from simulator.io.results import Reading, probe_readings, readings_from, write_outputs
+from simulator.scene.model import Scene, Sensor, SensorKind
 
 __all__ = ["RunOutput", "load_scene", "collect_sensors", "run"]
 
@@ -33,7 +33,7 @@ class RunOutput:
 
 
 def load_scene(cfg: RunConfig) -> Scene:
-    from .scene.usd import load_stage  # the stage reader: the only code that imports pxr
+    from simulator.scene.usd import load_stage  # the stage reader: the only code that imports pxr
 
     return load_stage(cfg.stage, light_units=cfg.light_units, radiometric_spectrum=cfg.radiometric_spectrum,
                       variants=cfg.variants)
@@ -91,8 +91,8 @@ def _sha256(path: Path) -> str:
 def _versions() -> dict:
     import numpy
 
-    from .engine import warp_version
-    from .scene.usd import usd_version
+    from simulator.engine.driver import warp_version
+    from simulator.scene.usd import usd_version
 
     return {
         "probesim": __version__,
@@ -110,16 +110,16 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     ----------
     cfg : RunConfig
     progress : callable, optional
-        Receives :class:`simulator.engine.Progress` after each batch.
+        Receives :class:`simulator.engine.driver.Progress` after each batch.
     log : callable
         Where one-line notes (warnings, the chosen method) go.
     """
-    from .engine import Engine  # imports warp
+    from simulator.engine.driver import Engine  # imports warp
 
     t0 = time.perf_counter()
     scene = load_scene(cfg)
     sensors = collect_sensors(cfg, scene)
-    # probes are read by their own kernel (simulator.probe_engine)
+    # probes are read by their own kernel (simulator.engine.probes)
     probes = [s for s in sensors if s.kind == SensorKind.PROBE]
     plain = [s for s in sensors if s.kind != SensorKind.PROBE]
     sim = cfg.simulation

@@ -12,7 +12,7 @@ __all__ = ["ProgressBar"]
 
 
 class ProgressBar:
-    """Callable fed :class:`simulator.engine.Progress` updates."""
+    """Callable fed :class:`simulator.engine.driver.Progress` updates."""
 
     def __init__(self, label: str, stream=None, min_interval_s: float = 0.2):
         self.label = label

@@ -3,7 +3,7 @@
 A matrix of estimators (``analytic``, ``light``, ``bsdf``, ``mis``, ``path``)
 × hard cases. Each case is a bundled stage in ``stages/stability/`` with its
 config in ``configs/stability/``, and a reference answer per sensor from the
-closed forms of :mod:`simulator.closed_forms` (see :data:`CASES`):
+closed forms of :mod:`simulator.reference.closed_forms` (see :data:`CASES`):
 
 =================  ==========================================================
 case               what it stresses
@@ -25,7 +25,7 @@ Every cell runs one estimator on one case for a fixed wall-clock budget
 (samples doubling from batch to batch, independent seeds merged), then
 reports, over the case's sensors, the worst bias in standard errors, the
 RMS relative error, the largest relative standard error, any NaN/Inf samples
-(:attr:`simulator.engine.EngineResult.non_finite`) and a :func:`verdict`.
+(:attr:`simulator.engine.driver.EngineResult.non_finite`) and a :func:`verdict`.
 Readings are compared in the radiometric channel (the stages are read with
 ``light_units = "radiometric"``).
 """
@@ -42,9 +42,9 @@ from typing import Callable
 
 import numpy as np
 
-from . import closed_forms as cf
-from .bundled import configs_dir as bundled_configs_dir
-from .scene.model import Light, LightKind, Scene, Sensor, SensorKind
+from simulator.reference import closed_forms as cf
+from simulator.bundled import configs_dir as bundled_configs_dir
+from simulator.scene.model import Light, LightKind, Scene, Sensor, SensorKind
 
 __all__ = [
     "BIAS_SIGMAS",
@@ -357,7 +357,7 @@ def run_cell(
     with seeds ``seed, seed+1, …`` (independent streams), pooled, until the
     next batch would overrun the budget.
     """
-    from .plan import analytic_refusal
+    from simulator.plan.planner import analytic_refusal
 
     sensors = engine.sensors
     if method == "analytic":
@@ -396,9 +396,9 @@ def run_cell(
 
 def load_case(name: str, device: str = "cpu"):
     """``(engine, truth, scale)`` for a bundled case."""
-    from .config import load_config
-    from .engine import Engine
-    from .run import collect_sensors, load_scene
+    from simulator.config.loader import load_config
+    from simulator.engine.driver import Engine
+    from simulator.pipeline import collect_sensors, load_scene
 
     cfg = load_config(configs_dir() / f"{name}.toml")
     scene = load_scene(cfg)
@@ -513,7 +513,7 @@ def _heatmap(cells: list[Cell], path: Path, title: str) -> None:
 def write_stability(cells: list[Cell], out_dir: Path, title: str) -> list[Path]:
     """Write ``stability.csv`` (one row per cell), ``stability_sensors.csv``
     (one per sensor and method) and the heat map ``stability.png``."""
-    from .results import _atomic_write_all
+    from simulator.io.results import _atomic_write_all
 
     out_dir = Path(out_dir)
     a, b = _csv(cells)
@@ -538,7 +538,7 @@ def main_stability(out_dir: Path, quick: bool = False, device: str = "cpu", seco
     t0 = time.perf_counter()
     log(f"stability: {len(CASES)} cases x {len(METHODS)} methods, {budget:g} s per cell")
     cells = run_stability(seconds=budget, device=device, log=log)
-    from .bench import processor_name
+    from simulator.commands.bench import processor_name
 
     title = f"probesim stability: {budget:g} s per cell, {device} ({processor_name()})"
     paths = write_stability(cells, out_dir, title)

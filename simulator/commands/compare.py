@@ -10,7 +10,7 @@ Figures (B is the reference):
 
 - relative RMS error ‖A − B‖₂ / ‖B‖₂ over pixels (unweighted);
 - the largest absolute error, its pixel (row from the top, column) and, for
-  a lat-long map, the direction of that pixel's centre (simulator.latlong
+  a lat-long map, the direction of that pixel's centre (simulator.io.latlong
   convention; in the world frame when the file records ``probesim:frame``);
 - PSNR and SSIM (scikit-image) of log10 values, each floored at 10⁻⁶ × the
   largest |B| so that black pixels stay finite; the data range is that of
@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import UserError
+from simulator.errors import UserError
 
 __all__ = ["Comparison", "compare_files", "compare_arrays", "format_comparison"]
 
@@ -165,7 +165,7 @@ def compare_files(path_a: str | os.PathLike, path_b: str | os.PathLike, channel:
         A file is missing or unreadable, the channel is absent, or the
         images differ in size.
     """
-    from .exr import read_channels, read_header
+    from simulator.io.exr import read_channels, read_header
 
     pa, pb = os.fspath(path_a), os.fspath(path_b)
     a, b = read_channels(pa), read_channels(pb)
@@ -181,7 +181,7 @@ def compare_files(path_a: str | os.PathLike, path_b: str | os.PathLike, channel:
     ha, hb = read_header(pa), read_header(pb)
     direction = lonlat = None
     if _is_latlong(ha, qa.shape) or _is_latlong(hb, qb.shape):
-        from .latlong import latlong_uv_to_direction
+        from simulator.io.latlong import latlong_uv_to_direction
 
         h, w = qa.shape
         r, c = f["max_pixel"]

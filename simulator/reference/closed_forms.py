@@ -1208,7 +1208,7 @@ def latlong_rows_illuminance(row_luminance, vertical=False):
 
     References
     ----------
-    The lat-long convention of ``simulator.latlong`` (OpenEXR environment
+    The lat-long convention of ``simulator.io.latlong`` (OpenEXR environment
     maps): rows of equal angular height from the pole.
     """
     row_luminance = np.asarray(row_luminance, float)

@@ -17,8 +17,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import UserError
-from .scene.model import Sensor, SensorKind
+from simulator.errors import UserError
+from simulator.scene.model import Sensor, SensorKind
 
 __all__ = ["COLUMNS", "PROBE_COLUMNS", "Reading", "readings_from", "probe_readings", "write_outputs", "format_table"]
 
@@ -36,7 +36,7 @@ COLUMNS = (
 #: columns only a probe fills: scalar irradiance (fluence rate, ∫L dω over the
 #: sphere) and the unit mean direction of arrival (normalised ∫L·ω dω,
 #: radiometric) with its angular standard error; the six face irradiances and
-#: SH coefficients go to ``<csv stem>.probes.json`` (see simulator.maps)
+#: SH coefficients go to ``<csv stem>.probes.json`` (see simulator.io.maps)
 PROBE_COLUMNS = COLUMNS[COLUMNS.index("scalar_irradiance_W_m2") : COLUMNS.index("samples")]
 
 _KIND_NAMES = {
@@ -83,7 +83,7 @@ def readings_from(sensors: list[Sensor], mean: np.ndarray, stderr: np.ndarray, s
 
 
 def probe_readings(results, method: str) -> list[Reading]:
-    """Rows of probes from :class:`simulator.probe_engine.ProbeResult` objects.
+    """Rows of probes from :class:`simulator.engine.probes.ProbeResult` objects.
 
     A probe fills :data:`PROBE_COLUMNS` only; ``samples`` counts directions.
     """
@@ -169,7 +169,7 @@ def _atomic_write_all(files: dict) -> None:
 def write_outputs(csv_path: Path, rows: list[Reading], record: dict, extra: dict | None = None) -> Path:
     """Write the CSV, its run record (``<csv stem>.run.json``) and ``extra``
     files (path → text, bytes or a writer callable, e.g. from
-    :mod:`simulator.maps`) atomically, all renamed into place together.
+    :mod:`simulator.io.maps`) atomically, all renamed into place together.
 
     Returns the run record's path.
     """

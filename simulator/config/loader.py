@@ -560,7 +560,7 @@ def _sensor(ck: _Checker, table: dict, index: int) -> Sensor:
             if res[0] * res[1] > MAX_PROBE_PIXELS:
                 raise ck.fail(rkey, f"{res[0]} x {res[1]} pixels is more than the {MAX_PROBE_PIXELS} a probe map may hold")
         # a probe has no facing; normal and up are placeholders (the map's
-        # frame is the world's, see simulator.probe_engine)
+        # frame is the world's, see simulator.engine.probes)
         return Sensor(
             name=name, kind=kind, position=position, normal=np.array([0.0, 0.0, 1.0]),
             up=np.array([0.0, 1.0, 0.0]), resolution=(int(res[0]), int(res[1])), source=key,

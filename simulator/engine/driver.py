@@ -22,9 +22,9 @@ from typing import Callable
 
 import numpy as np
 
-from .errors import UserError
-from .scene.model import Light, LightKind, Scene, Sensor, SensorKind
-from .stats import RunningStats, z_for_confidence
+from simulator.errors import UserError
+from simulator.scene.model import Light, LightKind, Scene, Sensor, SensorKind
+from simulator.engine.stats import RunningStats, z_for_confidence
 
 __all__ = ["COMPONENTS", "METHOD_FLAGS", "cuda_available", "warp_version", "Engine", "EngineResult", "Progress", "resolve_device"]
 
@@ -163,7 +163,7 @@ class Engine:
 
     def __init__(self, scene: Scene, sensors: list[Sensor], device: str = "cpu", threads: int = 0):
         wp = _warp()
-        from .kernels import estimators as K
+        from simulator.kernels import estimators as K
 
         self._K = K
         self.device = resolve_device(device)
@@ -271,13 +271,13 @@ class Engine:
     def _upload_dome_map(self, wp, r, grey: np.ndarray) -> None:
         """Put a dome's lat-long map and its sampling CDFs on the light record.
 
-        Texels are importance-sampled ∝ value × sinθ (simulator.latlong); the
+        Texels are importance-sampled ∝ value × sinθ (simulator.io.latlong); the
         arrays are kept alive here because the device record holds only
         their pointers. The CDFs are float32: a texel whose share of its row
         (or a row whose share of the map) is below float32 resolution (~6e-8)
         may never be drawn by light sampling; bsdf and mis still see it.
         """
-        from . import latlong
+        from simulator.io import latlong
 
         grey = np.asarray(grey, np.float64)
         h, w = grey.shape
@@ -390,9 +390,9 @@ class Engine:
     def run_probes(self, probes: list[Sensor], method: str, **kwargs) -> list:
         """Lat-long maps and sphere integrals of PROBE sensors (which
         :meth:`run` does not read) on this engine's scene and device; see
-        :func:`simulator.probe_engine.run_probes` for the arguments and the
+        :func:`simulator.engine.probes.run_probes` for the arguments and the
         estimator. Returns a list of ``ProbeResult``."""
-        from .probe_engine import run_probes
+        from simulator.engine.probes import run_probes
 
         return run_probes(self, probes, method, **kwargs)
 

@@ -11,8 +11,8 @@ import os
 import sys
 import time
 
-from . import __version__
-from .errors import UserError
+from simulator import __version__
+from simulator.errors import UserError
 
 __all__ = ["main"]
 
@@ -72,7 +72,7 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _cmd_chart(args) -> int:
-    from .chart import main_chart
+    from simulator.commands.chart import main_chart
 
     return main_chart(args.configs, args.out, args.seeds, args.max_seconds, args.device, log=lambda m: print(m, flush=True))
 
@@ -80,7 +80,7 @@ def _cmd_chart(args) -> int:
 def _cmd_stability(args) -> int:
     from pathlib import Path
 
-    from .stability import main_stability
+    from simulator.commands.stability import main_stability
 
     if args.seconds is not None and not (args.seconds > 0 and math.isfinite(args.seconds)):
         raise UserError(f"--seconds: must be a positive number of seconds, got {args.seconds}")
@@ -89,7 +89,7 @@ def _cmd_stability(args) -> int:
 
 
 def _cmd_verify(args) -> int:
-    from .verify import CASES, format_header, format_row, format_summary, run_suite, write_csv
+    from simulator.commands.verify import CASES, format_header, format_row, format_summary, run_suite, write_csv
 
     cases = tuple(c for c in CASES if args.k is None or args.k in c.name)
     if not cases:
@@ -107,16 +107,16 @@ def _cmd_verify(args) -> int:
 
 
 def _cmd_compare(args) -> int:
-    from .compare import compare_files, format_comparison
+    from simulator.commands.compare import compare_files, format_comparison
 
     print(format_comparison(compare_files(args.a, args.b, channel=args.channel)))
     return 0
 
 
 def _cmd_plan(args) -> int:
-    from .config import apply_overrides, load_config
-    from .plan import format_plan, make_plan
-    from .run import collect_sensors, load_scene
+    from simulator.config.loader import apply_overrides, load_config
+    from simulator.plan.planner import format_plan, make_plan
+    from simulator.pipeline import collect_sensors, load_scene
 
     cfg = apply_overrides(load_config(args.config), method=args.method)
     scene = load_scene(cfg)
@@ -130,7 +130,7 @@ def _cmd_plan(args) -> int:
 def _cmd_bench(args) -> int:
     from pathlib import Path
 
-    from .bench import default_configs, format_bench, run_bench
+    from simulator.commands.bench import default_configs, format_bench, run_bench
 
     configs = [Path(c) for c in args.configs] or default_configs()
     if args.samples < 1:
@@ -152,10 +152,10 @@ def _cmd_bench(args) -> int:
 
 
 def _cmd_run(args) -> int:
-    from .config import apply_overrides, load_config
-    from .progress import ProgressBar
-    from .results import format_table
-    from .run import run
+    from simulator.config.loader import apply_overrides, load_config
+    from simulator.commands.progress import ProgressBar
+    from simulator.io.results import format_table
+    from simulator.pipeline import run
 
     cfg = load_config(args.config)
     cfg = apply_overrides(

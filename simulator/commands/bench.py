@@ -21,10 +21,10 @@ from pathlib import Path
 
 import numpy as np
 
-from .bundled import bundled_configs
-from .config import load_config
-from .plan import MC_METHODS, analytic_refusal
-from .run import collect_sensors, load_scene
+from simulator.bundled import bundled_configs
+from simulator.config.loader import load_config
+from simulator.plan.planner import MC_METHODS, analytic_refusal
+from simulator.pipeline import collect_sensors, load_scene
 
 __all__ = ["BenchRow", "default_configs", "run_bench", "format_bench", "processor_name"]
 
@@ -88,7 +88,7 @@ def run_bench(configs: list[Path], device: str = "cpu", samples: int = 4096, cap
     Returns the rows and a dict with the device, processor, threads and the
     1-thread vs all-threads speed-up.
     """
-    from .engine import Engine  # imports warp
+    from simulator.engine.driver import Engine  # imports warp
 
     rows: list[BenchRow] = []
     info: dict = {"processor": processor_name(), "cores": os.cpu_count()}

@@ -6,7 +6,7 @@ for it is listed with the reason and not run) it climbs a ladder of budgets,
 samples per sensor doubling from 16 until a run takes ``max_seconds``, with
 several independent seeds at each rung, and measures:
 
-- the wall time of each run (:attr:`simulator.engine.EngineResult.wall_s`,
+- the wall time of each run (:attr:`simulator.engine.driver.EngineResult.wall_s`,
   after a warm-up run, so kernel compilation is not timed);
 - the relative RMS error over the config's sensors,
   ``sqrt(mean_i ((estimate_i − reference_i)/reference_i)²)``, radiometric
@@ -56,9 +56,9 @@ from pathlib import Path
 
 import numpy as np
 
-from . import __version__
-from .bundled import bundled_configs
-from .errors import UserError
+from simulator import __version__
+from simulator.bundled import bundled_configs
+from simulator.errors import UserError
 
 __all__ = [
     "CSV_COLUMNS",
@@ -215,7 +215,7 @@ def _samples_text(samples) -> str:
 
 def _reference(cfg, engine, sensors, max_seconds: float, cache_dir: Path, log) -> tuple[np.ndarray, np.ndarray, str]:
     """Per-sensor reference (mean, stderr, radiometric) and how it was made."""
-    from .plan import analytic_refusal
+    from simulator.plan.planner import analytic_refusal
 
     sim = cfg.simulation
     if sim.component == "total" and all(analytic_refusal(engine.scene, s) is None for s in sensors):
@@ -250,8 +250,8 @@ def _reference(cfg, engine, sensors, max_seconds: float, cache_dir: Path, log) -
 
 
 def _skip_reason(method: str, scene, sensors, component: str) -> str:
-    from .engine import METHOD_FLAGS
-    from .plan import analytic_refusal
+    from simulator.engine.driver import METHOD_FLAGS
+    from simulator.plan.planner import analytic_refusal
 
     if method == "analytic":
         if component != "total":
@@ -278,8 +278,8 @@ def _adaptive_times(engine, scene, sensors, sim, methods: list[str], log) -> dic
     sensor (the plan's mask) for every method alike."""
     from dataclasses import replace
 
-    from .plan import make_plan
-    from .run import run_plan
+    from simulator.plan.planner import make_plan
+    from simulator.pipeline import run_plan
 
     plan = make_plan(scene, sensors, "auto", sim.component)
     engine.set_light_mask(plan.light_mask([l.name for l in scene.lights]))
@@ -319,10 +319,10 @@ def chart_config(
     the module docstring). A ladder stops at the first rung whose median run
     takes ``max_seconds``, or at ``max_budget`` samples per sensor (a fixed
     ladder, whatever the machine: what the tests use)."""
-    from .config import load_config
-    from .engine import Engine
-    from .run import collect_sensors, load_scene
-    from .scene.model import SensorKind
+    from simulator.config.loader import load_config
+    from simulator.engine.driver import Engine
+    from simulator.pipeline import collect_sensors, load_scene
+    from simulator.scene.model import SensorKind
 
     cfg = load_config(path)
     scene = load_scene(cfg)
@@ -436,7 +436,7 @@ def _plot(chart: ConfigChart, path: Path) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from .results import _atomic_write_all
+    from simulator.io.results import _atomic_write_all
 
     fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=100)
     plotted = [c for c in chart.curves if not c.skipped and c.errors]
@@ -543,7 +543,7 @@ def run_chart(
     methods=METHODS, max_budget: int = MAX_BUDGET, log=print,
 ) -> list[ConfigChart]:  # fmt: skip
     """Chart each config; write ``chart.csv`` and the PNGs into ``out_dir``."""
-    from .results import _atomic_write_all
+    from simulator.io.results import _atomic_write_all
 
     if seeds < 1:
         raise UserError(f"--seeds: must be >= 1, got {seeds}")
@@ -565,7 +565,7 @@ def run_chart(
 
 def main_chart(configs: list[str], out: str, seeds: int, max_seconds: float, device: str, log=print) -> int:
     """The ``probesim chart`` command."""
-    from .bench import processor_name
+    from simulator.commands.bench import processor_name
 
     t0 = time.perf_counter()
     paths = [Path(c) for c in configs] or default_configs()

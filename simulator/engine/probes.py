@@ -24,12 +24,12 @@ next-event estimation with a shadow ray when the method samples lights
 map never shows a delta light: it holds what direction sampling sees.
 
 Frame. Directions in the map follow the OpenEXR lat-long convention
-(:mod:`simulator.latlong`) in the frame an *untransformed* DomeLight of the
+(:mod:`simulator.io.latlong`) in the frame an *untransformed* DomeLight of the
 same stage has: the world frame for a Z-up stage, the Y-up stage's axes for
 a Y-up one. So the map can be given straight back to that stage as a
 DomeLight's ``texture:file``. The integrals are in the world frame (Z up).
 
-Only this module, :mod:`simulator.engine` and ``simulator.kernels`` import
+Only this module, :mod:`simulator.engine.driver` and ``simulator.kernels`` import
 ``warp``.
 """
 
@@ -43,9 +43,9 @@ from typing import Callable
 
 import numpy as np
 
-from .errors import UserError
-from .scene.model import Sensor, SensorKind
-from .stats import RunningStats, z_for_confidence
+from simulator.errors import UserError
+from simulator.scene.model import Sensor, SensorKind
+from simulator.engine.stats import RunningStats, z_for_confidence
 
 __all__ = [
     "FACE_NAMES",
@@ -70,7 +70,7 @@ MIN_PASSES = 8
 PASS_BLOCK = 16
 #: kernel threads per launch: bounds the float64 sums held at once (~900 B each)
 THREADS_PER_LAUNCH = 1 << 16
-#: most pixels in a probe map (keep equal to simulator.config.MAX_PROBE_PIXELS)
+#: most pixels in a probe map (keep equal to simulator.config.loader.MAX_PROBE_PIXELS)
 MAX_PROBE_PIXELS = 1 << 19
 
 _Q = 22  # integrands per sample, see simulator.kernels.probe (19 reported + 3 for covariances)
@@ -108,7 +108,7 @@ def _lonlat(d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 def latlong_layout(width: int, height: int) -> tuple[float, float, float, float]:
     """Longitude and latitude of pixel edges in the shared lat-long convention.
 
-    Reads the convention off :func:`simulator.latlong.latlong_uv_to_direction`
+    Reads the convention off :func:`simulator.io.latlong.latlong_uv_to_direction`
     (u across the width, v down the height, both in [0, 1]) so that the
     probe's pixels are exactly the pixels a textured DomeLight reads.
 
@@ -118,7 +118,7 @@ def latlong_layout(width: int, height: int) -> tuple[float, float, float, float]
         Pixel (i, j) spans longitudes ``[lon0 + i·dlon, lon0 + (i+1)·dlon]``
         and latitudes ``[lat0 + j·dlat, lat0 + (j+1)·dlat]``, radians.
     """
-    from .latlong import latlong_uv_to_direction
+    from simulator.io.latlong import latlong_uv_to_direction
 
     def lonlat(u, v):
         return _lonlat(np.asarray(latlong_uv_to_direction(np.array([u, v], float)), float))
@@ -131,17 +131,17 @@ def latlong_layout(width: int, height: int) -> tuple[float, float, float, float]
     slope_lat = (b75 - b25) / 0.5
     lat0 = float(b25 - 0.25 * slope_lat)
     if not (abs(abs(slope_lon) - 2 * math.pi) < 1e-9 and abs(abs(slope_lat) - math.pi) < 1e-9):
-        raise AssertionError("simulator.latlong is not an equirectangular map over the whole sphere")
+        raise AssertionError("simulator.io.latlong is not an equirectangular map over the whole sphere")
     return lon0, float(slope_lon) / width, lat0, float(slope_lat) / height
 
 
 def pixel_solid_angles(width: int, height: int) -> np.ndarray:
     """Solid angle of every lat-long pixel, sr, shape (height, width).
 
-    Ω = |Δlon|·|sin lat_b − sin lat_a| (:func:`simulator.latlong.texel_solid_angles`);
+    Ω = |Δlon|·|sin lat_b − sin lat_a| (:func:`simulator.io.latlong.texel_solid_angles`);
     the pixels tile the sphere (Σ = 4π).
     """
-    from .latlong import texel_solid_angles
+    from simulator.io.latlong import texel_solid_angles
 
     return np.repeat(texel_solid_angles(width, height)[:, None], width, axis=1)
 
@@ -269,7 +269,7 @@ def _launch_passes(engine, K, rec, params, n_pix: int, first_pass: int, n_passes
 
     Returns per-pixel (counts, means, m2s) of shape (P,), (P, 38), (P, 38)
     and the number of non-finite samples."""
-    from .engine import _warp
+    from simulator.engine.driver import _warp
 
     wp = _warp()
     blocks = (n_passes + PASS_BLOCK - 1) // PASS_BLOCK
@@ -343,7 +343,7 @@ def run_probes(
 
     Parameters
     ----------
-    engine : simulator.engine.Engine
+    engine : simulator.engine.driver.Engine
         The scene, resident on its device.
     probes : list of Sensor
         Sensors of kind PROBE.
@@ -357,26 +357,26 @@ def run_probes(
         Random-stream index of each probe (its index among all the run's
         sensors); default ``range(len(probes))``.
     rel_error, abs_error, max_samples, time_limit_s
-        Adaptive stopping as for :meth:`simulator.engine.Engine.run`, applied
+        Adaptive stopping as for :meth:`simulator.engine.driver.Engine.run`, applied
         to the probe's scalar irradiance (both channels); ``max_samples``
         caps the directions per probe. ``time_limit_s`` counts from the start
         of this call; a probe past it still finishes its current batch (at
         least :data:`MIN_PASSES` passes).
     max_depth, component
-        As for :meth:`simulator.engine.Engine.run`.
+        As for :meth:`simulator.engine.driver.Engine.run`.
     progress : callable, optional
-        Receives :class:`simulator.engine.Progress` after each batch.
+        Receives :class:`simulator.engine.driver.Progress` after each batch.
 
     Returns
     -------
     list of ProbeResult
     """
-    from .engine import METHOD_FLAGS, Progress
+    from simulator.engine.driver import METHOD_FLAGS, Progress
 
     if method not in METHOD_FLAGS:
         raise UserError(f"method {method!r} cannot read probes (use light, bsdf, mis, path or auto)")
-    from .engine import _warp
-    from .kernels import probe as K
+    from simulator.engine.driver import _warp
+    from simulator.kernels import probe as K
 
     wp = _warp()
     wp.load_module(K, device=engine.device)

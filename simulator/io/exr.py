@@ -12,7 +12,7 @@ What probesim needs, in four calls:
   maps), atomically: a reader never sees half a file, and a failed write
   leaves no file behind.
 
-Lat-long maps follow :mod:`simulator.latlong` (the OpenEXR orientation).
+Lat-long maps follow :mod:`simulator.io.latlong` (the OpenEXR orientation).
 
 Only the first part of a multi-part file is read. Half and uint channels are
 converted to float32. Problems with a file are :class:`~simulator.errors.UserError`
@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import UserError, require_file
+from simulator.errors import UserError, require_file
 
 __all__ = ["read_rgb", "read_header", "read_channels", "write_channels", "RESERVED_HEADER_KEYS"]
 

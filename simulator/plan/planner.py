@@ -27,8 +27,8 @@ from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
-from .errors import UserError
-from .scene.model import LightKind, Scene, Sensor, SensorKind
+from simulator.errors import UserError
+from simulator.scene.model import LightKind, Scene, Sensor, SensorKind
 
 __all__ = ["MC_METHODS", "SensorPlan", "Plan", "make_plan", "probe_method", "analytic_refusal", "lights_behind", "format_plan"]
 

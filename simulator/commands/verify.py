@@ -3,13 +3,13 @@
 Every case is a bundled config (``configs/*.toml``) on a bundled stage
 (``stages/*.usda``), so every case is also an example a user can run with
 ``probesim run``. The suite reads each config with
-:func:`simulator.config.load_config`, the stage with
-:func:`simulator.run.load_scene`, collects the sensors with
-:func:`simulator.run.collect_sensors`, traces them with
-:class:`simulator.engine.Engine`, and compares each reading with its
+:func:`simulator.config.loader.load_config`, the stage with
+:func:`simulator.pipeline.load_scene`, collects the sensors with
+:func:`simulator.pipeline.collect_sensors`, traces them with
+:class:`simulator.engine.driver.Engine`, and compares each reading with its
 expected value. It writes none of the configs' CSVs.
 
-Expected values are computed here, from :mod:`simulator.closed_forms` and
+Expected values are computed here, from :mod:`simulator.reference.closed_forms` and
 the light, surface and sensor parameters the stage reader produced; each
 function names its formula and source. The only typed-in numbers are the
 published CIE 171:2006 table values, shown beside the exact ones for
@@ -47,11 +47,11 @@ from typing import Callable
 
 import numpy as np
 
-from . import closed_forms as cf
-from .config import RunConfig, load_config
-from .bundled import configs_dir as bundled_configs_dir
-from .errors import UserError
-from .scene.model import Light, LightKind, Scene, Sensor, SensorKind
+from simulator.reference import closed_forms as cf
+from simulator.config.loader import RunConfig, load_config
+from simulator.bundled import configs_dir as bundled_configs_dir
+from simulator.errors import UserError
+from simulator.scene.model import Light, LightKind, Scene, Sensor, SensorKind
 
 __all__ = [
     "REL_TOL",
@@ -124,7 +124,7 @@ class CaseContext:
         """The scene of another bundled config, read in this case's light units."""
         key = (config_name, self.cfg.light_units)
         if key not in self._refs:
-            from .run import load_scene
+            from simulator.pipeline import load_scene
 
             ref = load_config(self.configs_dir / config_name)
             self._refs[key] = load_scene(dataclasses.replace(ref, light_units=self.cfg.light_units))
@@ -785,7 +785,7 @@ def default_configs_dir() -> Path:
 
 
 def _load_case(case: Case, configs_dir: Path):
-    from .run import collect_sensors, load_scene
+    from simulator.pipeline import collect_sensors, load_scene
 
     cfg = load_config(configs_dir / case.config)
     if case.light_units is not None:
@@ -823,7 +823,7 @@ def _scale(case: Case, s: Sensor) -> float:
 
 def run_case(case: Case, *, quick: bool = False, device: str = "cpu", configs_dir: Path | None = None) -> list[Row]:
     """Trace one case through the normal pipeline and judge every receiver."""
-    from .engine import Engine  # imports warp
+    from simulator.engine.driver import Engine  # imports warp
 
     configs_dir = configs_dir or default_configs_dir()
     cfg, scene, sensors = _load_case(case, configs_dir)
@@ -976,6 +976,6 @@ def csv_text(rows: list[Row]) -> str:
 
 def write_csv(path: Path, rows: list[Row]) -> None:
     """Write the table as CSV atomically (temporary sibling, then rename)."""
-    from .results import _atomic_write_all
+    from simulator.io.results import _atomic_write_all
 
     _atomic_write_all({Path(path): csv_text(rows)})

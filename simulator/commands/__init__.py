@@ -1,0 +1,1 @@
+"""The ``probesim`` command line and one module per command."""

@@ -1,0 +1,1 @@
+"""Files in and out: the CSV and run record, EXR, lat-long maps, grid and probe maps."""
