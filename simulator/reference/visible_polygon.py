@@ -46,12 +46,14 @@ from simulator.reference.closed_forms import polygon_irradiance
 
 __all__ = ["visible_polygon_irradiance", "lambert_rings"]
 
-#: relative slack, × the scene's length scale, by which an occluder must stand
-#: off the light's plane to count: a surface *in* the light's plane (a ceiling
-#: around a flush luminaire) hides nothing from a receiver in front of it,
-#: while a shade 0.1 mm below a lamp 300 m from the origin still does
-#: (float64 points carry ~1e-16 relative error, so 1e-12 leaves a wide margin).
-PLANE_SLACK = 1e-12
+#: relative slack, × the scene's coordinate magnitude, within which a surface
+#: counts as lying *in* the light's plane or the receiver's (and so hides
+#: nothing): stage points are float32 (``point3f``), each coordinate rounded
+#: by up to 2⁻²⁴ of its magnitude, so two surfaces authored in one plane may
+#: differ by 2⁻²³ of it. A ceiling around a flush luminaire, or a sofa top a
+#: sensor lies on, is then in plane; a shade 0.1 mm below a lamp 300 m from
+#: the origin (slack 36 µm there) still blocks it.
+PLANE_SLACK = 2.0**-23
 
 
 def _plane_frame(light: np.ndarray):
