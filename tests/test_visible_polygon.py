@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from simulator.reference.closed_forms import polygon_irradiance, rect_irradiance_parallel, rect_light_vertices
-from simulator.reference.visible_polygon import lambert_rings, visible_polygon_irradiance
+from simulator.reference.visible_polygon import clip_polygons, lambert_rings, visible_polygon_irradiance
 
 L = 1000.0  # cd/m²
 H = 2.0  # light height, m
@@ -142,3 +142,21 @@ def test_lambert_rings_matches_closed_form():
     got = lambert_rings([ring] * 40, np.arange(40), P, N)
     ref = np.array([float(polygon_irradiance(1.0, ring, P[i], N[i])) for i in range(40)])
     np.testing.assert_allclose(got, ref, rtol=1e-12, atol=1e-15)
+
+
+def test_clip_polygons_matches_halfplane_area():
+    """Vectorised Sutherland–Hodgman: random triangles in the plane z = 0 cut by
+    x < c keep exactly the area GEOS gives for their intersection with that
+    half-plane (an independent 2-D clipper), and nothing on the far side."""
+    import shapely
+
+    rng = np.random.default_rng(7)
+    T = rng.uniform(-1, 1, (300, 3, 2))
+    V = np.concatenate([T, np.zeros((300, 3, 1))], axis=2)
+    cut = rng.uniform(-0.5, 0.5, 300)
+    W, n = clip_polygons(V, np.full(300, 3), cut[:, None] - V[:, :, 0])
+    assert np.all(W[:, :, 0] <= cut[:, None] + 1e-12)
+    for i in range(300):
+        ref = shapely.Polygon(T[i]).intersection(shapely.box(-5, -5, cut[i], 5)).area
+        got = shapely.Polygon(W[i, : n[i], :2]).area if n[i] >= 3 else 0.0
+        assert got == pytest.approx(ref, rel=1e-9, abs=1e-14)

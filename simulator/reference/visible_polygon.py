@@ -44,7 +44,7 @@ import numpy as np
 
 from simulator.reference.closed_forms import polygon_irradiance
 
-__all__ = ["visible_polygon_irradiance", "lambert_rings"]
+__all__ = ["visible_polygon_irradiance", "lambert_rings", "clip_polygons"]
 
 #: relative slack, × the scene's coordinate magnitude, within which a surface
 #: counts as lying *in* the light's plane or the receiver's (and so hides
@@ -71,17 +71,74 @@ def _plane_frame(light: np.ndarray):
     return c, m, e1, e2
 
 
-def _clip_halfspace(poly: np.ndarray, s: np.ndarray) -> np.ndarray:
-    """Sutherland–Hodgman: the part of ``poly`` where the signed value ``s`` > 0."""
-    out = []
-    k = len(poly)
-    for i in range(k):
-        a, b, sa, sb = poly[i - 1], poly[i], s[i - 1], s[i]
-        if (sa > 0.0) != (sb > 0.0):
-            out.append(a + (b - a) * (sa / (sa - sb)))
-        if sb > 0.0:
-            out.append(b)
-    return np.asarray(out).reshape(-1, 3)
+def clip_polygons(V: np.ndarray, count: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Sutherland–Hodgman on many convex polygons at once: keep where ``s > 0``.
+
+    Parameters
+    ----------
+    V : ndarray, shape (M, K, 3)
+        Vertices; row ``i`` uses its first ``count[i]`` entries.
+    count : ndarray of int, shape (M,)
+    s : ndarray, shape (M, K)
+        A signed value, linear in the point (a plane's signed distance), at each vertex.
+
+    Returns
+    -------
+    (W, count_out) : ndarray (M, K + 1, 3), ndarray (M,)
+        The clipped polygons (a convex K-gon cut by a plane has at most K + 1
+        vertices), padded with their last vertex.
+    """
+    M, K = V.shape[:2]
+    idx = np.arange(K)
+    valid = idx[None, :] < count[:, None]
+    prev = (idx[None, :] - 1) % np.maximum(count[:, None], 1)  # wraps within each row's own count
+    a = np.take_along_axis(V, prev[:, :, None], axis=1)
+    sa = np.take_along_axis(s, prev, axis=1)
+    sb = s
+    inside_a, inside_b = sa > 0.0, sb > 0.0
+    cross = valid & (inside_a != inside_b)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.where(cross, sa / (sa - sb), 0.0)
+    q = a + (V - a) * t[:, :, None]
+    # per edge: [intersection if it crosses, the end vertex if inside], in order
+    pts = np.stack([q, V], axis=2).reshape(M, 2 * K, 3)
+    keep = np.stack([cross, valid & inside_b], axis=2).reshape(M, 2 * K)
+    order = np.argsort(~keep, axis=1, kind="stable")
+    pts = np.take_along_axis(pts, order[:, :, None], axis=1)[:, : K + 1]
+    n_out = keep.sum(axis=1)
+    last = np.take_along_axis(pts, np.maximum(n_out - 1, 0)[:, None, None].repeat(3, axis=2), axis=1)
+    pad = np.arange(K + 1)[None, :] >= n_out[:, None]
+    pts = np.where(pad[:, :, None], last, pts)
+    return pts, np.minimum(n_out, K + 1)
+
+
+def _rings_of(geoms: np.ndarray, owners: np.ndarray):
+    """Flatten polygons to rings: (list of (k, 2) coordinate arrays, owner per ring, sign per ring)."""
+    import shapely
+
+    parts, part_idx = shapely.get_parts(geoms, return_index=True)
+    parts_owner = owners[part_idx]
+    poly = shapely.get_type_id(parts) == 3
+    parts, parts_owner = parts[poly], parts_owner[poly]
+    n_int = shapely.get_num_interior_rings(parts)
+    rings = [shapely.get_exterior_ring(parts)]
+    owner = [parts_owner]
+    sign = [np.ones(len(parts))]
+    for j in range(int(n_int.max()) if len(parts) else 0):
+        has = n_int > j
+        rings.append(shapely.get_interior_ring(parts[has], j))
+        owner.append(parts_owner[has])
+        sign.append(-np.ones(int(has.sum())))
+    rings = np.concatenate(rings)
+    owner = np.concatenate(owner)
+    sign = np.concatenate(sign)
+    xy, ring_id = shapely.get_coordinates(rings, return_index=True)
+    cuts = np.flatnonzero(np.diff(ring_id)) + 1
+    coords = [c[:-1] for c in np.split(xy, cuts)] if len(xy) else []  # drop each ring's closing point
+    ok = np.array([len(c) >= 3 for c in coords], bool) if coords else np.zeros(0, bool)
+    present = np.unique(ring_id) if len(xy) else np.zeros(0, np.int64)
+    owner, sign = owner[present][ok], sign[present][ok]
+    return [c for c, k in zip(coords, ok) if k], owner, sign
 
 
 def lambert_rings(rings: list[np.ndarray], receivers: np.ndarray, P: np.ndarray, N: np.ndarray) -> np.ndarray:
@@ -141,15 +198,6 @@ def lambert_rings(rings: list[np.ndarray], receivers: np.ndarray, P: np.ndarray,
     return out
 
 
-def _clip_pair(tri: np.ndarray, s: np.ndarray, top: np.ndarray) -> np.ndarray:
-    """Clip ``tri`` to ``s > 0`` (off the light's plane), then to ``top(q) > 0``
-    (in front of the receiver's parallel plane)."""
-    q = _clip_halfspace(tri, s)
-    if len(q) < 3:
-        return q
-    return _clip_halfspace(q, top(q))
-
-
 def visible_polygon_irradiance(radiance, light, tris, P, N, one_sided_normal=None, length_scale_m=1.0):
     """Irradiance from the visible part of a uniform polygonal light.
 
@@ -197,78 +245,62 @@ def visible_polygon_irradiance(radiance, light, tris, P, N, one_sided_normal=Non
     scale = max(length_scale_m, float(np.abs(c).max()), float(np.abs(P).max()) if S else 0.0)
     slack = PLANE_SLACK * scale
     ids = ids[(h[ids] > slack) & (e[ids] > 0.0)]
-    if len(tris) and len(ids):
-        Pi, ms, hi = P[ids], sgn[ids, None] * m, h[ids]
-        # heights of the occluder vertices over the light's plane, toward each receiver: (S', T, 3)
-        z = np.einsum("tkj,sj->stk", tris - c, ms)
-        in_slab = ~(np.all(z <= slack, axis=2) | np.all(z >= hi[:, None, None] - slack, axis=2))
-        # pyramid from each receiver to the light: drop triangles wholly outside one side plane
-        centroid = light.mean(axis=0)
-        for i in range(len(light)):
-            a, b = light[i - 1], light[i]
-            w = np.cross(a - Pi, b - Pi)  # (S', 3)
-            inside = np.einsum("sj,sj->s", w, centroid - Pi) >= 0.0
-            w = np.where(inside[:, None], w, -w)
-            d = np.einsum("stkj,sj->stk", tris[None] - Pi[:, None, None, :], w)
-            in_slab &= ~np.all(d < 0.0, axis=2)
-        si, ti = np.nonzero(in_slab)
-        if len(si):
-            zz = z[si, ti]  # (M, 3)
-            whole = np.all((zz > slack) & (zz < hi[si, None] - slack), axis=1)
-            uv_list, owner = [], []
-            # wholly inside the slab: project the three vertices at once
-            if np.any(whole):
-                q = tris[ti[whole]]  # (M', 3, 3)
-                p = Pi[si[whole]][:, None, :]
-                depth = hi[si[whole], None] - zz[whole]  # distance from the receiver's parallel plane
-                x = p + (q - p) * (hi[si[whole], None] / depth)[:, :, None]
-                uv = np.stack([(x - c) @ e1, (x - c) @ e2], axis=2)
-                uv_list.extend(shapely.polygons(uv))
-                owner.extend(si[whole])
-            for k in np.nonzero(~whole)[0]:  # straddles a plane: clip it first
-                s_ = si[k]
-                tri = tris[ti[k]]
-                top = lambda q, s_=s_: (hi[s_] - slack) - (q - c) @ ms[s_]
-                q = _clip_pair(tri, zz[k] - slack, top)
-                if len(q) < 3:
-                    continue
-                depth = hi[s_] - (q - c) @ ms[s_]
-                x = Pi[s_] + (q - Pi[s_]) * (hi[s_] / depth)[:, None]
-                uv_list.append(shapely.Polygon(np.stack([(x - c) @ e1, (x - c) @ e2], axis=1)))
-                owner.append(s_)
-            polys = np.array(uv_list, dtype=object)
-            owner = np.array(owner, dtype=np.int64)
-            polys = shapely.make_valid(polys)
-            luv = shapely.Polygon(np.stack([(light - c) @ e1, (light - c) @ e2], axis=1))
-            hit = shapely.intersection(polys, luv)
-            keep = ~shapely.is_empty(hit) & (shapely.area(hit) > 0.0)
-            hit, owner = hit[keep], owner[keep]
-            rings, ring_rec, ring_sign = [], [], []
-            order = np.argsort(owner, kind="stable")
-            hit, owner = hit[order], owner[order]
-            bounds = np.nonzero(np.diff(owner))[0] + 1
-            shaded = []
-            for group, o in zip(np.split(hit, bounds), np.split(owner, bounds)):
-                if len(group) == 0:
-                    continue
-                k = ids[o[0]]
-                shaded.append(k)
-                # the visible part itself (not light − hidden): a fully hidden lamp reads exactly 0
-                hidden = group[0] if len(group) == 1 else shapely.union_all(group)
-                visible = shapely.difference(luv, hidden)
-                for poly in getattr(visible, "geoms", [visible]):
-                    if poly.geom_type != "Polygon" or poly.is_empty:
-                        continue
-                    for sign, ring in [(1.0, poly.exterior)] + [(-1.0, r) for r in poly.interiors]:
-                        uv = np.asarray(ring.coords)[:-1]
-                        if len(uv) >= 3:
-                            rings.append(c + uv[:, :1] * e1 + uv[:, 1:] * e2)
-                            ring_rec.append(k)
-                            ring_sign.append(sign)
-            shaded = np.array(shaded, dtype=np.int64)
-            e[shaded] = 0.0
-            if rings:
-                vis = lambert_rings(rings, np.array(ring_rec), P, N) * np.array(ring_sign)
-                np.add.at(e, np.array(ring_rec), vis)
+    if not (len(tris) and len(ids)):
+        return _finish(e, radiance, single)
+    Pi, ms, hi = P[ids], sgn[ids, None] * m, h[ids]
+    # 1. candidates: heights of the occluder vertices over the light's plane, toward each
+    #    receiver, (S', T, 3); keep triangles reaching into the open slab between them ...
+    z = np.einsum("tkj,sj->stk", tris - c, ms)
+    cand = ~(np.all(z <= slack, axis=2) | np.all(z >= hi[:, None, None] - slack, axis=2))
+    # ... and not wholly outside one side plane of the pyramid from the receiver to the light
+    centroid = light.mean(axis=0)
+    for i in range(len(light)):
+        w = np.cross(light[i - 1] - Pi, light[i] - Pi)  # (S', 3)
+        w = np.where((np.einsum("sj,sj->s", w, centroid - Pi) >= 0.0)[:, None], w, -w)
+        d = np.einsum("stkj,sj->stk", tris[None] - Pi[:, None, None, :], w)
+        cand &= ~np.all(d < 0.0, axis=2)
+    si, ti = np.nonzero(cand)
+    if not len(si):
+        return _finish(e, radiance, single)
+    # 2. clip each to the open slab: exactly at the light's plane (a point on it
+    #    projects onto itself), and ``slack`` short of the receiver's parallel plane,
+    #    where the projection runs off to infinity (such far points never reach the
+    #    light unless the occluder touches the receiver)
+    zz = z[si, ti]
+    q, cnt = clip_polygons(tris[ti], np.full(len(si), 3), zz)
+    zq = np.einsum("mkj,mj->mk", q - c, ms[si])
+    q, cnt = clip_polygons(q, cnt, (hi[si, None] - slack) - zq)
+    ok = cnt >= 3
+    q, cnt, si = q[ok], cnt[ok], si[ok]
+    # 3. project centrally from the receiver onto the light's plane (2-D frame e1, e2)
+    p = Pi[si][:, None, :]
+    depth = hi[si, None] - np.einsum("mkj,mj->mk", q - c, ms[si])  # in (0, h): off the receiver's plane
+    x = p + (q - p) * (hi[si, None] / depth)[:, :, None]
+    uv = np.stack([(x - c) @ e1, (x - c) @ e2], axis=2)
+    polys = shapely.polygons(uv)  # convex (padding repeats a vertex), so valid
+    luv = shapely.Polygon(np.stack([(light - c) @ e1, (light - c) @ e2], axis=1))
+    hit = shapely.intersection(polys, luv)
+    keep = shapely.area(hit) > 0.0
+    hit, si = hit[keep], si[keep]
+    if not len(si):
+        return _finish(e, radiance, single)
+    # 4. per receiver: the visible part = light − union of its shadows
+    order = np.argsort(si, kind="stable")
+    hit, si = hit[order], si[order]
+    cuts = np.flatnonzero(np.diff(si)) + 1
+    owners = si[np.r_[0, cuts]]
+    hidden = np.array([g[0] if len(g) == 1 else shapely.union_all(g) for g in np.split(hit, cuts)], dtype=object)
+    visible = shapely.difference(luv, hidden)
+    rings, ring_owner, ring_sign = _rings_of(visible, owners)
+    rec = ids[owners]
+    e[rec] = 0.0  # recomputed from the visible part: a wholly hidden lamp reads exactly 0
+    if rings:
+        r3 = [c + r[:, :1] * e1 + r[:, 1:] * e2 for r in rings]
+        vis = lambert_rings(r3, ids[ring_owner], P, N) * ring_sign
+        np.add.at(e, ids[ring_owner], vis)
+    return _finish(e, radiance, single)
+
+
+def _finish(e: np.ndarray, radiance, single: bool):
     e = np.maximum(e, 0.0) * float(radiance)
     return float(e[0]) if single else e
