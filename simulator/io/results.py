@@ -20,7 +20,7 @@ import numpy as np
 from simulator.errors import UserError
 from simulator.scene.model import Sensor, SensorKind
 
-__all__ = ["COLUMNS", "PROBE_COLUMNS", "Reading", "readings_from", "probe_readings", "write_outputs", "format_table"]
+__all__ = ["COLUMNS", "PROBE_COLUMNS", "Reading", "readings_from", "probe_readings", "extra_columns", "write_outputs", "format_table"]
 
 #: CSV columns, in order; units are in the names. A column that does not
 #: apply to a sensor's kind is left empty, never 0.
@@ -113,10 +113,25 @@ def _fmt(x) -> str:
     return str(x)
 
 
+def extra_columns(rows: list[Reading]) -> list[str]:
+    """Columns beyond :data:`COLUMNS` that rows carry (response columns such as
+    ``ppfd_umol_m2_s``, see :mod:`simulator.spectra.posthoc`), in first-seen order.
+    They follow the standard columns; a run without them writes exactly
+    :data:`COLUMNS`."""
+    known = set(COLUMNS)
+    seen: dict[str, None] = {}
+    for r in rows:
+        for k in r.values:
+            if k not in known:
+                seen[k] = None
+    return list(seen)
+
+
 def _csv_text(rows: list[Reading]) -> str:
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(COLUMNS)
+    columns = COLUMNS + tuple(extra_columns(rows))
+    w.writerow(columns)
     for r in rows:
         s = r.sensor
         rec = {
@@ -126,7 +141,7 @@ def _csv_text(rows: list[Reading]) -> str:
             "samples": r.samples, "seconds": r.seconds, "method": r.method, "target_met": r.target_met,
             **r.values,
         }  # fmt: skip
-        w.writerow([_fmt(rec.get(c)) for c in COLUMNS])
+        w.writerow([_fmt(rec.get(c)) for c in columns])
     return buf.getvalue()
 
 

@@ -36,6 +36,8 @@ __all__ = [
     "trapezoid_weights",
     "integrate",
     "Bands",
+    "sample_hero_nm",
+    "hero_pdf_per_nm",
 ]
 
 LAMBDA_MIN_NM = 380.0
@@ -147,3 +149,31 @@ class Bands:
         num = self.integrate(np.asarray(values, float) * weight)
         den = self.integrate(weight)
         return np.divide(num, den, out=np.zeros_like(num), where=den > 0)
+
+
+def sample_hero_nm(u, n: int = 4) -> np.ndarray:
+    """Hero wavelengths: one uniform wavelength and its ``n − 1`` equally spaced rotations.
+
+    ``λ_k = 380 + 400 · frac(u + k/n)`` nm, k = 0 … n−1 (Wilkie et al. 2014):
+    each λ_k is uniform on [380, 780] nm, and together they stratify the
+    range. The twin :func:`hero_pdf_per_nm` gives each one's density, so the
+    estimate of ``∫ q(λ) f(λ) dλ`` from one path is ``(1/n) Σ_k q(λ_k) f(λ_k) / p``.
+
+    Parameters
+    ----------
+    u : float or ndarray, shape (m,)
+        Uniform random numbers in [0, 1).
+    n : int
+
+    Returns
+    -------
+    ndarray, shape (n,) or (n, m)
+    """
+    u = np.asarray(u, float)
+    k = np.arange(n).reshape((n,) + (1,) * u.ndim)
+    return LAMBDA_MIN_NM + (LAMBDA_MAX_NM - LAMBDA_MIN_NM) * np.mod(u + k / n, 1.0)
+
+
+def hero_pdf_per_nm() -> float:
+    """Density of each hero wavelength, nm⁻¹: uniform, 1/400."""
+    return 1.0 / (LAMBDA_MAX_NM - LAMBDA_MIN_NM)
