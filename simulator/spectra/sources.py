@@ -23,7 +23,11 @@ Planck's law, spectral radiance per nanometre::
     B_λ(T) = 2 h c² / λ⁵ / (exp(h c / (λ k T)) − 1)  · 1e-9   [W m⁻² sr⁻¹ nm⁻¹, λ in m]
 
 with the exact SI constants h = 6.62607015e-34 J s, c = 299792458 m/s,
-k = 1.380649e-23 J/K (CODATA 2018 / SI 2019).
+k = 1.380649e-23 J/K (CODATA 2018 / SI 2019). A *colour temperature*
+(:func:`blackbody`) uses CIE 15's second radiation constant c₂ = h c/k =
+1.4388e-2 m K (the ITS-90 value, as colour-science and so the engine's
+twin do) in place of the exact 1.438777e-2 m K: the shapes differ by at most
+2e-4 over the grid and efficacies by 1.3e-5 (3000 K).
 
 References
 ----------
@@ -49,6 +53,7 @@ __all__ = [
     "C_M_S",
     "K_B_J_K",
     "N_A_PER_MOL",
+    "C2_CIE_M_K",
     "K_M_LM_W",
     "Spectrum",
     "planck_W_m2_sr_nm",
@@ -69,6 +74,8 @@ C_M_S = 299792458.0
 K_B_J_K = 1.380649e-23
 #: Avogadro constant, 1/mol (exact, SI 2019)
 N_A_PER_MOL = 6.02214076e23
+#: second radiation constant for colour temperatures, m K (CIE 15:2004, ITS-90)
+C2_CIE_M_K = 1.4388e-2
 #: maximum luminous efficacy for photopic vision, lm/W (as :data:`simulator.units.K_M`)
 K_M_LM_W = 683.0
 
@@ -115,7 +122,7 @@ def _shape(name: str, values, notes=()) -> Spectrum:
     return Spectrum(name, v, tuple(n for n in notes if n))
 
 
-def planck_W_m2_sr_nm(temperature_K: float, wavelength_nm) -> np.ndarray:
+def planck_W_m2_sr_nm(temperature_K: float, wavelength_nm, c2_m_K: float | None = None) -> np.ndarray:
     """Blackbody spectral radiance B_λ(T), W m⁻² sr⁻¹ nm⁻¹ (see module Notes).
 
     Parameters
@@ -124,18 +131,22 @@ def planck_W_m2_sr_nm(temperature_K: float, wavelength_nm) -> np.ndarray:
         > 0.
     wavelength_nm : array_like
         Wavelengths in vacuum, nm.
+    c2_m_K : float, optional
+        Second radiation constant; default the exact h c / k.
     """
     lam = np.asarray(wavelength_nm, float) * 1e-9
-    x = H_J_S * C_M_S / (lam * K_B_J_K * float(temperature_K))
+    c2 = H_J_S * C_M_S / K_B_J_K if c2_m_K is None else float(c2_m_K)
+    x = c2 / (lam * float(temperature_K))
     return 2.0 * H_J_S * C_M_S**2 / lam**5 / np.expm1(x) * 1e-9
 
 
 def blackbody(temperature_K: float) -> Spectrum:
-    """Planckian radiator of a temperature, W m⁻² sr⁻¹ nm⁻¹ on the grid (absolute; only its shape is used)."""
+    """Planckian radiator of a colour temperature on the grid, W m⁻² sr⁻¹ nm⁻¹
+    with CIE 15's c₂ (see module Notes; only its shape is used)."""
     t = float(temperature_K)
     if not (math.isfinite(t) and t > 0):
         raise ValueError(f"blackbody temperature must be a positive number of kelvin, not {temperature_K!r}")
-    return _shape(f"blackbody {t:g} K", planck_W_m2_sr_nm(t, WAVELENGTHS_NM))
+    return _shape(f"blackbody {t:g} K", planck_W_m2_sr_nm(t, WAVELENGTHS_NM, C2_CIE_M_K))
 
 
 def equal_energy() -> Spectrum:
