@@ -24,7 +24,7 @@ from simulator.pipeline import run
 from simulator.scene.model import Geometry, Light, LightKind, Scene, Sensor, SensorKind
 from simulator.spectra import grid, responses as R, sources, tables
 from simulator.spectra.config import load_spectra_settings
-from simulator.spectra.posthoc import apply_posthoc, posthoc_refusal, response_channels
+from simulator.spectra.posthoc import apply_posthoc, posthoc_refusal, response_channels, rgb_per_luminance
 from simulator.spectra.reduce import posthoc_ratio
 from simulator.spectra.transport import choose_transport
 
@@ -181,3 +181,15 @@ def test_scenes_the_post_hoc_path_refuses():
     with pytest.raises(ValueError, match="different spectra"):
         apply_posthoc([_row(1.0, 0.1)], mixed, "photometric", sources.cie_illuminant("D65"), [R.response("par")])
     assert posthoc_refusal(_scene([(1.0, 205.15), (3.0, 3 * 205.15)])) is None
+
+
+def test_probe_rgb_of_a_grey_scene_is_the_emitters_chromaticity():
+    """RGB per unit luminance: D65 is sRGB's white, (1, 1, 1) to 1e-3; the
+    LED (blue + red peaks) is magenta-ish (R and B above G); BT.709 luminance
+    of the result is 1 (Y = 1 by construction) to 1e-3."""
+    from simulator.units import luminance_grey
+
+    assert np.allclose(rgb_per_luminance(sources.cie_illuminant("D65")), 1.0, atol=1e-3)
+    led = rgb_per_luminance(sources.spd_csv(LED))
+    assert led[0] > led[1] and led[2] > led[1]
+    assert luminance_grey(led) == pytest.approx(1.0, abs=1e-3)

@@ -31,7 +31,8 @@ import numpy as np
 from simulator.spectra.reduce import posthoc_ratio
 from simulator.spectra.sources import Spectrum
 
-__all__ = ["BASE_COLUMNS", "PosthocResult", "emitter_efficacies", "posthoc_refusal", "apply_posthoc", "response_channels"]
+__all__ = ["BASE_COLUMNS", "PosthocResult", "emitter_efficacies", "posthoc_refusal", "apply_posthoc", "response_channels",
+           "rgb_per_luminance"]
 
 #: per quantity: (radiometric column, photometric column) of the CSV, in row values
 BASE_COLUMNS = {
@@ -189,3 +190,21 @@ def response_channels(responses) -> list[dict]:
         unit = r.units["irradiance"].replace("umol", "µmol").replace("_", "/")
         out.append({"channel": col, "stderr_channel": col_se, "unit": unit, "title": r.title, "name": r.name})
     return out
+
+
+def rgb_per_luminance(spectrum: Spectrum) -> np.ndarray:
+    """Linear sRGB of an emitter spectrum per unit luminance (Y = 1), shape (3,).
+
+    ``XYZ = ∫ S (x̄, ȳ, z̄) dλ / ∫ S ȳ dλ`` (CIE 1931 2°, ȳ = V), then the
+    IEC 61966-2-1 XYZ → linear sRGB matrix. In a grey scene every radiance
+    has the emitters' chromaticity, so a probe's RGB lat-long map is its
+    luminance map × this (D65 → (1, 1, 1) to 1e-3: sRGB's white is D65).
+    """
+    import colour
+
+    from simulator.spectra import tables
+    from simulator.spectra.grid import integrate
+
+    cmfs = tables.cmfs_1931()
+    xyz = integrate(spectrum.values * cmfs) / integrate(spectrum.values * cmfs[1])
+    return np.asarray(colour.models.RGB_COLOURSPACE_sRGB.matrix_XYZ_to_RGB, float) @ xyz
