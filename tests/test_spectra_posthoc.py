@@ -193,3 +193,30 @@ def test_probe_rgb_of_a_grey_scene_is_the_emitters_chromaticity():
     led = rgb_per_luminance(sources.spd_csv(LED))
     assert led[0] > led[1] and led[2] > led[1]
     assert luminance_grey(led) == pytest.approx(1.0, abs=1e-3)
+
+
+def test_run_hooks(greenhouse, tmp_path):
+    """What a run calls: nothing asked → nothing done; asked → the declared
+    spectrum, or the stage reader's own; a coloured scene, or lights sharing
+    a spectrum the run does not name, stop the run with one line."""
+    from simulator.errors import UserError
+    from simulator.spectra.config import SpectraSettings
+    from simulator.spectra.posthoc import finish_run, run_spectrum
+
+    cfg, res, _ = greenhouse
+    assert run_spectrum(SpectraSettings(), res.scene, cfg.light_units, "E") is None
+    assert finish_run(res.rows, res.scene, cfg.light_units, None, SpectraSettings()) == (None, [])
+    s = _settings(tmp_path, lights=True)
+    assert run_spectrum(s, res.scene, cfg.light_units, "E").name == "grow_led_spd.csv"
+    bare = _settings(tmp_path, lights=False)
+    assert run_spectrum(bare, res.scene, cfg.light_units, "E").name == "E"
+    with pytest.raises(UserError, match="not the run's D65"):
+        run_spectrum(bare, res.scene, cfg.light_units, "D65")
+    coloured = _scene([(1.0, 205.0)], ["coloured albedo/emission/light colour reduced to luminance grey: /World/Red"])
+    with pytest.raises(UserError, match="cannot be computed from one channel: coloured"):
+        run_spectrum(s, coloured, "photometric", "E")
+    rows = copy.deepcopy(res.rows)
+    record, channels = finish_run(rows, res.scene, cfg.light_units, s.lights, s)
+    assert record["spectrum"] == "grow_led_spd.csv" and record["responses"][0] == "par"
+    assert [c["name"] for c in channels] == ["par", "epar", "melanopic_edi", "vdiode"]
+    assert "ppfd_umol_m2_s" in rows[0].values

@@ -32,7 +32,7 @@ from simulator.spectra.reduce import posthoc_ratio
 from simulator.spectra.sources import Spectrum
 
 __all__ = ["BASE_COLUMNS", "PosthocResult", "emitter_efficacies", "posthoc_refusal", "apply_posthoc", "response_channels",
-           "rgb_per_luminance"]
+           "rgb_per_luminance", "run_spectrum", "finish_run"]
 
 #: per quantity: (radiometric column, photometric column) of the CSV, in row values
 BASE_COLUMNS = {
@@ -208,3 +208,67 @@ def rgb_per_luminance(spectrum: Spectrum) -> np.ndarray:
     cmfs = tables.cmfs_1931()
     xyz = integrate(spectrum.values * cmfs) / integrate(spectrum.values * cmfs[1])
     return np.asarray(colour.models.RGB_COLOURSPACE_sRGB.matrix_XYZ_to_RGB, float) @ xyz
+
+
+def run_spectrum(settings, scene, light_units: str, radiometric_spectrum) -> Spectrum | None:
+    """The emitter spectrum a run's post-hoc responses use; None when none are asked for.
+
+    Call it once the stage is read and before tracing, so that a run that
+    cannot be answered exactly stops before it starts.
+
+    Parameters
+    ----------
+    settings : simulator.spectra.config.SpectraSettings
+    scene : simulator.scene.model.Scene
+    light_units : str
+    radiometric_spectrum : str or float
+        The run's (the stage reader's default spectrum in radiometric units).
+
+    Returns
+    -------
+    Spectrum or None
+        ``[spectra] lights`` if declared, else the spectrum the stage reader
+        gave the lights (D65 photometric, ``radiometric_spectrum`` otherwise).
+
+    Raises
+    ------
+    UserError
+        The scene needs spectral or per-emitter transport
+        (:func:`posthoc_refusal`), or the lights share a spectrum the run
+        does not name (all with one ``colorTemperature``): name it in
+        ``[spectra] lights``.
+    """
+    from simulator.errors import UserError
+    from simulator.spectra.sources import emitter_spectrum
+
+    if not settings.wanted:
+        return None
+    why = posthoc_refusal(scene)
+    if why is not None:
+        raise UserError(f"{scene.path}: responses {[r.name for r in settings.responses]} cannot be computed "
+                        f"from one channel: {why}")
+    if settings.lights is not None:
+        return settings.lights
+    spectrum = emitter_spectrum("D65" if light_units == "photometric" else radiometric_spectrum)
+    k = emitter_efficacies(scene)
+    if k.size and abs(float(k[0]) - spectrum.efficacy_lm_W) > 1e-6 * spectrum.efficacy_lm_W:
+        raise UserError(f"{scene.path}: every light has efficacy {float(k[0]):.6g} lm/W, not the run's "
+                        f"{spectrum.name} ({spectrum.efficacy_lm_W:.6g} lm/W): name their spectrum in "
+                        "[spectra] lights (e.g. their colorTemperature)")
+    return spectrum
+
+
+def finish_run(rows, scene, light_units: str, spectrum: Spectrum | None, settings) -> tuple[dict | None, list[dict]]:
+    """Add the response columns to a run's rows (:func:`apply_posthoc`).
+
+    Returns
+    -------
+    record : dict or None
+        For the run record (``"spectra"``); None when nothing was asked for.
+    map_channels : list of dict
+        For :func:`simulator.io.maps.grid_outputs` ``responses=``.
+    """
+    if spectrum is None:
+        return None, []
+    done = apply_posthoc(rows, scene, light_units, spectrum, settings.responses)
+    return {**done.to_record(), **settings.raw}, response_channels(settings.responses)
