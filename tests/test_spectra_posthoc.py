@@ -220,3 +220,28 @@ def test_run_hooks(greenhouse, tmp_path):
     assert record["spectrum"] == "grow_led_spd.csv" and record["responses"][0] == "par"
     assert [c["name"] for c in channels] == ["par", "epar", "melanopic_edi", "vdiode"]
     assert "ppfd_umol_m2_s" in rows[0].values
+
+
+def test_probe_patch_and_radiance_rows_get_their_own_columns():
+    """A probe's scalar irradiance gives scalar_ppfd (its fluence rate), a
+    patch its PPF in µmol/s, a radiance meter its photon radiance; the base
+    columns the kinds already have are the CSV's own names."""
+    k = 182.4573017755176
+    scene = _scene([(1.0, k)])
+    probe = Reading(Sensor("p", SensorKind.PROBE, np.zeros(3), np.zeros(3)),
+                    {"scalar_irradiance_W_m2": 2.0, "scalar_irradiance_stderr_W_m2": 0.1,
+                     "scalar_illuminance_lx": 2.0 * k, "scalar_illuminance_stderr_lx": 0.1 * k}, 1, 0.0, "path", None)
+    patch = Reading(Sensor("f", SensorKind.PATCH, np.zeros(3), np.array([0, 0, 1.0])),
+                    {"irradiance_W_m2": 1.0, "irradiance_stderr_W_m2": 0.0, "illuminance_lx": k, "illuminance_stderr_lx": 0.0,
+                     "flux_W": 3.0, "flux_stderr_W": 0.0, "luminous_flux_lm": 3 * k, "luminous_flux_stderr_lm": 0.0},
+                    1, 0.0, "path", None)
+    meter = Reading(Sensor("m", SensorKind.RADIANCE, np.zeros(3), np.array([0, 0, 1.0])),
+                    {"radiance_W_m2_sr": 5.0, "radiance_stderr_W_m2_sr": 0.5, "luminance_cd_m2": 5 * k,
+                     "luminance_stderr_cd_m2": 0.5 * k}, 1, 0.0, "path", None)
+    done = apply_posthoc([probe, patch, meter], scene, "radiometric", sources.equal_energy(), [R.response("par")])
+    ratio = done.ratios["par"]
+    assert probe.values["scalar_ppfd_umol_m2_s"] == pytest.approx(2.0 * ratio)
+    assert probe.values["scalar_ppfd_stderr_umol_m2_s"] == pytest.approx(0.1 * ratio)
+    assert patch.values["ppf_umol_s"] == pytest.approx(3.0 * ratio) and patch.values["ppfd_umol_m2_s"] == pytest.approx(ratio)
+    assert meter.values["par_photon_radiance_umol_m2_s_sr"] == pytest.approx(5.0 * ratio)
+    assert "scalar_ppfd_umol_m2_s" in done.columns and "ppf_stderr_umol_s" in done.columns

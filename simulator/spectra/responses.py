@@ -125,7 +125,15 @@ class Response:
     notes: tuple[str, ...] = field(default=())
 
     def columns(self, quantity: str) -> tuple[str, str]:
-        """``(value column, stderr column)`` of a quantity, e.g. ``("ppfd_umol_m2_s", "ppfd_stderr_umol_m2_s")``."""
+        """``(value column, stderr column)`` of a quantity, e.g. ``("ppfd_umol_m2_s", "ppfd_stderr_umol_m2_s")``.
+
+        ``quantity`` is one of :data:`QUANTITIES` or ``"scalar_irradiance"``
+        (a probe's fluence rate: ``scalar_`` + the irradiance stem, e.g.
+        ``scalar_ppfd_umol_m2_s``, ``scalar_illuminance_lx``).
+        """
+        if quantity == "scalar_irradiance":
+            stem, unit = "scalar_" + self.stems["irradiance"], self.units["irradiance"]
+            return f"{stem}_{unit}", f"{stem}_stderr_{unit}"
         stem, unit = self.stems[quantity], self.units[quantity]
         return f"{stem}_{unit}", f"{stem}_stderr_{unit}"
 
