@@ -99,3 +99,12 @@ def test_spd_file_is_read_relative_and_noted_when_short(tmp_path):
     (tmp_path / "col.csv").write_text("wavelength_nm,watts\n450,1\n650,1\n")
     with pytest.raises(UserError, match=r"col\.csv:1: SPD column 'watts'"):
         sources.spd_csv(tmp_path / "col.csv")
+
+
+def test_spreadsheet_exports_are_read(tmp_path):
+    """Quoted cells, a byte-order mark and trailing empty cells (a spreadsheet's
+    CSV export) read like the plain file."""
+    p = tmp_path / "export.csv"
+    p.write_bytes('\ufeff"wavelength_nm","relative_spd",,\n380,1,,\n780,3,,\n'.encode("utf-8"))
+    s = sources.spd_csv(p)
+    assert grid.integrate(s.values) == pytest.approx(800.0, rel=1e-12)

@@ -11,7 +11,8 @@ Format::
 The first column is the wavelength in nanometres, strictly increasing; the
 second column's header names the quantity and its unit (for example
 ``relative_spd``, ``reflectance``, ``responsivity_A_W``); what a header may
-be is up to the caller. Every problem is one :class:`UserError` line naming
+be is up to the caller. Quoted cells and trailing empty cells (as
+spreadsheets export them) are accepted. Every problem is one :class:`UserError` line naming
 the file and line: ``diode.csv:7: wavelength 455 nm is not above the previous (460 nm)``.
 On the grid the values are linearly interpolated; outside the file's range
 they are 0 (emission, responsivity) or held at the end value (reflectance),
@@ -118,7 +119,9 @@ def read_spectral_csv(path, what: str, columns: Callable[[str], str | None],
         line = raw.strip()
         if not line or line.startswith("#"):
             continue
-        cells = [c.strip() for c in line.split(",")]
+        cells = [c.strip().strip('"').strip() for c in line.split(",")]
+        while len(cells) > 2 and cells[-1] == "":  # spreadsheet exports pad rows with empty cells
+            cells.pop()
         if header is None:
             if len(cells) != 2 or cells[0] != "wavelength_nm":
                 raise UserError(f"{path}:{n}: {what} header must be 'wavelength_nm,<column>', not {line!r}")
