@@ -185,7 +185,7 @@ def test_custom_names_are_checked(tmp_path):
     """A custom response needs a column-safe name that is not a built-in one; a
     missing file is named."""
     p = _write(tmp_path / "d.csv", "wavelength_nm,responsivity", [(400, 1), (700, 1)])
-    for bad in ("Diode", "par", "2x", "a b"):
+    for bad in ("Diode", "par", "2x", "a b", "irradiance", "flux"):  # the last two would overwrite CSV columns
         with pytest.raises(UserError):
             R.custom_response(p, bad)
     with pytest.raises(UserError, match="no such file"):

@@ -8,20 +8,20 @@ response names a CSV column stem and unit per quantity (irradiance, radiance,
 flux). Columns follow the CSV's pattern: ``<stem>_<unit>`` and
 ``<stem>_stderr_<unit>``.
 
-Registry (:func:`response`, :data:`NAMES`):
+Registry (:func:`response`, :data:`NAMES`): name, weighting q(λ) (trapezoid
+rule on the 1 nm grid), irradiance column:
 
-====================  =======================================================  ===================
-name                  weighting q(λ) (trapezoid rule on the 1 nm grid)          irradiance column
-====================  =======================================================  ===================
-``radiometric``       1, 380–780 nm                                            ``irradiance_W_m2``
-``photopic``          K_m V(λ), K_m = 683 lm/W                                 ``illuminance_lx``
-``scotopic``          K′_m V′(λ), K′_m = 1700.06 lm/W                          ``scotopic_illuminance_lx``
-``<α>``               s_α(λ) (CIE S 026 action spectrum)                        ``<α>_opic_irradiance_W_m2``
-``<α>_edi``           s_α(λ) / K_α,v^D65                                       ``<α>_edi_lx``
-``par``               λ/(h c N_A)·1e6, 400–700 nm (photons)                    ``ppfd_umol_m2_s``
-``epar``              λ/(h c N_A)·1e6, 400–750 nm                              ``eppfd_umol_m2_s``
-custom                a responsivity CSV (:func:`custom_response`)             ``<name>_<unit>``
-====================  =======================================================  ===================
+* ``radiometric``: 1 over 380–780 nm; ``irradiance_W_m2``
+* ``photopic``: K_m V(λ), K_m = 683 lm/W; ``illuminance_lx``
+* ``scotopic``: K′_m V′(λ), K′_m = 1700.06 lm/W; ``scotopic_illuminance_lx``
+* ``<α>``: s_α(λ), the CIE S 026 action spectrum; S 026's names,
+  ``s_cone_opic_irradiance_W_m2`` … ``rhodopic_irradiance_W_m2``,
+  ``melanopic_irradiance_W_m2``
+* ``<α>_edi``: s_α(λ) / K_α,v^D65; ``<α>_edi_lx`` (``s_cone_edi_lx`` …
+  ``melanopic_edi_lx``)
+* ``par``: λ/(h c N_A)·1e6 over 400–700 nm (photons); ``ppfd_umol_m2_s``
+* ``epar``: the same over 400–750 nm; ``eppfd_umol_m2_s``
+* custom: a responsivity CSV (:func:`custom_response`); ``<name>_<unit>``
 
 with α one of ``s_cone``, ``m_cone``, ``l_cone``, ``rhodopic``, ``melanopic``.
 
@@ -291,4 +291,17 @@ def custom_response(path, name: str) -> Response:
         unit = m.group(1)
         s, u = _quantities((name, f"{unit}_m2"), (name, f"{unit}_m2_sr"), (name, unit))
         how = f"absolute responsivity from {t.path.name}, {unit}/W"
-    return Response(name, name, _frozen(r * full), s, u, how, tuple(n for n in (t.coverage_note(),) if n))
+    custom = Response(name, name, _frozen(r * full), s, u, how, tuple(n for n in (t.coverage_note(),) if n))
+    taken = _registry_columns()
+    for quantity in QUANTITIES + ("scalar_irradiance",):
+        col = custom.columns(quantity)[0]
+        if col in taken:
+            raise UserError(f"custom response name {name!r} would write column {col!r}, which {taken[col]!r} writes; "
+                            "choose another name")
+    return custom
+
+
+@lru_cache(maxsize=None)
+def _registry_columns() -> dict[str, str]:
+    """Every column a registry response writes → the response's name."""
+    return {c: n for n in NAMES for q in QUANTITIES + ("scalar_irradiance",) for c in response(n).columns(q)}
