@@ -13,5 +13,7 @@ needed, so a grey run that asks for no response never pays its import
 ``responses``    the response registry (photopic, PAR, α-opic, custom, …)
 ``reduce``       spectral or per-band estimates → responses with stderr
 ``posthoc``      responses of a grey scene from its radiometric readings
+``transport``    grey, per-emitter or hero-wavelength transport, and why
 ``config``       how a run names its responses (TOML piece and loader)
+``schema``       the same TOML piece as pydantic models
 """
