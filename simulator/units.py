@@ -18,7 +18,7 @@ equal-energy spectrum K ≈ 182.46 lm/W.
 References
 ----------
 CIE 15:2004 Colorimetry; CIE 018:2019 (photometry); the CIE 1924 V(λ) and D65
-tables as published by the ``colour-science`` package.
+tables as published by the ``colour-science`` package. docs/REFERENCES.md §Photometry.
 """
 
 from __future__ import annotations
@@ -165,6 +165,10 @@ def luminance_grey(rgb):
     one stays within its components' spread of g (R − G and B − G are exact
     for close components), and a scene's grey albedo or emission is read as
     authored, whatever the BLAS or summation order.
+
+    References
+    ----------
+    ITU-R BT.709-6 (2015), item 3.2; docs/REFERENCES.md §Luminance of a colour.
     """
     c = np.asarray(rgb, dtype=np.float64)
     if c.shape[-1:] != (3,):

@@ -1,6 +1,6 @@
 """Colours reduced to luminance grey (BT.709 Y = 0.2126 R + 0.7152 G + 0.0722 B).
 
-ITU-R BT.709-6, Item 3.2 (derivation of the luminance signal). The weights
+ITU-R BT.709-6, item 3.2; docs/REFERENCES.md §Luminance of a colour. The weights
 sum to 1, so a grey colour (g, g, g) has luminance g; the reader must keep
 that exactly, or a furnace authored with albedo 0.9 would be traced with
 0.8999999999999999 and a reference case would not be the stated one.
