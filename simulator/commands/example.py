@@ -38,7 +38,7 @@ def list_examples() -> list[tuple[str, str]]:
     out = []
     for name in example_names():
         stage = _stage_of(configs_dir(command="example") / f"{name}.toml")
-        out.append((name, stage.relative_to(stages_dir("example")).as_posix()))
+        out.append((name, stage.relative_to(stages_dir("example").resolve()).as_posix()))
     return out
 
 
@@ -83,11 +83,10 @@ def example_files(name: str) -> tuple[str, dict[Path, Path]]:
         raise UserError(f"example: no bundled example {name!r} (one of: {', '.join(names)})")
     config = configs_dir(command="example") / f"{name}.toml"
     root = stages_dir("example").resolve()
-    stage = _stage_of(config)
-    files = {p: Path("stages", p.relative_to(root)) for p in [stage, *_assets(stage, root)]}
     text = config.read_text(encoding="utf-8")
-    with open(config, "rb") as fh:
-        raw = tomllib.load(fh)
+    raw = tomllib.loads(text)
+    stage = (config.parent / raw["stage"]).resolve()
+    files = {p: Path("stages", p.relative_to(root)) for p in [stage, *_assets(stage, root)]}
     stage_to = PurePosixPath(*files[stage].parts).as_posix()
     text = _replace_value(text, "stage", raw["stage"], stage_to)
     csv = raw.get("output", {}).get("csv")
