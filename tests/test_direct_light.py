@@ -1,7 +1,7 @@
 """The `light` estimator on every bundled closed-form stage, in both light-unit modes.
 
 Each expected value comes from ``simulator.reference.closed_forms`` (an independent
-numpy implementation of the formulas in REFERENCES.md), evaluated with the
+numpy implementation of the formulas in docs/REFERENCES.md), evaluated with the
 light parameters the stage reader produced. A reading passes when
 |estimate − truth| ≤ 4·stderr + 2e-6·|truth|: four standard errors is the
 statistical bound (a fixed seed; a 6e-5 two-sided chance per reading of a

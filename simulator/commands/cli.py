@@ -68,7 +68,18 @@ def _parser() -> argparse.ArgumentParser:
     st.add_argument("--quick", action="store_true", help="0.25 s per cell instead of 1 s")
     st.add_argument("--seconds", type=float, metavar="S", help="budget per cell in seconds (overrides --quick)")
     st.add_argument("--device", choices=("cpu", "cuda", "auto"), default="cpu", help="Warp device (default cpu)")
+
+    ex = sub.add_parser("example", help="copy a bundled config and its stage into a folder, ready to run and edit")
+    ex.add_argument("name", nargs="?", metavar="NAME", help="bundled example (see --list)")
+    ex.add_argument("dir", nargs="?", metavar="DIR", help="folder to copy it into (created if missing)")
+    ex.add_argument("--list", action="store_true", help="list the bundled examples")
     return p
+
+
+def _cmd_example(args) -> int:
+    from simulator.commands.example import main_example
+
+    return main_example(args.name, args.dir, args.list)
 
 
 def _cmd_chart(args) -> int:
@@ -213,6 +224,8 @@ def main(argv: list[str] | None = None) -> int:
             return _cmd_chart(args)
         if args.command == "stability":
             return _cmd_stability(args)
+        if args.command == "example":
+            return _cmd_example(args)
     except UserError as e:
         print(f"probesim: error: {e}", file=sys.stderr)
         return e.exit_code

@@ -331,7 +331,7 @@ def _no_closed_form(ctx: CaseContext, s: Sensor, why: str) -> UserError:
 
 def _point(ctx: CaseContext, s: Sensor, ch: int, scene: Scene | None = None) -> float:
     """Isotropic point source. Irradiance: E = I·cosξ/d² (inverse-square cosine
-    law, REFERENCES.md "Point source"). Patch: flux Φ = I·Ω with Ω the patch's
+    law, docs/REFERENCES.md §Point source). Patch: flux Φ = I·Ω with Ω the patch's
     solid angle (Van Oosterom & Strackee), over its area."""
     l = _one_light(scene or ctx.scene, LightKind.POINT)
     intensity = l.emission[ch]
@@ -351,8 +351,8 @@ def _point_cm_yup(ctx: CaseContext, s: Sensor, ch: int) -> float:
 
 def _sphere(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Uniform sphere light: E = π·L·sin²σ·cosθ above the horizon, the
-    straddling formula across it (Howell's catalogue; REFERENCES.md "Uniform
-    sphere"). A radiance meter whose cone lies inside the sphere's disc reads L."""
+    straddling formula across it (Howell's catalogue; docs/REFERENCES.md
+    §Uniform sphere). A radiance meter whose cone lies inside the sphere's disc reads L."""
     l = _one_light(ctx.scene, LightKind.SPHERE)
     if s.kind == SensorKind.IRRADIANCE:
         return float(cf.sphere_irradiance(l.emission[ch], l.position, l.radius, s.position, s.normal))
@@ -369,9 +369,9 @@ def _sphere(ctx: CaseContext, s: Sensor, ch: int) -> float:
 def _rect(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Rect light. A receiver parallel to it and facing it: corner rectangles
     (Howell's catalogue, parallel rectangle from above a corner, added and
-    subtracted; REFERENCES.md "Rectangle W×H parallel"). Any other receiver:
+    subtracted; docs/REFERENCES.md §Parallel rectangle). Any other receiver:
     Lambert's contour formula after clipping to its upper hemisphere
-    (REFERENCES.md "Uniform polygon"). A meter whose cone lands inside the
+    (docs/REFERENCES.md §Lambert's polygon formula). A meter whose cone lands inside the
     rectangle reads L."""
     l = _one_light(ctx.scene, LightKind.RECT)
     L = l.emission[ch]
@@ -421,7 +421,7 @@ def _disk_bracket(l: Light, s: Sensor, ch: int) -> tuple[float, float]:
 def _disk(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Disk light. On its axis: E = π·L·R²/(R²+h²)·cosω (Howell's catalogue,
     coaxial disk, element tilted). Parallel, off the axis: E = π·L·F with the
-    offset-disk configuration factor (Howell; REFERENCES.md "Parallel disk").
+    offset-disk configuration factor (Howell; docs/REFERENCES.md §Parallel disk).
     Any other receiver (perpendicular, or with the disk partly below its
     horizon): Lambert's contour formula on the inscribed and circumscribed
     8192-gons, which bracket the exact value (their relative gap is about
@@ -456,8 +456,8 @@ def _disk_note(ctx: CaseContext, s: Sensor, ch: int) -> str:
 
 def _distant_occluder(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Delta distant light: E = E⊥·cosξ where the ray toward the light is
-    clear, 0 where the stage's geometry blocks it (REFERENCES.md, point
-    source with I/d² → E⊥). The shadow test is a float64 Möller–Trumbore over
+    clear, 0 where the stage's geometry blocks it (docs/REFERENCES.md
+    §Point source, I/d² → E⊥). The shadow test is a float64 Möller–Trumbore over
     every triangle of the stage, independent of the engine's BVH."""
     l = _one_light(ctx.scene, LightKind.DISTANT)
     if l.half_angle != 0.0 or s.kind != SensorKind.IRRADIANCE:
@@ -476,7 +476,7 @@ def _ground_is_black_plane(scene: Scene) -> bool:
 
 def _dome(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Uniform sky over a black ground: E = π·L·(1 + cos β)/2 for a receiver
-    tilted β from the zenith (REFERENCES.md "Uniform environment"); a meter
+    tilted β from the zenith (docs/REFERENCES.md §Uniform environment); a meter
     whose cone is wholly above the horizon reads L. The ground is 20 km across,
     so from 1 m up the sky seen past its edge is below 1e-4 rad of elevation."""
     l = _one_light(ctx.scene, LightKind.DOME)
@@ -545,8 +545,8 @@ def _emissive_polygon(scene: Scene) -> tuple[np.ndarray, np.ndarray, tuple[float
 def _polygon(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Emissive polygon, front face only: Lambert's contour formula,
     E = (L/2)·|Σ γ_i n·û_i|, after Sutherland–Hodgman clipping to the
-    receiver's upper hemisphere (Lambert 1760; Arvo 1995; REFERENCES.md
-    "Uniform polygon"). A meter whose cone lands inside the polygon reads L."""
+    receiver's upper hemisphere (Lambert 1760; Arvo 1995; docs/REFERENCES.md
+    §Lambert's polygon formula). A meter whose cone lands inside the polygon reads L."""
     verts, front, emission = _emissive_polygon(ctx.scene)
     L = emission[ch]
     if s.kind == SensorKind.IRRADIANCE:
@@ -570,7 +570,7 @@ def _polygon(ctx: CaseContext, s: Sensor, ch: int) -> float:
 def _radiance_floor(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """A Lambertian floor (f = ρ/π) under a delta sun: E = E⊥·cosξ, and the
     floor's radiance, the same toward every direction, is L = ρ·E/π
-    (REFERENCES.md "Reflection equation" with f = ρ/π). The floor is the only
+    (docs/REFERENCES.md §Reflection equation, f = ρ/π). The floor is the only
     surface, so no other light reaches it or the meters."""
     l = _one_light(ctx.scene, LightKind.DISTANT)
     g = ctx.scene.geometry
@@ -654,7 +654,7 @@ def _uniform_surface(scene: Scene) -> tuple[float, tuple[float, float]]:
 
 def _furnace(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Closed furnace, every wall emitting L_e with albedo ρ: L = L_e/(1 − ρ)
-    everywhere and E = π·L_e/(1 − ρ) (REFERENCES.md "Furnace")."""
+    everywhere and E = π·L_e/(1 − ρ) (docs/REFERENCES.md §Furnace)."""
     rho, emission = _uniform_surface(ctx.scene)
     if np.ptp(ctx.scene.geometry.emission[:, ch]) != 0:
         raise UserError(f"{ctx.scene.path}: the furnace case expects every wall to emit the same radiance")
@@ -671,8 +671,8 @@ def _furnace(ctx: CaseContext, s: Sensor, ch: int) -> float:
 def _integrating_sphere(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Integrating sphere of albedo ρ with an isotropic point source (flux
     Φ = 4π·I) inside: the light reflected at least once reaches every wall
-    point alike, ρΦ/((1 − ρ)·S) with S the wall area (REFERENCES.md "Ideal
-    integrating sphere": Φ/(4πR²)·ρ/(1 − ρ) for S = 4πR²; the surface mean is
+    point alike, ρΦ/((1 − ρ)·S) with S the wall area (docs/REFERENCES.md
+    §Integrating sphere: Φ/(4πR²)·ρ/(1 − ρ) for S = 4πR²; the surface mean is
     exact for any closed enclosure, closed_forms.cie171_indirect_illuminance,
     and uniform on a sphere). The direct part is the point source's own
     E = I·cosξ/d² at the receiver (a patch: I·Ω/area), which equals Φ/(4πR²)

@@ -218,14 +218,13 @@ def _dome_texture_map(ctx: _Context, prim: Usd.Prim, path: str) -> np.ndarray:
     bad = int(np.sum(~np.isfinite(rgb).all(axis=-1) | (rgb < 0).any(axis=-1)))
     if bad:
         raise ctx.error(prim, f"texture:file {path}: {bad} texel(s) are negative, NaN or Inf")
-    weights = np.array([luminance_grey(e) for e in np.eye(3)])  # BT.709 Y per channel
     rgb = rgb.astype(np.float64)
     if _not_uniform(np.ptp(rgb, axis=-1).max(), float(rgb.max())):
         ctx.coloured[str(prim.GetPath())] = None
     h, w = rgb.shape[:2]
     if w != 2 * h:
         ctx.warn(f"{prim.GetPath()}: texture:file {path} is {w} x {h}, not 2:1; read as lat-long anyway")
-    return rgb @ weights
+    return luminance_grey(rgb)  # a grey texel keeps its value exactly
 
 
 def _is_geometry_light(ctx: _Context, prim: Usd.Prim) -> bool:
