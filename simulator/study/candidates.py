@@ -130,10 +130,11 @@ def _grid_on_prim(scene: Scene, spec: CandidateSpec, pid: int, label: str, multi
     if not (area2 > 0).any():
         raise UserError(f"{label}.on: prim {prim} has no area to put a grid on")
     n = cr.sum(axis=0)
-    n /= np.linalg.norm(n)
+    n_len = float(np.linalg.norm(n))
+    n = n / n_len if n_len > 0 else n
     unit = cr[area2 > 0] / area2[area2 > 0, None]
     origin = tri[0, 0]
-    if (unit @ n).min() < _FLAT_COS or np.abs((tri.reshape(-1, 3) - origin) @ n).max() > _FLAT_DIST_M:
+    if n_len < _FLAT_COS * area2.sum() or (unit @ n).min() < _FLAT_COS or np.abs((tri.reshape(-1, 3) - origin) @ n).max() > _FLAT_DIST_M:
         raise UserError(f"{label}.on: prim {prim} is not flat; a grid needs a planar prim (a floor, a ceiling, a desk top)")
     u, v = _plane_axes(n)
     uv = np.stack([(tri.reshape(-1, 3) - origin) @ u, (tri.reshape(-1, 3) - origin) @ v], axis=1)
