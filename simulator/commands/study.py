@@ -102,6 +102,10 @@ def main_study(path: str, out: str | None, scheduler: str | None) -> int:
     t0 = time.perf_counter()
     try:
         res = run_study(study, p, out_dir, scheduler=scheduler, on_chunk=bar, log=lambda m: print(m, file=sys.stderr))
+    except KeyboardInterrupt:
+        bar.close()
+        print(f"probesim: interrupted; finished chunks are kept in {out_dir}: run the same command again to resume", file=sys.stderr)
+        return 130
     finally:
         bar.close()
     for w in res.warnings:
@@ -110,5 +114,5 @@ def main_study(path: str, out: str | None, scheduler: str | None) -> int:
     files = write_outputs(res, _versions())
     for line in closing_note(res):
         print(line)
-    print(f"wrote {', '.join(f.name for f in files)} in {out_dir}")
+    print(f"wrote {', '.join(f.name for f in files)} in {out_dir} ({time.perf_counter() - t0:.1f} s in all)")
     return 0
