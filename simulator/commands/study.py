@@ -62,7 +62,7 @@ def closing_note(res) -> list[str]:
     ncand = len(res.candidates)
     lines = [
         f"{ncand} candidates ({', '.join(f'{s.name} {len(s.candidates)}' for s in res.sets)}), {len(res.scenarios)} scenarios "
-        f"in {len(res.trace_groups)} trace groups, {res.chunks_total} chunks ({res.chunks_computed} computed, "
+        f"in {len(res.trace_groups)} trace group{'s' if len(res.trace_groups) != 1 else ''}, {res.chunks_total} chunks ({res.chunks_computed} computed, "
         f"{res.chunks_loaded} resumed) {'in this process' if res.mode == 'inprocess' else f'on {res.mode} dask ({res.workers} workers)'}",
     ]
     per = t["trace_in_chunks"] / max(len(res.scenarios), 1)
@@ -75,16 +75,19 @@ def closing_note(res) -> list[str]:
     pl = res.placement
     if pl is not None:
         lines.append(f"placement ({pl.objective}, target {', '.join(pl.zones)}; greedy with lazy evaluation, "
-                     f"{pl.evaluations} evaluations for {pl.candidates} candidates):")  # fmt: skip
+                     f"{pl.evaluations} evaluations for {pl.candidates} candidates; score with no sensor {pl.baseline:.4f}):")  # fmt: skip
         for s in pl.steps:
             sep = "" if s.separable else f"  (not separable from {s.runner_up}: lead {s.lead:.4f} ± {s.lead_se:.4f})"
             lines.append(f"  k={s.k}  {s.sensor:<24} gain {s.gain:.4f} ± {s.gain_se:.4f}  score {s.score:.4f} ± {s.score_se:.4f}{sep}")
         lines.append("  zone -> sensor: " + ", ".join(f"{z} -> {sn}" for z, sn in pl.assignment.items()))
-    fails = sorted({f"{z}/{sc}: {k}" for (z, sc), chk in res.checks.items() for k, v in chk.items() if v == "fail"})
-    if any(res.checks.values()):
-        n = sum(len(c) for c in res.checks.values())
-        n_pass = sum(v == "pass" for c in res.checks.values() for v in c.values())
-        lines.append(f"compliance: {n_pass}/{n} target checks pass" + (f"; failing: {', '.join(fails[:6])}" + (" ..." if len(fails) > 6 else "") if fails else ""))
+    tally: dict[tuple[str, str], list[int]] = {}
+    for (z, _), chk in res.checks.items():
+        for k, v in chk.items():
+            t3 = tally.setdefault((z, k), [0, 0, 0])
+            t3[("pass", "fail", "unsure").index(v)] += 1
+    if tally:
+        lines.append("compliance (pass/fail/unsure over scenarios): " + "; ".join(
+            f"{z} {k} {p}/{f}/{u}" for (z, k), (p, f, u) in tally.items()))  # fmt: skip
     return lines
 
 

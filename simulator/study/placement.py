@@ -167,6 +167,7 @@ class Placement:
     assignment: dict[str, str] = field(default_factory=dict)  #: zone -> chosen sensor predicting it
     evaluations: int = 0
     replicates: int = 0
+    baseline: float = 0.0  #: score with no sensor (0 for correlation; the constant predictor's error otherwise)
 
     @property
     def chosen(self) -> list[str]:
@@ -190,7 +191,8 @@ def place_sensors(names: list[str], r: np.ndarray, r_se: np.ndarray, t: np.ndarr
     rb = r[None] + r_se[None] * rng.standard_normal((replicates,) + r.shape)
     tb = t[None] + t_se[None] * rng.standard_normal((replicates,) + t.shape)
     qb, baseb = gains(rb, tb, objective)
-    out = Placement(objective, zones, len(names), r.shape[1], evaluations=evals, replicates=replicates)
+    out = Placement(objective, zones, len(names), r.shape[1], evaluations=evals, replicates=replicates,
+                    baseline=float(_score(np.zeros(()), base, objective)))  # fmt: skip
     for j, i in enumerate(chosen):
         prev = chosen[:j]
         best_prev = q[prev].max(axis=0) if prev else np.zeros(q.shape[1])

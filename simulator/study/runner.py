@@ -46,6 +46,7 @@ class StudyResult:
     workers: int = 1
     timings_s: dict = field(default_factory=dict)
     chunk_wall_s: dict = field(default_factory=dict)
+    chunk_trace_s: dict = field(default_factory=dict)  #: (trace key, block) -> seconds tracing
     reference: dict | None = None
     warnings: list = field(default_factory=list)
     files: list = field(default_factory=list)
@@ -228,4 +229,5 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
         timings_s={"setup": t_setup - t0, "chunks": t_traced - t_chunks, "trace_in_chunks": trace_s,
                    "analysis": t_analysis - t_traced, "reference_run": t_end - t_analysis, "total": t_end - t0},
         chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings,
+        chunk_trace_s={(s.trace_key, s.block): float(np.sum(results[s.id]["trace_s"])) for s in specs},
     )  # fmt: skip

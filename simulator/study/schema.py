@@ -160,8 +160,11 @@ class CandidateSpec(_Model):
                 raise ValueError("points need 'normal' (the direction the sensors face)")
             if sum(c * c for c in self.normal) == 0.0:
                 raise ValueError("normal: zero-length vector")
-        elif not self.on:
-            raise ValueError("on: empty list")
+        else:
+            if not self.on:
+                raise ValueError("on: empty list")
+            if self.normal is not None:
+                raise ValueError("normal is for explicit points; a grid's sensors face its prim's front normal")
         return self
 
 
