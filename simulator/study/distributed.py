@@ -51,7 +51,7 @@ def run_chunks(specs: list[ChunkSpec], mode: str, workers: int, scheduler: str |
         try:
             client = Client(scheduler, timeout="20s")
         except (OSError, TimeoutError) as exc:
-            raise UserError(f"--scheduler: cannot reach {scheduler}: {exc}") from None
+            raise UserError(f"dask scheduler {scheduler}: cannot reach it: {exc}") from None
     else:
         cores = os.cpu_count() or 1
         threads = max(1, cores // max(workers, 1))
