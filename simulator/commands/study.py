@@ -20,7 +20,7 @@ class ChunkProgress:
         self.enabled = hasattr(self.stream, "isatty") and self.stream.isatty()
         self._drawn = False
 
-    def __call__(self, done: int, total: int, elapsed_s: float, first: list = []) -> None:  # noqa: B006
+    def __call__(self, done: int, total: int, elapsed_s: float) -> None:
         if not self.enabled:
             return
         if not hasattr(self, "_start"):

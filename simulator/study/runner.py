@@ -5,7 +5,7 @@ from __future__ import annotations
 import hashlib
 import os
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Callable
 
@@ -15,7 +15,7 @@ from simulator.errors import UserError
 from simulator.study.candidates import build_candidates
 from simulator.study.chunks import ChunkStore, StudyInterrupted, chunk_scene, make_chunks, readings_of
 from simulator.study.distributed import choose_mode, run_chunks
-from simulator.study.groups import derive_seed
+from simulator.study.groups import derive_seed, group_scene
 from simulator.study.objectives import compliance, zone_figures
 from simulator.study.placement import place_sensors
 from simulator.study.scenarios import expand_scenarios, resolve_groups, trace_groups_of
@@ -78,8 +78,6 @@ def _sim_dict(study: Study) -> dict:
 
 def _reference_run(study: Study, scene, candidates, groups, scenario, seed: int, threads: int) -> dict:
     """One ordinary run of ``scenario`` (all its lights at their levels in one trace) for the cost and agreement check."""
-    from dataclasses import replace
-
     from simulator.config.loader import SimulationConfig
     from simulator.engine.driver import Engine
     from simulator.pipeline import run_plan
@@ -91,11 +89,7 @@ def _reference_run(study: Study, scene, candidates, groups, scenario, seed: int,
         lv = scenario.levels.get(g, 0.0) if g else 0.0
         if lv > 0:
             lights.append(replace(l, emission=(l.emission[0] * lv, l.emission[1] * lv)))
-    g = scene.geometry
-    from simulator.scene.model import Geometry
-
-    geom = Geometry(g.points, g.triangles, g.albedo, np.zeros_like(g.emission), g.two_sided, g.prim, g.prim_names)
-    sc = replace(scene, geometry=geom, lights=lights, sensors=[], warnings=[])
+    sc = replace(group_scene(scene, []), lights=lights)
     sensors = [c.sensor for c in candidates]
     sim = SimulationConfig(**{**_sim_dict(study), "seed": seed})
     t0 = time.perf_counter()
@@ -156,6 +150,8 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
             results[s.id] = r
     loaded = len(results)
     todo = [s for s in specs if s.id not in results]
+    if study.simulation.threads:
+        todo = [replace(s, threads=study.simulation.threads) for s in todo]
     sched = scheduler or study.compute.scheduler
     used_mode, n_workers = choose_mode(mode or study.compute.mode, sched, len(todo), workers if workers is not None else study.compute.workers)
     done = loaded
