@@ -77,3 +77,22 @@ def test_candidate_errors_name_the_key():
         build_candidates(scene, [CandidateSpec(name="a", on=["/Office/Furniture/Shelf"])], "study.toml")
     with pytest.raises(UserError, match=r"wall_band_m: a 3 m band leaves nothing"):
         build_candidates(scene, [CandidateSpec(name="a", on=["/Office/Room/Floor"], wall_band_m=3.0)], "study.toml")
+
+
+def test_the_bundled_study_is_valid():
+    """configs/studies/office_study.toml validates; its candidates, scenarios and trace groups are the documented ones."""
+    from pathlib import Path
+
+    from simulator.scene.usd import load_stage
+    from simulator.study.candidates import build_candidates
+    from simulator.study.scenarios import expand_scenarios, resolve_groups, trace_groups_of
+    from simulator.study.schema import load_study
+
+    study, path = load_study(Path(__file__).resolve().parent.parent / "configs" / "studies" / "office_study.toml")
+    scene = load_stage(path.parent / study.stage, light_units="photometric", radiometric_spectrum="E")
+    sets = build_candidates(scene, study.candidates, str(path))
+    assert [len(s.candidates) for s in sets] == [39, 15]
+    groups, unassigned = resolve_groups(scene, study.group, str(path))
+    assert unassigned == [] and [len(v) for v in groups.values()] == [3, 3, 1, 1]
+    scen = expand_scenarios(study.scenario, list(groups), str(path))
+    assert len(scen) == 15 and len(trace_groups_of(scen, scene, groups, str(path))) == 3

@@ -3,7 +3,7 @@
 Checked here, before any stage is read: unknown keys, wrong types and values
 out of range are one-line :class:`~simulator.errors.UserError` messages that
 name the file and the key, in the style of ``probesim run``, e.g.
-``configs/office_study.toml: scenario[2].levels.sky: must be >= 0``.
+``office_study.toml: scenario[2].levels.sky: Input should be greater than or equal to 0``.
 Cross-references (a zone naming a candidate set, a scenario naming a group)
 are checked here too; what needs the stage (prim paths, light patterns,
 variant names) is checked when the stage is read (see
@@ -70,7 +70,7 @@ Schema
     replicates = 200                   # parametric bootstrap for score errors
 
     [output]
-    dir = "../out/office_study"        # default: "<study stem>/" beside the file
+    dir = "../out/office_study"        # default: "<study stem>.out/" beside the file
 """
 
 from __future__ import annotations
