@@ -76,9 +76,11 @@ def closing_note(res) -> list[str]:
     if pl is not None:
         lines.append(f"placement ({pl.objective}, target {', '.join(pl.zones)}; greedy with lazy evaluation, "
                      f"{pl.evaluations} evaluations for {pl.candidates} candidates; score with no sensor {pl.baseline:.4f}):")  # fmt: skip
+        pos = {c.sensor.name: c.position for c in res.candidates}
         for s in pl.steps:
             sep = "" if s.separable else f"  (not separable from {s.runner_up}: lead {s.lead:.4f} ± {s.lead_se:.4f})"
-            lines.append(f"  k={s.k}  {s.sensor:<24} gain {s.gain:.4f} ± {s.gain_se:.4f}  score {s.score:.4f} ± {s.score_se:.4f}{sep}")
+            at = "({:.2f}, {:.2f}, {:.2f})".format(*pos[s.sensor])
+            lines.append(f"  k={s.k}  {s.sensor:<16} at {at}  gain {s.gain:.4f} ± {s.gain_se:.4f}  score {s.score:.4f} ± {s.score_se:.4f}{sep}")
         lines.append("  zone -> sensor: " + ", ".join(f"{z} -> {sn}" for z, sn in pl.assignment.items()))
     tally: dict[tuple[str, str], list[int]] = {}
     for (z, _), chk in res.checks.items():

@@ -80,11 +80,16 @@ def match_prims(names: list[str], pattern: str) -> list[int]:
 
 
 def _plane_axes(n: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """In-plane unit axes (u, v) with u × v = n; u along world X where it can be."""
+    """In-plane unit axes (u, v): u along world X where it can be, v turned
+    toward +Y (or +Z), so cell ``[i, j]`` grows with x and y on a floor and a
+    ceiling alike."""
     ref = np.array([1.0, 0.0, 0.0]) if abs(n[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
     u = ref - np.dot(ref, n) * n
     u /= np.linalg.norm(u)
-    return u, np.cross(n, u)
+    v = np.cross(n, u)
+    if v[1] < -1e-12 or (abs(v[1]) <= 1e-12 and v[2] < 0):
+        v = -v
+    return u, v
 
 
 def _inside_triangles_2d(pts: np.ndarray, tris: np.ndarray) -> np.ndarray:
