@@ -1,7 +1,6 @@
 """``probesim study``: user mistakes are one line and exit 2 with nothing written; a run prints its closing note."""
 
 import importlib.util
-import sys
 from pathlib import Path
 
 import pytest
@@ -62,3 +61,24 @@ def test_a_study_prints_its_closing_note_and_writes_its_outputs(tmp_path, capsys
     rec = json.loads((out / "study.json").read_text())
     assert rec["chunks"]["total"] == 4 and rec["reference_run"]["sensors_within_4_sigma"] == 18
     assert len(rec["placement"]["steps"]) == 2
+
+
+def test_progress_shows_chunks_and_time_left_on_a_terminal():
+    import io
+
+    from simulator.commands.study import ChunkProgress
+
+    class Tty(io.StringIO):
+        def isatty(self):
+            return True
+
+    s = Tty()
+    bar = ChunkProgress(s)
+    bar(0, 4, 0.0)
+    bar(1, 4, 2.0)
+    bar.close()
+    text = s.getvalue()
+    assert "chunks [" in text and "1/4" in text and "~6 s left" in text and text.endswith("\n")
+    quiet = io.StringIO()  # not a terminal: nothing drawn (the closing note is the summary)
+    ChunkProgress(quiet)(1, 4, 2.0)
+    assert quiet.getvalue() == ""

@@ -13,13 +13,12 @@ from __future__ import annotations
 import itertools
 from dataclasses import dataclass, field
 
-import numpy as np
 
 from simulator.errors import UserError
 from simulator.scene.model import LightKind, Scene
 from simulator.study.candidates import match_prims
 from simulator.study.schema import GroupSpec, ScenarioSpec
-from simulator.study.sun import solar_position, sun_direction
+from simulator.study.sun import solar_position
 
 __all__ = ["Scenario", "TraceGroup", "expand_scenarios", "resolve_groups", "trace_groups_of"]
 
