@@ -37,7 +37,7 @@ from simulator.study.sun import sun_direction, sun_frame
 __all__ = ["ChunkSpec", "ChunkStore", "compute_chunk", "atomic_write", "make_chunks", "StudyInterrupted"]
 
 #: bump when a change to the tracing would change a chunk's numbers
-CHUNK_FORMAT = 1
+CHUNK_FORMAT = 2
 
 
 class StudyInterrupted(Exception):
@@ -60,6 +60,7 @@ class ChunkSpec:
     sensors: tuple[Sensor, ...]
     sim: dict
     seeds: tuple[tuple[str, int], ...]
+    levels: tuple[tuple[tuple[str, float], ...], ...] = ()  #: the trace group's dimming vectors (adaptive targets)
     threads: int = 0
 
 
@@ -95,16 +96,17 @@ def make_chunks(trace_groups, sensors: list[Sensor], groups: dict[str, list[str]
         if not tg.groups:
             continue
         gl = tuple((g, tuple(groups[g])) for g in tg.groups)
+        levels = tuple(tuple((g, float(sc.levels.get(g, 0.0))) for g in tg.groups) for sc in tg.scenarios)
         for b, lo in enumerate(range(0, len(sensors), block)):
             ids = tuple(range(lo, min(lo + block, len(sensors))))
             seeds = tuple((g, derive_seed(seed, tg.key, b, g)) for g in tg.groups)
             ident = json.dumps({
                 "format": CHUNK_FORMAT, "stage": stage_sha, "light_units": light_units, "key": tg.key, "groups": gl,
-                "sensors": [_sensor_text(sensors[i]) for i in ids], "sim": sim, "seeds": seeds,
+                "sensors": [_sensor_text(sensors[i]) for i in ids], "sim": sim, "seeds": seeds, "levels": levels,
             }, sort_keys=True)  # fmt: skip
             cid = hashlib.sha256(ident.encode()).hexdigest()[:20]
             out.append(ChunkSpec(cid, tg.key, b, str(stage), light_units, tuple(sorted(tg.variants.items())), tg.sun, gl, ids,
-                                 tuple(sensors[i] for i in ids), sim, seeds))  # fmt: skip
+                                 tuple(sensors[i] for i in ids), sim, seeds, levels))  # fmt: skip
     return out
 
 
@@ -132,7 +134,8 @@ def compute_chunk(spec: ChunkSpec) -> dict:
     t0 = time.perf_counter()
     scene = chunk_scene(spec)
     sim = SimulationConfig(**spec.sim)
-    gr = trace_groups(scene, list(spec.sensors), {g: list(ls) for g, ls in spec.groups}, sim, dict(spec.seeds), threads=spec.threads)
+    gr = trace_groups(scene, list(spec.sensors), {g: list(ls) for g, ls in spec.groups}, sim, dict(spec.seeds), threads=spec.threads,
+                      scenarios=[dict(lv) for lv in spec.levels])  # fmt: skip
     return {
         "id": spec.id, "names": gr.names, "mean": gr.mean, "stderr": gr.stderr, "cov": gr.cov, "samples": gr.samples,
         "trace_s": gr.trace_s, "wall_s": time.perf_counter() - t0, "host": socket.gethostname(), "pid": os.getpid(),

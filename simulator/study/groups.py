@@ -23,6 +23,22 @@ and of each emitter a path hits) would trace all groups on shared paths for
 about the cost of one run, and its per-sample group vectors would give the
 full covariance; :class:`GroupReadings` is the interface it would fill.
 
+Adaptive targets. With ``rel_error`` set and the trace group's scenarios
+given, the target is the recombined reading's, not each group's own: a pilot
+of ``samples`` per sensor and group estimates the group readings ``m_g``;
+in scenario ``j`` the half-width budget ``rel·E_j`` is shared in proportion
+to the contributions ``w_jg = d_jg·m_g / E_j`` (which sum to 1), so that
+``Σ_g (d_jg·σ_g)² ≤ (rel·E_j / z)²`` holds when each group meets
+
+.. math:: z\\,\\sigma_g \\le \\mathrm{rel}_g\\, m_g, \\qquad
+          \\mathrm{rel}_g = \\mathrm{rel} \\cdot \\min_j \\sqrt{E_j / (d_{jg}\\, m_g)} \\;\\ge\\; \\mathrm{rel}.
+
+A group that gives a tenth of a sensor's light may stop at √10 times the
+relative error, about a tenth of the samples. Targets are rounded down to
+steps of √2 (sensors with one step are run together) and capped at
+:data:`MAX_GROUP_REL_ERROR`. The pilot is an estimate, so the recombined
+target is met approximately, as an adaptive run's is.
+
 The engine's light mask (``Engine.set_light_mask``) only culls next-event
 estimates at a sensor's first vertex (it is the planner's "light wholly
 behind the sensor" switch); light a masked group sends by interreflection
@@ -40,7 +56,10 @@ import numpy as np
 
 from simulator.scene.model import Geometry, Scene, Sensor
 
-__all__ = ["GroupReadings", "trace_groups", "group_scene", "derive_seed"]
+__all__ = ["GroupReadings", "trace_groups", "group_scene", "derive_seed", "group_targets", "MAX_GROUP_REL_ERROR"]
+
+#: loosest relative target a group trace is given
+MAX_GROUP_REL_ERROR = 0.5
 
 
 def derive_seed(*parts) -> int:
@@ -93,8 +112,55 @@ def group_scene(scene: Scene, light_names: list[str]) -> Scene:
     return replace(scene, geometry=geom, lights=[l for l in scene.lights if l.name in keep], sensors=[], warnings=[])
 
 
+def group_targets(pilot: np.ndarray, scenarios: list[dict[str, float]], names: list[str], rel_error: float) -> np.ndarray:
+    """Per-group, per-sensor relative targets ``rel_g`` (G, S) from pilot readings (see Notes of the module).
+
+    Parameters
+    ----------
+    pilot : ndarray, shape (G, S, 2)
+        Pilot group readings.
+    scenarios : list of dict
+        Dimming vectors (group name → level) of the trace group.
+    names : list of str
+        Group order of ``pilot``.
+    rel_error : float
+        The recombined readings' target.
+    """
+    m = np.abs(pilot).max(axis=2)  # both channels are proportional for grey scenes; take the larger
+    d = np.array([[float(sc.get(n, 0.0)) for n in names] for sc in scenarios])  # (J, G)
+    e = np.einsum("jg,gs->js", d, m)  # (J, S)
+    out = np.full(m.shape, np.inf)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for g in range(len(names)):
+            lit = d[:, g] > 0
+            if not lit.any():
+                continue
+            ratio = e[lit] / (d[lit, g][:, None] * m[g][None, :])  # (J_lit, S), >= 1
+            out[g] = np.nanmin(np.where(np.isfinite(ratio), ratio, np.inf), axis=0)
+    rel = rel_error * np.sqrt(np.maximum(out, 1.0))
+    steps = np.floor(2.0 * np.log2(np.minimum(rel, MAX_GROUP_REL_ERROR) / rel_error) + 1e-9)
+    return np.minimum(rel_error * 2.0 ** (np.maximum(steps, 0.0) / 2.0), MAX_GROUP_REL_ERROR)
+
+
+def _run_targets(engine, plan, sim, rel: np.ndarray):
+    """Like :func:`simulator.pipeline.run_plan`, with a relative target per sensor (run in groups of equal target)."""
+    n = len(plan.sensors)
+    mean, stderr, samples = np.zeros((n, 2)), np.zeros((n, 2)), np.zeros(n, np.int64)
+    engine.set_light_mask(plan.light_mask([l.name for l in engine.scene.lights]))
+    for method, ids in plan.groups().items():
+        for r in np.unique(rel[ids]) if method != "analytic" else [None]:
+            sub = ids if r is None else ids[rel[ids] == r]
+            res = engine.run(
+                method, samples=sim.samples, seed=sim.seed, rel_error=None if r is None else float(r), abs_error=sim.abs_error,
+                max_samples=sim.sample_cap, time_limit_s=None, max_depth=sim.max_depth, component=sim.component,
+                sensor_ids=sub, confidence=sim.confidence,
+            )  # fmt: skip
+            mean[sub], stderr[sub], samples[sub] = res.mean[sub], res.stderr[sub], res.samples[sub]
+    return mean, stderr, samples
+
+
 def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str]], sim, seeds: dict[str, int],
-                 threads: int = 0) -> GroupReadings:  # fmt: skip
+                 threads: int = 0, scenarios: list[dict[str, float]] | None = None) -> GroupReadings:  # fmt: skip
     """Trace each light group's contribution to every sensor.
 
     Parameters
@@ -110,6 +176,10 @@ def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str
         Seed per group (independent streams).
     threads : int
         CPU worker threads of the engine; 0 = all cores.
+    scenarios : list of dict, optional
+        The dimming vectors these readings will be recombined into. With an
+        adaptive ``sim``, each group's target follows from them (see Notes of
+        the module); without, every group must meet ``rel_error`` on its own.
 
     Returns
     -------
@@ -126,14 +196,30 @@ def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str
     stderr = np.zeros((n_g, n_s, 2))
     samples = np.zeros((n_g, n_s), np.int64)
     trace_s = np.zeros(n_g)
+    runs = []
     for k, name in enumerate(names):
         sub = group_scene(scene, groups[name])
         t0 = time.perf_counter()
         engine = Engine(sub, sensors, device=sim.device, threads=threads)
         plan = make_plan(sub, sensors, sim.method, sim.component)
-        res = run_plan(engine, plan, replace(sim, seed=int(seeds[name])))
+        runs.append((engine, plan, replace(sim, seed=int(seeds[name]))))
         trace_s[k] = time.perf_counter() - t0
-        mean[k], stderr[k], samples[k] = res.mean, res.stderr, res.samples
+    if sim.adaptive and scenarios:
+        for k, (engine, plan, s) in enumerate(runs):
+            t0 = time.perf_counter()
+            mean[k] = run_plan(engine, plan, replace(s, rel_error=None)).mean
+            trace_s[k] += time.perf_counter() - t0
+        rel = group_targets(mean, scenarios, names, sim.rel_error)
+        for k, (engine, plan, s) in enumerate(runs):
+            t0 = time.perf_counter()
+            mean[k], stderr[k], samples[k] = _run_targets(engine, plan, s, rel[k])
+            trace_s[k] += time.perf_counter() - t0
+    else:
+        for k, (engine, plan, s) in enumerate(runs):
+            t0 = time.perf_counter()
+            res = run_plan(engine, plan, s)
+            trace_s[k] += time.perf_counter() - t0
+            mean[k], stderr[k], samples[k] = res.mean, res.stderr, res.samples
     cov = np.zeros((n_s, 2, n_g, n_g))
     idx = np.arange(n_g)
     cov[:, :, idx, idx] = np.transpose(stderr**2, (1, 2, 0))
