@@ -139,7 +139,8 @@ from simulator.scene.usd.context import _Context
 # here; so are TESSELLATION_ATTR, MAX_SPHERE_FACES and DOME_TEXTURE_FORMATS.
 from simulator.scene.usd.geometry import MAX_SPHERE_FACES, SPHERE_SEGMENTS, TESSELLATION_ATTR  # noqa: F401
 from simulator.scene.usd.geometry import _GeometryBuilder, _read_gprim
-from simulator.scene.usd.lights import DOME_TEXTURE_FORMATS, _read_light  # noqa: F401
+from simulator.scene.usd.instancers import _read_instancer
+from simulator.scene.usd.lights import DOME_TEXTURE_FORMATS, _is_supported_light, _read_light, _require_light  # noqa: F401
 from simulator.scene.usd.materials import DEFAULT_ALBEDO, _finish_warnings
 from simulator.scene.usd.sensors import DEFAULT_PROBE_RESOLUTION, SENSOR_ATTR_PREFIX, SENSOR_KINDS, _is_sensor, _read_sensor
 from simulator.scene.usd.stage import (
@@ -150,6 +151,7 @@ from simulator.scene.usd.stage import (
     _reading_context,
     _select_variants,
     _traverse,
+    _warn_unauthored_units,
     _world_frame,
 )
 
@@ -176,6 +178,7 @@ def load_stage(
     light_units: str = "photometric",
     radiometric_spectrum: str | float = "E",
     variants: dict[str, str] | None = None,
+    require_light: bool = True,
 ) -> Scene:
     """Read a USD stage into a :class:`Scene` in world metres, Z up.
 
@@ -197,6 +200,10 @@ def load_stage(
         Variant selections, variant-set name to variant name (a config's
         ``variants`` table), applied before anything is read; see
         :func:`_select_variants`.
+    require_light : bool
+        Refuse a stage with nothing that emits (no UsdLux light, no emitting
+        geometry): every reading would be zero. ``False`` reads geometry
+        alone (tools that only look at the surfaces).
 
     Returns
     -------
@@ -209,8 +216,8 @@ def load_stage(
     UserError
         The file is missing or not a USD stage, or the stage has a value
         probesim cannot honour (negative intensity or size, albedo outside
-        [0, 1), NaN/Inf transform, unknown sensor kind, ...). The message
-        names the file and the prim.
+        [0, 1], NaN/Inf transform, unknown sensor kind, ...), or it has no
+        light (with ``require_light``). The message names the file and the prim.
 
     Notes
     -----
@@ -252,7 +259,10 @@ def load_stage(
     mpu, up_axis = _world_frame(stage, path)
     ctx = _reading_context(path, mpu, up_axis, light_units, radiometric_spectrum)
     _collect_composition_errors(stage, ctx)
+    _warn_unauthored_units(stage, ctx)
     geometry, lights, sensors = _read_prims(ctx, stage)
+    if require_light:
+        _require_light(ctx, lights, geometry)
     _finish_warnings(ctx)
     return Scene(
         geometry=geometry,
@@ -266,18 +276,29 @@ def load_stage(
 
 
 def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light], list[Sensor]]:
-    """Walk every active prim, instance proxies included, and sort it into geometry, lights, sensors."""
+    """Walk every active prim, instance proxies included, and sort it into geometry, lights, sensors.
+
+    A PointInstancer's subtree is not walked: its prototypes are drawn where
+    its instances stand (:mod:`.instancers`), not in their own place.
+    """
     geo = _GeometryBuilder()
     lights: list[Light] = []
     sensors: list[Sensor] = []
-    for prim in _traverse(stage):
+    walk = _traverse(stage)
+    for prim in walk:
         if _is_sensor(prim):
             sensors.append(_read_sensor(ctx, prim))  # sensors ignore visibility and purpose
         if not _is_rendered(ctx, prim):
             continue
-        if prim.IsA(UsdGeom.Gprim):
+        if prim.IsA(UsdGeom.PointInstancer):
+            walk.PruneChildren()
+            _read_instancer(ctx, prim, geo)
+        elif prim.IsA(UsdGeom.Gprim):
             _read_gprim(ctx, prim, geo)  # MeshLightAPI prims too: geometry that emits
         elif prim.HasAPI(UsdLux.LightAPI):
+            if not _is_supported_light(prim):
+                ctx.not_read[prim.GetTypeName() or "untyped light"] += 1
+                continue
             light = _read_light(ctx, prim)
             if light is not None:
                 lights.append(light)
