@@ -158,8 +158,9 @@ def _face_surfaces(ctx: _Context, prim: Usd.Prim, n_faces: int):
     keep = np.full(n_faces, base is not None)
     for subset in subsets:
         sub = subset.GetPrim()
-        if not UsdGeom.Imageable(sub) or str(subset.GetElementTypeAttr().Get(ctx.time)) != "face":
-            ctx.ignored[f"GeomSubset elementType {subset.GetElementTypeAttr().Get(ctx.time)}"] += 1
+        element = str(subset.GetElementTypeAttr().Get(ctx.time))
+        if element != "face":
+            ctx.ignored[f"materialBind GeomSubset of elementType {element}"] += 1
             continue
         faces = np.asarray(subset.GetIndicesAttr().Get(ctx.time) or [], np.int64)
         if len(faces) and (faces.min() < 0 or faces.max() >= n_faces):
