@@ -164,8 +164,12 @@ def _preview_surface_inputs(ctx: _Context, material: UsdShade.Material) -> dict 
     """Read diffuseColor/emissiveColor/opacity off a material's UsdPreviewSurface."""
     shader, _, _ = material.ComputeSurfaceSource()
     if not shader or shader.GetShaderId() != "UsdPreviewSurface":
-        ident = (shader.GetShaderId() if shader else None) or "no"
-        ctx.not_read[f"material(s) with {ident} surface shader (read as displayColor or the default albedo)"] += 1
+        ident = shader.GetShaderId() if shader else None
+        if not ident:  # e.g. only an outputs:mdl:surface or outputs:mtlx:surface
+            contexts = sorted({o.GetBaseName().rpartition(":")[0] or "universal" for o in material.GetSurfaceOutputs()
+                               if o.HasConnectedSource()})
+            ident = "/".join(contexts) or "no"
+        ctx.not_read[f"material(s) with a {ident} surface, not UsdPreviewSurface (displayColor or 0.18 used)"] += 1
         return None
     _count_ignored_inputs(ctx, shader)
     return {name: _input_value(ctx, shader, name, default) for name, default in _PREVIEW_DEFAULTS.items()}
