@@ -328,7 +328,7 @@ def _mesh_polygons(ctx: _Context, prim: Usd.Prim):
     if len(indices) and (indices.min() < 0 or indices.max() >= len(points)):
         raise ctx.error(prim, f"faceVertexIndices out of range for {len(points)} points")
     if mesh.GetHoleIndicesAttr().Get(ctx.time):
-        ctx.warn(f"{prim.GetPath()}: holeIndices ignored (hole faces are kept)")
+        ctx.ignored["holeIndices (hole faces kept)"] += 1
     scheme = mesh.GetSubdivisionSchemeAttr()
     if scheme.HasAuthoredValue() and str(scheme.Get(ctx.time)) != UsdGeom.Tokens.none:
         ctx.subdivided[str(scheme.Get(ctx.time))] += 1

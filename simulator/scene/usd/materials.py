@@ -224,6 +224,6 @@ def _display_color(ctx: _Context, prim: Usd.Prim):
         values = np.asarray(pv.ComputeFlattened(ctx.time) or [], float).reshape(-1, 3)
         if len(values):
             if len(values) > 1 and np.ptp(values, axis=0).max() > 0:
-                ctx.warn(f"{prim.GetPath()}: varying displayColor averaged to one albedo")
+                ctx.ignored["varying primvars:displayColor (averaged to one albedo)"] += 1
             return tuple(values.mean(axis=0)), f"{prim.GetPath()}.primvars:displayColor"
     return _PREVIEW_DEFAULTS["diffuseColor"], "the default albedo"
