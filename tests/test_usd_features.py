@@ -461,3 +461,60 @@ def test_dome_texture_errors_name_the_file(tmp_path):
     body = 'def DomeLight "Sky"\n{\n    asset inputs:texture:file = @sky.hdr@\n}\n'
     with pytest.raises(UserError, match=r"s\.usda: /Sky: texture:file .*sky\.hdr: not a readable Radiance"):
         load_stage(stage(tmp_path, body))
+
+
+# --------------------------------------------------------------------------- #
+# albedo 1: accepted with a warning, refused when it seals light in
+# --------------------------------------------------------------------------- #
+
+WHITE = grey("Snow", 1.0)
+BULB = ('def SphereLight "Bulb"\n{{\n    float inputs:radius = 0.1\n    double3 xformOp:translate = {at}\n'
+        '    uniform token[] xformOpOrder = ["xformOp:translate"]\n}}\n')
+
+
+def _quad(name: str, corners) -> str:
+    pts = ", ".join(f"({x}, {y}, {z})" for x, y, z in corners)
+    return (f'def Mesh "{name}"\n{{\n    int[] faceVertexCounts = [4]\n    int[] faceVertexIndices = [0, 1, 2, 3]\n'
+            f'    point3f[] points = [{pts}]\n    rel material:binding = </Snow>\n}}\n')
+
+
+def _room_of_quads(skip: int | None = None) -> str:
+    """The six faces of the cube [-2, 2]^3 as six separate Meshes (their corners coincide exactly)."""
+    h = 2
+    faces = [
+        [(-h, -h, -h), (h, -h, -h), (h, h, -h), (-h, h, -h)], [(-h, -h, h), (-h, h, h), (h, h, h), (h, -h, h)],
+        [(-h, -h, -h), (-h, -h, h), (h, -h, h), (h, -h, -h)], [(-h, h, -h), (h, h, -h), (h, h, h), (-h, h, h)],
+        [(-h, -h, -h), (-h, h, -h), (-h, h, h), (-h, -h, h)], [(h, -h, -h), (h, -h, h), (h, h, h), (h, h, -h)],
+    ]
+    return "".join(_quad(f"Wall{i}", f) for i, f in enumerate(faces) if i != skip)
+
+
+@pytest.mark.parametrize("room", ["cube", "quads"])
+def test_light_sealed_in_a_closed_white_room_is_refused(tmp_path, room):
+    """A sphere light inside a closed albedo-1 room (one Cube, or six separate quads
+    whose corners meet): nothing absorbs, the reading diverges: a UserError naming
+    the light and a wall."""
+    walls = 'def Cube "Room"\n{\n    double size = 4\n    rel material:binding = </Snow>\n}\n' if room == "cube" \
+        else _room_of_quads()
+    path = stage(tmp_path, WHITE + walls + BULB.format(at=(0, 0, 1)))
+    with pytest.raises(UserError, match=r"s\.usda: /Bulb is sealed inside a closed surface of albedo 1 \(/(Room|Wall0)\)"):
+        _load_stage(path)
+
+
+def test_white_surfaces_that_let_light_out_are_accepted_with_a_warning(tmp_path):
+    """The same room with one wall missing, or the light outside the closed cube:
+    accepted, albedo exactly 1, with the albedo-1 warning."""
+    for body in (_room_of_quads(skip=1) + BULB.format(at=(0, 0, 1)),
+                 'def Cube "Room"\n{\n    double size = 4\n    rel material:binding = </Snow>\n}\n'
+                 + BULB.format(at=(0, 0, 5))):
+        s = _load_stage(stage(tmp_path, WHITE + body))
+        assert np.all(s.geometry.albedo == 1.0)
+        assert sum(w.startswith("albedo 1 (no absorption)") for w in s.warnings) == 1
+
+
+def test_white_emitting_walls_are_refused(tmp_path):
+    """A closed albedo-1 cube whose walls emit (a lossless furnace): refused."""
+    mat = shader_material("Snow", "color3f inputs:diffuseColor = (1, 1, 1)\n        color3f inputs:emissiveColor = (1, 1, 1)")
+    body = mat + 'def Cube "Room"\n{\n    double size = 4\n    rel material:binding = </Snow>\n}\n'
+    with pytest.raises(UserError, match=r"emissive surface is sealed inside a closed surface of albedo 1 \(/Room\)"):
+        _load_stage(stage(tmp_path, body))

@@ -171,13 +171,15 @@ import os
 
 from pxr import Usd, UsdGeom, UsdLux
 
-from simulator.scene.model import Geometry, Light, Scene, Sensor
+from simulator.errors import UserError
+from simulator.scene.model import Geometry, Light, LightKind, Scene, Sensor
 from simulator.scene.usd.context import _Context
 
 # The public constants live with the code that uses them and are re-exported
 # here; so are TESSELLATION_ATTR, MAX_SPHERE_FACES and DOME_TEXTURE_FORMATS.
 from simulator.scene.usd.geometry import MAX_SPHERE_FACES, SPHERE_SEGMENTS, TESSELLATION_ATTR  # noqa: F401
 from simulator.scene.usd.geometry import _GeometryBuilder, _read_gprim
+from simulator.scene.usd.enclosures import sealed_light
 from simulator.scene.usd.instancers import _read_instancer
 from simulator.scene.usd.lights import DOME_TEXTURE_FORMATS, _is_supported_light, _read_light, _require_light  # noqa: F401
 from simulator.scene.usd.materials import DEFAULT_ALBEDO, _finish_warnings
@@ -302,6 +304,7 @@ def load_stage(
     geometry, lights, sensors = _read_prims(ctx, stage)
     if require_light:
         _require_light(ctx, lights, geometry)
+    _refuse_sealed_light(ctx, geometry, lights)
     _finish_warnings(ctx)
     return Scene(
         geometry=geometry,
@@ -312,6 +315,23 @@ def load_stage(
         up_axis=up_axis,
         warnings=ctx.warnings,
     )
+
+
+def _refuse_sealed_light(ctx: _Context, geometry: Geometry, lights: list[Light]) -> None:
+    """Refuse light sealed in a closed albedo-1 surface: nothing absorbs it, every reading there diverges.
+
+    See :mod:`.enclosures`. Lights at infinity (distant, dome) are outside everything.
+    """
+    if not ctx.white:
+        return
+    placed = [(l.name, l.position) for l in lights if l.kind not in (LightKind.DISTANT, LightKind.DOME)]
+    found = sealed_light(geometry.points, geometry.triangles, geometry.albedo, geometry.emission, placed)
+    if found is not None:
+        name, tri = found
+        wall = geometry.prim_names[geometry.prim[tri]]
+        raise UserError(f"{ctx.path}: {name} is sealed inside a closed surface of albedo 1 ({wall}): nothing "
+                        "absorbs its light, so the readings diverge (a trace would stop only at max_depth or "
+                        "65536 bounces); make the albedo less than 1 or open the enclosure")
 
 
 def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light], list[Sensor]]:

@@ -125,7 +125,11 @@ def _finish_warnings(ctx: _Context) -> None:
     scene that is the right reading (E/pi off a white floor); in an
     enclosure no light escapes from, the true reading is infinite and the
     estimate is cut at ``max_depth`` bounces (65,536 vertices when
-    unlimited), finite but meaningless and slow.
+    unlimited), finite but meaningless and slow (measured: a closed 4 m
+    albedo-1 cube around a sphere light read 26,964 lx where albedo 0.99
+    reads 44 lx, at 65,536 rays per sample). Light sealed in a watertight
+    albedo-1 surface is refused (:mod:`.enclosures`); the warning covers
+    the enclosures that check cannot see.
     """
     if ctx.coloured:
         ctx.warn(f"coloured albedo/emission/light colour reduced to luminance grey: {_name_list(list(ctx.coloured))}")
@@ -135,8 +139,8 @@ def _finish_warnings(ctx: _Context) -> None:
                  f"({len(ctx.textures)} texture file(s))")
     if ctx.white:
         ctx.warn(f"albedo 1 (no absorption) on {_name_list(list(ctx.white))}: paths end there only by escaping "
-                 "the scene; a reading inside an enclosure that no light leaves diverges and is cut at "
-                 "max_depth (65536 bounces when unlimited)")
+                 "the scene; in an enclosure no light leaves the reading diverges, and unless the enclosure is "
+                 "watertight (then the stage is refused) it is cut at max_depth (65536 bounces when unlimited)")
     if ctx.subdivided:
         meshes = ", ".join(f"{n} {scheme}" for scheme, n in sorted(ctx.subdivided.items()))
         ctx.warn(f"subdivision surfaces read as their control cage (not refined): {meshes} mesh(es)")
