@@ -197,6 +197,31 @@ over "Elsewhere"
     assert sorted(map(tuple, np.unique(corner, axis=0))) == [(10, 0, 2), (20, 0, 2), (30, 0, 2), (40, 0, 3)]
 
 
+def test_point_instancer_hides_invisible_and_guide_prims_inside_prototypes(tmp_path):
+    """Inside a prototype, a mesh with ``visibility = "invisible"`` and one of
+    ``purpose = "guide"`` are not drawn; the visible sibling is, at both instances;
+    a light inside a prototype is not read and is counted in the summary."""
+    body = """
+def PointInstancer "I"
+{
+    rel prototypes = [</I/P>]
+    int[] protoIndices = [0, 0]
+    point3f[] positions = [(0, 0, 0), (5, 0, 0)]
+    def Xform "P"
+    {
+""" + tri("Shown") + tri("Hidden", 'token visibility = "invisible"') + tri("Guide", 'uniform token purpose = "guide"') + """
+        def SphereLight "Lamp"
+        {
+        }
+    }
+}
+"""
+    s = load_stage(stage(tmp_path, body))
+    assert s.geometry.n_triangles == 2
+    assert s.geometry.prim_names == ["/I[2 x /I/P/Shown]"]
+    assert "s.usda: not read: 1 UsdLux light(s) in PointInstancer prototypes" in s.warnings
+
+
 def test_point_instancer_errors_name_the_prim(tmp_path):
     """A protoIndex past the prototypes is a UserError naming the instancer."""
     body = """

@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from pxr import Usd, UsdGeom, UsdShade
+from pxr import Usd, UsdGeom, UsdShade, UsdSkel
 
 from simulator.scene.model import Geometry
 from simulator.scene.usd.context import _Context, _get
@@ -213,6 +213,8 @@ def _gprim_polygons(ctx: _Context, prim: Usd.Prim):
     Unsupported gprims (curves, points, NURBS, volumes) are counted for the
     summary warning.
     """
+    if prim.HasAPI(UsdSkel.BindingAPI):
+        ctx.ignored["skinning (UsdSkel: read in its unposed points)"] += 1
     if prim.IsA(UsdGeom.Mesh):
         return _mesh_polygons(ctx, prim)
     if prim.IsA(UsdGeom.Cube):
