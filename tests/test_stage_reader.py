@@ -16,17 +16,10 @@ import pytest
 
 from simulator.errors import UserError
 from simulator.scene.model import LightKind, SensorKind
-from simulator.scene.usd import DEFAULT_ALBEDO, SPHERE_SEGMENTS
-from simulator.scene.usd import load_stage as _load_stage
+from simulator.scene.usd import DEFAULT_ALBEDO, SPHERE_SEGMENTS, load_stage
 from simulator.units import luminous_efficacy, luminance_grey
 
 STAGES = Path(__file__).resolve().parents[1] / "stages"
-
-
-def load_stage(path, **kw):
-    """The reader with ``require_light`` off: most stages here are geometry alone."""
-    kw.setdefault("require_light", False)
-    return _load_stage(path, **kw)
 
 
 def write_stage(tmp_path: Path, body: str, mpu: float = 1.0, up: str = "Z", name: str = "s.usda") -> Path:

@@ -19,12 +19,7 @@ from simulator.commands.cli import main
 from simulator.errors import UserError
 from simulator.io.hdr import decode_rgbe, encode_rgbe
 from simulator.io.images import srgb_to_linear
-from simulator.scene.usd import load_stage as _load_stage
-
-
-def load_stage(path, **kw):
-    kw.setdefault("require_light", False)
-    return _load_stage(path, **kw)
+from simulator.scene.usd import load_stage
 
 
 def stage(tmp_path: Path, body: str, header: str = "metersPerUnit = 1\n    upAxis = \"Z\"",
@@ -423,12 +418,14 @@ def test_subdivision_surfaces_are_read_as_their_cage_with_one_warning(tmp_path):
 
 
 def test_stage_without_light_is_refused(tmp_path):
-    """Nothing emits: a UserError naming the stage. An emissive surface counts as a light."""
+    """Nothing emits: with ``require_light`` (as a run asks) a UserError naming the
+    stage. An emissive surface counts as a light."""
     path = stage(tmp_path, tri("T"))
     with pytest.raises(UserError, match=r"s\.usda: no light in the stage"):
-        _load_stage(path)
+        load_stage(path, require_light=True)
+    assert load_stage(path).geometry.n_triangles == 1  # geometry alone is readable
     glow = shader_material("Glow", "color3f inputs:emissiveColor = (1, 1, 1)")
-    assert _load_stage(stage(tmp_path, glow + tri("T", "rel material:binding = </Glow>"))).lights == []
+    assert load_stage(stage(tmp_path, glow + tri("T", "rel material:binding = </Glow>")), require_light=True).lights == []
 
 
 def test_cli_refuses_a_stage_without_light(tmp_path, capsys):
@@ -523,7 +520,7 @@ def test_light_sealed_in_a_closed_white_room_is_refused(tmp_path, room):
         else _room_of_quads()
     path = stage(tmp_path, WHITE + walls + BULB.format(at=(0, 0, 1)))
     with pytest.raises(UserError, match=r"s\.usda: /Bulb is sealed inside a closed surface of albedo 1 \(/(Room|Wall0)\)"):
-        _load_stage(path)
+        load_stage(path)
 
 
 def test_white_surfaces_that_let_light_out_are_accepted_with_a_warning(tmp_path):
@@ -532,7 +529,7 @@ def test_white_surfaces_that_let_light_out_are_accepted_with_a_warning(tmp_path)
     for body in (_room_of_quads(skip=1) + BULB.format(at=(0, 0, 1)),
                  'def Cube "Room"\n{\n    double size = 4\n    rel material:binding = </Snow>\n}\n'
                  + BULB.format(at=(0, 0, 5))):
-        s = _load_stage(stage(tmp_path, WHITE + body))
+        s = load_stage(stage(tmp_path, WHITE + body))
         assert np.all(s.geometry.albedo == 1.0)
         assert sum(w.startswith("albedo 1 (no absorption)") for w in s.warnings) == 1
 
@@ -542,4 +539,4 @@ def test_white_emitting_walls_are_refused(tmp_path):
     mat = shader_material("Snow", "color3f inputs:diffuseColor = (1, 1, 1)\n        color3f inputs:emissiveColor = (1, 1, 1)")
     body = mat + 'def Cube "Room"\n{\n    double size = 4\n    rel material:binding = </Snow>\n}\n'
     with pytest.raises(UserError, match=r"emissive surface is sealed inside a closed surface of albedo 1 \(/Room\)"):
-        _load_stage(stage(tmp_path, body))
+        load_stage(stage(tmp_path, body))

@@ -219,7 +219,7 @@ def load_stage(
     light_units: str = "photometric",
     radiometric_spectrum: str | float = "E",
     variants: dict[str, str] | None = None,
-    require_light: bool = True,
+    require_light: bool = False,
 ) -> Scene:
     """Read a USD stage into a :class:`Scene` in world metres, Z up.
 
@@ -243,8 +243,9 @@ def load_stage(
         :func:`_select_variants`.
     require_light : bool
         Refuse a stage with nothing that emits (no UsdLux light, no emitting
-        geometry): every reading would be zero. ``False`` reads geometry
-        alone (tools that only look at the surfaces).
+        geometry): every reading would be zero. A run asks for this
+        (:func:`simulator.pipeline.load_scene`); ``False`` (the default)
+        reads geometry alone, for tools that only look at the surfaces.
 
     Returns
     -------
