@@ -63,6 +63,7 @@ __all__ = [
     "polygon_solid_angle",
     "point_flux_through_polygon",
     "dome_irradiance",
+    "lambertian_radiance",
     "furnace_radiance",
     "furnace_irradiance",
     "integrating_sphere_irradiance",
@@ -771,6 +772,37 @@ def dome_irradiance(radiance, tilt):
     .. [1] docs/REFERENCES.md §Uniform environment.
     """
     return _out(np.asarray(radiance, float) * np.pi * 0.5 * (1.0 + np.cos(np.asarray(tilt, float))))
+
+
+def lambertian_radiance(albedo, irradiance):
+    """Radiance leaving an ideal diffuse (Lambertian) surface lit by an irradiance.
+
+    Parameters
+    ----------
+    albedo : float or array_like
+        Diffuse reflectance ρ, in [0, 1] (1: a white surface that absorbs nothing).
+    irradiance : float or array_like
+        Irradiance E on the surface, W/m² (or lx).
+
+    Returns
+    -------
+    L : ndarray or float
+        Reflected radiance, the same in every direction: ρ·E/π, W m⁻² sr⁻¹ (or cd/m²).
+
+    Notes
+    -----
+    A Lambertian BRDF is the constant f = ρ/π (its cosine-weighted integral
+    over the hemisphere is ρ), so L_o = ∫ f L_i cos θ dω = (ρ/π)·E.
+
+    References
+    ----------
+    .. [1] M. Pharr, W. Jakob, G. Humphreys, "Physically Based Rendering",
+       4th ed. (2023), §9.2 "Diffuse Reflection".
+    """
+    albedo = np.asarray(albedo, float)
+    if np.any(albedo < 0.0) or np.any(albedo > 1.0):
+        raise ValueError("albedo must be in [0, 1]")
+    return _out(albedo * np.asarray(irradiance, float) / np.pi)
 
 
 def _check_albedo(albedo):
