@@ -734,6 +734,7 @@ _BASE_CASES: tuple[Case, ...] = (
     Case("point_cm_yup", "point_cm_yup.toml", "light", _point_cm_yup),
     Case("sphere", "sphere.toml", "light", _sphere),
     Case("rect", "rect.toml", "light", _rect),
+    Case("cie171_5_3", "cie171_5_3.toml", "light", _rect, note=lambda ctx, s, ch: "Lambert (flush light)"),
     Case("disk", "disk.toml", "light", _disk),
     Case("disk_perpendicular", "disk_perpendicular.toml", "light", _disk, note=_disk_note),
     Case("polygon", "polygon.toml", "mis", _polygon),
