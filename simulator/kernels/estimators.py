@@ -430,6 +430,56 @@ def hit_light_before(l: LightRec, o: wp.vec3, d: wp.vec3, t_surface: float) -> f
 
 
 @wp.func
+def ies_candela(l: LightRec, theta_deg: float, phi_deg: float) -> float:
+    """Bilinear interpolation of the light's regular (θ, φ) candela table
+    (rows θ = 0…180°, columns φ = 0…360°; see
+    GoniometricDistribution.regular_table, which puts every measured angle
+    on a node, so this equals the distribution's own interpolation)."""
+    ft = wp.clamp(theta_deg, 0.0, 180.0) / 180.0 * float(l.map_h - 1)
+    fp = wp.clamp(phi_deg, 0.0, 360.0) / 360.0 * float(l.map_w - 1)
+    i = wp.clamp(int(wp.floor(ft)), 0, l.map_h - 2)
+    j = wp.clamp(int(wp.floor(fp)), 0, l.map_w - 2)
+    a = wp.clamp(ft - float(i), 0.0, 1.0)
+    b = wp.clamp(fp - float(j), 0.0, 1.0)
+    w = l.map_w
+    v0 = (1.0 - b) * l.map[i * w + j] + b * l.map[i * w + j + 1]
+    v1 = (1.0 - b) * l.map[(i + 1) * w + j] + b * l.map[(i + 1) * w + j + 1]
+    return (1.0 - a) * v0 + a * v1
+
+
+@wp.func
+def shaping_factor(l: LightRec, w_out: wp.vec3) -> float:
+    """UsdLuxShapingAPI factor of light ``l``'s emission toward the unit
+    direction ``w_out`` (from the light to the receiver); 1 for an unshaped
+    light. θ is the angle from the light's −Z axis, φ its azimuth from +X
+    toward +Y (the IES frame); see :class:`simulator.scene.model.LightShaping`
+    for the formula (cone with smoothstep softness, focus with tint, IES
+    candela table). Multiplying a sample's value by it keeps every estimator
+    unbiased: the pdfs are those of the unshaped light."""
+    if l.shaped == 0:
+        return 1.0
+    cos_t = wp.clamp(-wp.dot(w_out, l.ez), -1.0, 1.0)
+    theta = wp.acos(cos_t)
+    cut = l.shaping[0]
+    if theta > cut:
+        return 0.0
+    f = float(1.0)
+    start = cut * (1.0 - l.shaping[1])
+    if l.shaping[1] > 0.0 and cut > start:
+        t = wp.clamp((theta - start) / (cut - start), 0.0, 1.0)
+        f = 1.0 - t * t * (3.0 - 2.0 * t)
+    if l.shaping[2] > 0.0:
+        tint = l.shaping[3]
+        f = f * (tint + (1.0 - tint) * wp.pow(wp.abs(cos_t), l.shaping[2]))
+    if l.ies_scale > 0.0:
+        phi = wp.atan2(wp.dot(w_out, l.ey), wp.dot(w_out, l.ex))
+        if phi < 0.0:
+            phi = phi + 2.0 * PI
+        f = f * l.ies_scale * ies_candela(l, wp.degrees(theta), wp.degrees(phi))
+    return f
+
+
+@wp.func
 def vertex_irradiance(
     scene: SceneRec, p_in: wp.vec3, n_in: wp.vec3, weight_in: float, params: TraceParams, skip_first: int, rng_in: wp.uint32
 ) -> wp.vec2:
@@ -463,6 +513,7 @@ def vertex_irradiance(
                     if scene.light_mask[params.mask_row * scene.n_lights + li] == 0:
                         continue
                 ls = sample_light(scene, li, p, n, u)  # geometry from the true point; only rays start at o
+                ls.value = ls.value * shaping_factor(scene.lights[li], -ls.wi)
                 if ls.value[0] > 0.0 or ls.value[1] > 0.0:
                     w = float(1.0)
                     if params.mis != 0 and ls.pdf > 0.0:
@@ -496,7 +547,7 @@ def vertex_irradiance(
                     w = float(1.0)
                     if params.mis != 0 and params.nee != 0:
                         w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, t, -1))
-                    total += (w_dir * w) * l.emission
+                    total += (w_dir * w * shaping_factor(l, -wi)) * l.emission
         if face < 0:
             for li in range(scene.n_lights):
                 le = escaped_radiance(scene.lights[li], wi)
@@ -553,7 +604,7 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
         l = scene.lights[li]
         if l.kind == RECT or l.kind == DISK or l.kind == SPHERE or l.kind == CYLINDER:
             if hit_light_before(l, o, d, t_hit) > 0.0 and direct:
-                total += l.emission
+                total += shaping_factor(l, -d) * l.emission
     if face < 0:
         if direct:
             for li in range(scene.n_lights):
@@ -637,8 +688,8 @@ def analytic_light(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3) -> wp.vec2:
     """Unoccluded irradiance on (p, n) from light ``li`` in closed form (the
     host has checked that the closed form applies; see plan.analytic_refusal)."""
     l = scene.lights[li]
-    if l.kind == POINT:
-        return l.emission * point_irradiance(l.position, p, n)
+    if l.kind == POINT:  # E = I(ω)·cosψ/d²; the planner sends no other shaped light here
+        return (l.emission * point_irradiance(l.position, p, n)) * shaping_factor(l, wp.normalize(p - l.position))
     if l.kind == SPHERE:
         d = l.position - p
         d2 = wp.length_sq(d)
