@@ -109,11 +109,14 @@ class LightShaping:
       [0, 1]), 1 − smoothstep(θ_c·(1 − s), θ_c, θ), so 1 inside θ_c(1 − s)
       and the whole cone at s = 0;
     - focus: tint + (1 − tint)·|cos θ|^focus (focus ≤ 0: 1), tint the grey of
-      ``shaping:focusTint``;
+      ``shaping:focusTint``; θ is taken from the light's axis for every kind
+      (UsdLux measures it from the emitting surface's normal, the same for
+      rect and disk lights but not for a SphereLight of finite radius);
     - IES: ``ies_scale × I_file`` (omitted without a file): relative mode
       ``1 / max I_file`` (the authored intensity is the peak), with
-      ``shaping:ies:normalize`` ``4π / Φ_file`` (the total power of the
-      unshaped light is kept); absolute mode (``probesim:ies:absolute``,
+      ``shaping:ies:normalize`` ``4π / Φ_file`` (the profile's mean over the
+      sphere is 1, which keeps a point light's total flux; an area light's
+      cosθ weighting makes that approximate); absolute mode (``probesim:ies:absolute``,
       point lights only) makes the light emit the file's candelas × the
       light loss factor, ignoring its intensity (emission is set to 1 cd).
 
