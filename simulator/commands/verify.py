@@ -642,6 +642,45 @@ def _cie171_5_2_note(ctx: CaseContext, s: Sensor, ch: int) -> str:
     return f"CIE table {grid.published_lx[i]:g}; disk/point {e_disk / e_point - 1.0:+.1e}"
 
 
+# -- shaped (UsdLuxShapingAPI) point-like luminaires: self-contained cases
+
+
+def _shaped_point(ctx: CaseContext, s: Sensor, ch: int) -> float:
+    """A shaped point light (spot cone, focus, IES profile): E = I(ω)·cosψ/d²
+    with I(ω) = emission × LightShaping.factor(θ, φ), θ from the light's −Z
+    axis, φ from its +X toward +Y (the numpy twin of the kernel's factor:
+    cone with smoothstep softness, focus, the IES file's bilinear
+    interpolation; OpenUSD user guide "ShapingAPI"). Sums every light."""
+    if s.kind != SensorKind.IRRADIANCE:
+        raise _no_closed_form(ctx, s, "only irradiance sensors")
+    total = 0.0
+    for l in ctx.scene.lights:
+        if l.kind != LightKind.POINT:
+            raise UserError(f"{ctx.scene.path}: the shaped-luminaire case expects point lights only, found {l.kind.name}")
+        d = s.position - l.position
+        dist = float(np.linalg.norm(d))
+        w = d / dist
+        cos_psi = float(-w @ s.normal)
+        if cos_psi <= 0:
+            continue
+        f = 1.0
+        if l.shaping is not None:
+            ex, ey, ez = l.frame[:, 0], l.frame[:, 1], l.frame[:, 2]
+            theta = math.acos(float(np.clip(-w @ ez, -1.0, 1.0)))
+            phi = math.atan2(float(w @ ey), float(w @ ex))
+            f = float(l.shaping.factor(theta, phi))
+        total += l.emission[ch] * f * cos_psi / dist**2
+    return total
+
+
+def _cie171_5_2_ies_note(ctx: CaseContext, s: Sensor, ch: int) -> str:
+    grid = cf.cie171_point_source_grid()
+    if s.name not in grid.names:
+        return ""
+    i = grid.names.index(s.name)
+    return f"CIE table {grid.published_lx[i]:g}; exact cosine {grid.exact_lx[i]:.5f}" if ch == 1 else ""
+
+
 # -- enclosures (interreflection): configs may be absent while they are being built
 
 
@@ -734,6 +773,10 @@ _BASE_CASES: tuple[Case, ...] = (
     Case("point_cm_yup", "point_cm_yup.toml", "light", _point_cm_yup),
     Case("sphere", "sphere.toml", "light", _sphere),
     Case("rect", "rect.toml", "light", _rect),
+    Case("cie171_5_3", "cie171_5_3.toml", "light", _rect, note=lambda ctx, s, ch: "Lambert (flush light)"),
+    Case("cie171_5_2_ies", "cie171_5_2_ies.toml", "light", _shaped_point, note=_cie171_5_2_ies_note),
+    Case("spot_cone", "spot_cone.toml", "light", _shaped_point),
+    Case("asymmetric_luminaire", "asymmetric_luminaire.toml", "light", _shaped_point),
     Case("disk", "disk.toml", "light", _disk),
     Case("disk_perpendicular", "disk_perpendicular.toml", "light", _disk, note=_disk_note),
     Case("polygon", "polygon.toml", "mis", _polygon),

@@ -266,7 +266,21 @@ class Engine:
         r.length = float(l.length)
         if l.kind == LightKind.DOME and l.texture_map is not None:
             self._upload_dome_map(wp, r, l.texture_map)
+        if l.shaping is not None:
+            self._upload_shaping(wp, r, l.shaping)
         return r
+
+    def _upload_shaping(self, wp, r, sh) -> None:
+        """UsdLuxShapingAPI on the record; an IES table goes in ``map`` (rows θ, columns φ)."""
+        r.shaped = 1
+        r.shaping = wp.vec4(float(sh.cone_angle_rad), float(sh.cone_softness), float(sh.focus), float(sh.focus_tint))
+        if sh.ies is not None:
+            _, _, table = sh.ies.regular_table()
+            t = np.ascontiguousarray(table.T, np.float32)  # (θ rows, φ columns)
+            r.map_h, r.map_w = int(t.shape[0]), int(t.shape[1])
+            r.map = wp.array(t.ravel(), dtype=float)
+            r.ies_scale = float(sh.ies_scale)
+            self._map_arrays.append(r.map)
 
     def _upload_dome_map(self, wp, r, grey: np.ndarray) -> None:
         """Put a dome's lat-long map and its sampling CDFs on the light record.

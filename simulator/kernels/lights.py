@@ -90,6 +90,10 @@ class LightRec:
     map: wp.array(dtype=float)  # map_h × map_w values, row 0 at the pole ey
     map_marg: wp.array(dtype=float)  # map_h + 1: marginal CDF over rows
     map_cond: wp.array(dtype=float)  # map_h × (map_w + 1): conditional CDFs over columns
+    # UsdLuxShapingAPI (estimators.shaping_factor): shaped = 1 multiplies emission toward ω by the factor
+    shaped: int
+    shaping: wp.vec4  # (cone half-angle rad, cone softness, focus, focus tint)
+    ies_scale: float  # > 0: × ies_scale·I(θ, φ), I bilinear in map (map_h rows θ 0…180°, map_w columns φ 0…360°)
 
 
 @wp.struct

@@ -45,7 +45,7 @@ Harmonics (SH) Tricks", GDC 2008, appendix).
 
 import warp as wp
 
-from .estimators import RADIANCE, SensorRec, TraceParams, sample_radiance, unoccluded
+from .estimators import RADIANCE, SensorRec, TraceParams, sample_radiance, shaping_factor, unoccluded
 from .lights import DISTANT, POINT, SceneRec
 from .sampling import sensor_stream_key
 
@@ -176,7 +176,7 @@ def delta_incident(scene: SceneRec, li: int, p: wp.vec3) -> wp.vec4:
         w = d / dist
         if not unoccluded(scene, p, w, dist, -1):
             return wp.vec4(0.0)
-        return wp.vec4(w[0], w[1], w[2], 1.0 / (dist * dist))  # E⊥ = I/d²
+        return wp.vec4(w[0], w[1], w[2], shaping_factor(l, -w) / (dist * dist))  # E⊥ = I(ω)/d²
     if l.kind == DISTANT and l.one_minus_cos <= 0.0:
         if not unoccluded(scene, p, l.ez, 1.0e30, -1):
             return wp.vec4(0.0)

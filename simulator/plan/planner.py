@@ -87,6 +87,8 @@ def analytic_refusal(scene: Scene, sensor: Sensor) -> str | None:
     for l in scene.lights:
         if l.kind == LightKind.CYLINDER:
             return f"no closed form for the CylinderLight {l.name}"
+        if l.shaping is not None and (l.kind != LightKind.POINT or sensor.kind == SensorKind.PATCH):
+            return f"no closed form for the shaped light {l.name} (only a point light's E = I(ω)·cosψ/d²)"
         if l.kind == LightKind.DOME and l.texture:
             return f"no closed form for the textured DomeLight {l.name}"
         if l.kind == LightKind.DISK and sensor.kind == SensorKind.IRRADIANCE:

@@ -19,7 +19,7 @@ from enum import IntEnum
 
 import numpy as np
 
-__all__ = ["LightKind", "Light", "Geometry", "SensorKind", "SENSOR_KINDS", "DEFAULT_PROBE_RESOLUTION", "Sensor", "Scene"]
+__all__ = ["LightKind", "Light", "LightShaping", "Geometry", "SensorKind", "SENSOR_KINDS", "DEFAULT_PROBE_RESOLUTION", "Sensor", "Scene"]
 
 
 class LightKind(IntEnum):
@@ -83,6 +83,8 @@ class Light:
     #: at the pole ``frame[:, 1]`` (the convention of :mod:`simulator.io.latlong`);
     #: radiance along a direction = ``emission × texture_map[texel]``. None if untextured.
     texture_map: np.ndarray | None = None
+    #: UsdLuxShapingAPI of a point, sphere, disk or rect light (None: unshaped)
+    shaping: "LightShaping | None" = None
 
     @property
     def is_delta(self) -> bool:
@@ -90,6 +92,70 @@ class Light:
         return self.kind == LightKind.POINT or (
             self.kind == LightKind.DISTANT and self.half_angle == 0.0
         )
+
+
+@dataclass
+class LightShaping:
+    """How a light's emission varies with the emission direction ω (UsdLux
+    ShapingAPI; OpenUSD user guide, "ShapingAPI"): the radiance (or a point
+    light's intensity) toward ω is ``emission × factor(ω)``.
+
+    With θ the angle between ω and the light's −Z axis, and (θ, φ) the IES
+    angles in the light's frame (θ from −Z, φ from +X toward +Y):
+
+        factor = cone(θ) · focus(θ) · ies_scale · I_file(θ, φ)
+
+    - cone: 0 for θ > ``cone_angle_rad``; with softness s (clamped to
+      [0, 1]), 1 − smoothstep(θ_c·(1 − s), θ_c, θ), so 1 inside θ_c(1 − s)
+      and the whole cone at s = 0;
+    - focus: tint + (1 − tint)·|cos θ|^focus (focus ≤ 0: 1), tint the grey of
+      ``shaping:focusTint``; θ is taken from the light's axis for every kind
+      (UsdLux measures it from the emitting surface's normal, the same for
+      rect and disk lights but not for a SphereLight of finite radius);
+    - IES: ``ies_scale × I_file`` (omitted without a file): relative mode
+      ``1 / max I_file`` (the authored intensity is the peak), with
+      ``shaping:ies:normalize`` ``4π / Φ_file`` (the profile's mean over the
+      sphere is 1, which keeps a point light's total flux; an area light's
+      cosθ weighting makes that approximate); absolute mode (``probesim:ies:absolute``,
+      point lights only) makes the light emit the file's candelas × the
+      light loss factor, ignoring its intensity (emission is set to 1 cd).
+
+    Attributes
+    ----------
+    cone_angle_rad : float
+    cone_softness : float
+    focus : float
+    focus_tint : float
+    ies : GoniometricDistribution or None
+    ies_scale : float
+        Multiplier of I_file (cd⁻¹, or dimensionless × cd⁻¹·cd in absolute mode).
+    absolute : bool
+    light_loss_factor : float
+    """
+
+    cone_angle_rad: float = float(np.pi / 2)
+    cone_softness: float = 0.0
+    focus: float = 0.0
+    focus_tint: float = 0.0
+    ies: object | None = None
+    ies_scale: float = 0.0
+    absolute: bool = False
+    light_loss_factor: float = 1.0
+
+    def factor(self, theta_rad, phi_rad) -> np.ndarray:
+        """The factor toward emission directions at (θ, φ), radians (numpy twin of the kernel's)."""
+        th = np.asarray(theta_rad, float)
+        f = np.where(th > self.cone_angle_rad, 0.0, 1.0)
+        s = min(max(self.cone_softness, 0.0), 1.0)
+        if s > 0:
+            a = self.cone_angle_rad * (1 - s)
+            t = np.clip((th - a) / (self.cone_angle_rad - a), 0.0, 1.0)
+            f = f * (1 - t * t * (3 - 2 * t))
+        if self.focus > 0:
+            f = f * (self.focus_tint + (1 - self.focus_tint) * np.abs(np.cos(th)) ** self.focus)
+        if self.ies is not None:
+            f = f * self.ies_scale * self.ies.candela_at(np.degrees(th), np.degrees(phi_rad))
+        return f
 
 
 @dataclass

@@ -25,6 +25,7 @@ from simulator.units import luminance_grey
 from simulator.scene.model import Light, LightKind
 from simulator.scene.usd.context import _Context, _get, _not_uniform
 from simulator.scene.usd.materials import _albedo, _grey, _material_inputs
+from simulator.scene.usd.shaping import has_shaping, read_shaping
 from simulator.scene.usd.tessellation import _parallelogram_areas
 from simulator.scene.usd.transforms import _axis_scales, _frame, _mean_scale, _world_affine
 
@@ -76,16 +77,15 @@ def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:
     if value is None:
         return None
     light.emission = ctx.emission(value, spectrum)
+    read_shaping(ctx, prim, light)
     return light
 
 
 def _light_inputs(ctx: _Context, prim: Usd.Prim) -> tuple[float, str | float, bool]:
     """``(value, spectrum, normalize)`` of any light: :func:`_light_value` and its ``normalize`` flag.
 
-    Shaping (cone, focus, IES profile) is not modelled: warned about and ignored.
+    Shaping (cone, focus, IES profile) is read by :mod:`simulator.scene.usd.shaping`.
     """
-    if prim.HasAPI(UsdLux.ShapingAPI):
-        ctx.warn(f"{prim.GetPath()}: UsdLuxShapingAPI (cone, focus, IES) ignored")
     raw, spectrum = _light_value(ctx, prim)
     return raw, spectrum, bool(UsdLux.LightAPI(prim).GetNormalizeAttr().Get(ctx.time))
 
@@ -308,6 +308,8 @@ def _geometry_light_emission(ctx: _Context, prim: Usd.Prim, world: np.ndarray,
     """Emission pair of a geometry light: ``intensity * 2**exposure * grey(color)``,
     divided by its world area (one side) when ``normalize`` is on."""
     raw, spectrum, normalize = _light_inputs(ctx, prim)
+    if has_shaping(prim):
+        ctx.warn(f"{prim.GetPath()}: UsdLuxShapingAPI on a mesh light ignored")
     value = raw
     if normalize:
         area = float(0.5 * _parallelogram_areas(world, tris).sum())
