@@ -73,7 +73,8 @@ from typing import Any
 import numpy as np
 
 from simulator.errors import UserError
-from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SENSOR_KINDS, Sensor, SensorKind
+from simulator.engine.methods import COMPONENTS, METHODS  # estimator and component names
+from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, MAX_PROBE_PIXELS, SENSOR_KINDS, Sensor, SensorKind
 from simulator.units import SPECTRA
 
 __all__ = [
@@ -93,16 +94,10 @@ __all__ = [
     "apply_overrides",
 ]
 
-#: estimator names accepted by ``simulation.method`` and ``--method``
-METHODS = ("auto", "analytic", "light", "bsdf", "mis", "path")
 #: device names accepted by ``simulation.device`` and ``--device``
-COMPONENTS = ("total", "direct", "indirect")
 DEVICES = ("cpu", "cuda", "auto")
 #: accepted values of ``light_units``
 LIGHT_UNITS = ("photometric", "radiometric")
-#: most pixels in a probe map (1024 × 512): each pixel keeps float64
-#: running sums of 19 integrands in 2 channels (about 600 B)
-MAX_PROBE_PIXELS = 1 << 19
 #: per-sensor sample cap of an adaptive run when ``max_samples`` is absent
 DEFAULT_MAX_SAMPLES = 2**20
 
