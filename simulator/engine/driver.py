@@ -130,6 +130,11 @@ class Engine:
         """The scene's device record (``kernels.lights.SceneRec``), for kernels."""
         return self._dev.rec
 
+    @property
+    def emissive_light(self) -> int:
+        """Index of the light record standing for all emissive triangles, −1 if none."""
+        return self._dev.emissive_light
+
     def set_light_mask(self, mask: np.ndarray) -> None:
         """Lights to skip per sensor at its first vertex: ``mask`` (S, L) over
         the scene's lights, 0 = wholly behind the sensor (see plan.lights_behind)."""
@@ -142,7 +147,7 @@ class Engine:
         p.nee, p.bsdf, p.mis = nee, bsdf, mis
         p.bounces = max_depth if bounces and component != "direct" else 0
         p.skip_direct = 1 if component == "indirect" else 0
-        p.emissive_light = self._dev.emissive_light
+        p.emissive_light = self.emissive_light
         p.seed = int(seed) & 0x7FFFFFFF
         p.count_rays = 0
         p.thread = 0
