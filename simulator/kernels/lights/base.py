@@ -94,19 +94,12 @@ class LightSample:
 
 @dataclass(frozen=True)
 class LightKernel:
-    """One light kind's device code and upload (see the module docstring).
-
-    Attributes
-    ----------
-    kind : LightKind
-        The integer the kernels switch on.
-    sample, pdf, hit, escaped, near, analytic, analytic_patch
-        ``@wp.func`` hooks, or None for the neutral answer.
-    upload : callable or None
-        ``upload(rec, light, keep)``: fill the kind's slots of the
-        :class:`LightRec` ``rec`` from the :class:`~simulator.scene.model.Light`
-        ``light``; device arrays the record points to go on the list ``keep``.
-    """
+    """One light kind's device code and upload: ``kind`` is the integer the
+    kernels switch on; ``sample`` … ``analytic_patch`` are ``@wp.func`` hooks
+    (None: the neutral answer, see the module docstring); ``upload(rec,
+    light, keep)`` fills the kind's slots of the :class:`LightRec` from the
+    :class:`~simulator.scene.model.Light` (device arrays the record points to
+    go on the list ``keep``)."""
 
     kind: LightKind
     sample: Any
@@ -184,6 +177,18 @@ def near_box(l: LightRec, d: wp.vec3, reach: float, thickness: float) -> bool:
         if wp.abs(wp.dot(d, l.ez)) <= thickness + reach:
             return True
     return False
+
+
+@wp.func
+def near_planar(l: LightRec, d: wp.vec3, reach: float) -> bool:
+    """``near`` of a flat light (rect, disk): :func:`near_box` of no thickness."""
+    return near_box(l, d, reach, 0.0)
+
+
+@wp.func
+def behind(l: LightRec, p: wp.vec3) -> bool:
+    """Whether p lies on the dark side of a one-sided planar light (or in its plane)."""
+    return wp.dot(p - l.position, l.ez) >= 0.0
 
 
 @wp.func

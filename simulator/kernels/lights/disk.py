@@ -10,12 +10,12 @@ from simulator.scene.model import LightKind
 
 from ..closed_forms import disk_irradiance
 from ..sampling import sample_concentric_disk
-from .base import LightKernel, LightRec, LightSample, SceneRec, area_pdf, area_sample, empty_sample, near_box, plane_hit
+from .base import LightKernel, LightRec, LightSample, SceneRec, area_pdf, area_sample, behind, empty_sample, near_planar, plane_hit
 
 
 @wp.func
 def sample(scene: SceneRec, l: LightRec, p: wp.vec3, n: wp.vec3, u: wp.vec3) -> LightSample:
-    if wp.dot(p - l.position, l.ez) >= 0.0:
+    if behind(l, p):
         return empty_sample()  # behind a one-sided emitter
     dp = sample_concentric_disk(wp.vec2(u[0], u[1])) * l.radius
     return area_sample(l, p, n, l.position + dp[0] * l.ex + dp[1] * l.ey, -l.ez)
@@ -35,13 +35,8 @@ def hit(l: LightRec, o: wp.vec3, d: wp.vec3, t_max: float) -> float:
 
 
 @wp.func
-def near(l: LightRec, d: wp.vec3, reach: float) -> bool:
-    return near_box(l, d, reach, 0.0)
-
-
-@wp.func
 def analytic(scene: SceneRec, l: LightRec, p: wp.vec3, n: wp.vec3) -> wp.vec2:
-    if wp.dot(p - l.position, l.ez) >= 0.0:
+    if behind(l, p):
         return wp.vec2(0.0, 0.0)  # behind a one-sided emitter
     return l.emission * disk_irradiance(l.position, l.ex, l.ey, l.radius, p, n)
 
@@ -50,4 +45,4 @@ def upload(rec, light, keep) -> None:
     rec.area = math.pi * light.radius**2
 
 
-KERNEL = LightKernel(LightKind.DISK, sample=sample, pdf=pdf, hit=hit, near=near, analytic=analytic, upload=upload)
+KERNEL = LightKernel(LightKind.DISK, sample=sample, pdf=pdf, hit=hit, near=near_planar, analytic=analytic, upload=upload)

@@ -12,7 +12,7 @@ from simulator.scene.model import LightKind
 
 from ..closed_forms import polygon_irradiance4
 from ..sampling import SPHRECT_MIN_SOLID_ANGLE, sphrect_sample, sphrect_setup
-from .base import LightKernel, LightRec, LightSample, SceneRec, area_pdf, area_sample, empty_sample, near_box, plane_hit
+from .base import LightKernel, LightRec, LightSample, SceneRec, area_pdf, area_sample, behind, empty_sample, near_planar, plane_hit
 
 
 @wp.func
@@ -23,7 +23,7 @@ def corner(l: LightRec) -> wp.vec3:
 @wp.func
 def sample(scene: SceneRec, l: LightRec, p: wp.vec3, n: wp.vec3, u: wp.vec3) -> LightSample:
     s = empty_sample()
-    if wp.dot(p - l.position, l.ez) >= 0.0:
+    if behind(l, p):
         return s  # behind a one-sided emitter
     c = corner(l)
     sr = sphrect_setup(p, c, l.ex, l.ey, l.width, l.height)
@@ -61,13 +61,8 @@ def hit(l: LightRec, o: wp.vec3, d: wp.vec3, t_max: float) -> float:
 
 
 @wp.func
-def near(l: LightRec, d: wp.vec3, reach: float) -> bool:
-    return near_box(l, d, reach, 0.0)
-
-
-@wp.func
 def analytic(scene: SceneRec, l: LightRec, p: wp.vec3, n: wp.vec3) -> wp.vec2:
-    if wp.dot(p - l.position, l.ez) >= 0.0:
+    if behind(l, p):
         return wp.vec2(0.0, 0.0)  # behind a one-sided emitter
     hx = 0.5 * l.width * l.ex
     hy = 0.5 * l.height * l.ey
@@ -79,4 +74,4 @@ def upload(rec, light, keep) -> None:
     rec.area = light.width * light.height
 
 
-KERNEL = LightKernel(LightKind.RECT, sample=sample, pdf=pdf, hit=hit, near=near, analytic=analytic, upload=upload)
+KERNEL = LightKernel(LightKind.RECT, sample=sample, pdf=pdf, hit=hit, near=near_planar, analytic=analytic, upload=upload)
