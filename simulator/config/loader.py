@@ -74,7 +74,7 @@ import numpy as np
 
 from simulator.errors import UserError
 from simulator.engine.methods import COMPONENTS, METHODS  # estimator and component names
-from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, MAX_PROBE_PIXELS, SENSOR_KINDS, Sensor, SensorKind
+from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, MAX_PROBE_PIXELS, SENSOR_KINDS, Sensor, SensorKind, patch_width_axis
 from simulator.units import SPECTRA
 
 __all__ = [
@@ -587,8 +587,7 @@ def _grid(ck: _Checker, table: dict, index: int) -> tuple[GridConfig, list[Senso
                 f"expected a number or an array of 2 numbers, got {_toml_type(spacing_value)}",
             )
         sx = sy = ck.positive(spacing_value, f"{key}.spacing")
-    right = np.cross(up, normal)
-    right /= np.linalg.norm(right)
+    right = patch_width_axis(up, normal)
     nx = max(1, round(w / sx))
     ny = max(1, round(h / sy))
     grid = GridConfig(
