@@ -14,6 +14,7 @@ Sensors (irradiance, radiance, patch): each kernel thread draws a block of
 
 from __future__ import annotations
 
+import os
 import time
 from dataclasses import dataclass, field
 from typing import Callable
@@ -106,7 +107,6 @@ class Engine:
     """
 
     def __init__(self, scene: Scene, sensors: list[Sensor], device: str = "cpu", threads: int = 0):
-        import os
 
         wp = warp()
         from simulator.kernels import estimators as K
