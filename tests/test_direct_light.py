@@ -24,7 +24,7 @@ from simulator.reference import closed_forms as cf
 from simulator.config.loader import load_config
 from simulator.engine.driver import Engine
 from simulator.pipeline import collect_sensors, load_scene
-from simulator.scene.model import LightKind, SensorKind
+from simulator.scene.model import LightKind, SensorKind, patch_width_axis
 
 CONFIGS = Path(__file__).resolve().parents[1] / "configs"
 FLOAT32_SLACK = 2e-6
@@ -36,8 +36,7 @@ def _light(scene, kind):
 
 
 def _patch_vertices(s):
-    right = np.cross(s.up, s.normal)
-    right /= np.linalg.norm(right)
+    right = patch_width_axis(s.up, s.normal)
     w, h = s.size
     c = s.position
     return np.array([c - right * w / 2 - s.up * h / 2, c + right * w / 2 - s.up * h / 2,

@@ -36,7 +36,7 @@ from simulator.reference import closed_forms as cf
 from simulator.config.loader import load_config
 from simulator.engine.driver import Engine
 from simulator.pipeline import collect_sensors, load_scene
-from simulator.scene.model import LightKind, Sensor, SensorKind
+from simulator.scene.model import LightKind, Sensor, SensorKind, patch_width_axis
 
 CONFIGS = Path(__file__).resolve().parents[1] / "configs"
 FLOAT32_SLACK = 2e-6
@@ -70,8 +70,7 @@ def _check(name: str, est: float, se: float, truth: float, extra: float = 0.0, m
 
 
 def _patch_vertices(s) -> np.ndarray:
-    right = np.cross(s.up, s.normal)
-    right /= np.linalg.norm(right)
+    right = patch_width_axis(s.up, s.normal)
     (w, h), c = s.size, s.position
     return np.array([c - right * w / 2 - s.up * h / 2, c + right * w / 2 - s.up * h / 2,
                      c + right * w / 2 + s.up * h / 2, c - right * w / 2 + s.up * h / 2])  # fmt: skip

@@ -51,7 +51,7 @@ from simulator.reference import closed_forms as cf
 from simulator.config.loader import RunConfig, load_config
 from simulator.bundled import configs_dir as bundled_configs_dir
 from simulator.errors import UserError
-from simulator.scene.model import Light, LightKind, Scene, Sensor, SensorKind
+from simulator.scene.model import Light, LightKind, Scene, Sensor, SensorKind, patch_width_axis
 
 __all__ = [
     "REL_TOL",
@@ -262,8 +262,7 @@ def _one_light(scene: Scene, kind: LightKind) -> Light:
 
 def _patch_vertices(s: Sensor) -> np.ndarray:
     """Corners of a patch sensor, counter-clockwise about its normal, metres."""
-    right = np.cross(s.up, s.normal)
-    right /= np.linalg.norm(right)
+    right = patch_width_axis(s.up, s.normal)
     hw, hh = 0.5 * s.size[0], 0.5 * s.size[1]
     c = s.position
     return np.array([c - hw * right - hh * s.up, c + hw * right - hh * s.up, c + hw * right + hh * s.up, c - hw * right + hh * s.up])

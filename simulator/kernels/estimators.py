@@ -33,34 +33,28 @@ J. Arvo, D. Kirk, "Particle transport and image synthesis", SIGGRAPH 1990
 (Russian roulette).
 """
 
+import math
+from dataclasses import dataclass
+from typing import Any, Callable
+
 import warp as wp
 
-from .closed_forms import (
-    cap_irradiance,
-    disk_irradiance,
-    point_irradiance,
-    polygon_irradiance4,
-    triangle_solid_angle,
-)
+from simulator.scene.model import LightKind, Sensor, SensorKind
+
 from .lights import (  # noqa: F401  (LightRec, SceneRec re-exported for the engine)
-    CYLINDER,
-    DISK,
-    DISTANT,
-    DOME,
-    POINT,
-    EMISSIVE,
     RAY_INF,
-    RECT,
-    SPHERE,
     LightRec,
     LightSample,
     SceneRec,
+    analytic_light,
+    analytic_patch_light,
     escaped_radiance,
-    tri_vertex,
     hit_light,
+    light_within,
     pdf_light,
     sample_light,
     tri_emitted,
+    tri_vertex,
 )
 from .sampling import (
     INV_PI,
@@ -74,11 +68,6 @@ from .sampling import (
 
 # Forward-only: no gradients are taken, and skipping the adjoint halves compile time.
 wp.set_module_options({"enable_backward": False})
-
-# Sensor kinds; must match simulator.scene.model.SensorKind.
-IRRADIANCE = wp.constant(0)
-RADIANCE = wp.constant(1)
-PATCH = wp.constant(2)
 
 # A path whose every bounce survives Russian roulette with probability ρ < 1
 # ends with probability one; this cap only guards against ρ rounding to 1.
@@ -109,6 +98,7 @@ class SensorRec:
     width: float
     height: float
     one_minus_cos: float  # radiance cone: 1 − cos(half-angle); 0 = one direction
+    cull: int  # 1: the first vertex is the sensor, so the plan's light mask applies there
 
 
 @wp.struct
@@ -230,16 +220,8 @@ def near_light(scene: SceneRec, p: wp.vec3, reach: float) -> bool:
     ``mis`` lost the bsdf share of its weight."""
     for li in range(scene.n_lights):
         l = scene.lights[li]
-        d = p - l.position
-        if l.kind == SPHERE:
-            if wp.length(d) - l.radius < reach:
-                return True
-        if l.kind == RECT or l.kind == DISK or l.kind == CYLINDER:
-            # within the light's bounding box grown by reach (cheap and sufficient)
-            ext = wp.max(wp.max(0.5 * l.width, 0.5 * l.height), wp.max(l.radius, 0.5 * l.length))
-            if wp.abs(wp.dot(d, l.ex)) <= ext + reach and wp.abs(wp.dot(d, l.ey)) <= ext + reach:
-                if wp.abs(wp.dot(d, l.ez)) <= wp.where(l.kind == CYLINDER, l.radius, 0.0) + reach:
-                    return True
+        if light_within(l, p - l.position, reach):
+            return True
     return False
 
 
@@ -264,6 +246,15 @@ FLOAT32_U = wp.constant(5.9604645e-08)
 LIGHT_POINT_GAMMA = wp.constant(16.0 * 5.9604645e-08 / (1.0 - 16.0 * 5.9604645e-08))
 #: γ(6): the shadow segment's own reconstruction o + dist·wi (see light_end_offset)
 SEGMENT_GAMMA = wp.constant(6.0 * 5.9604645e-08 / (1.0 - 6.0 * 5.9604645e-08))
+
+
+# Kind integers for the flush-light error bounds below, taken from the one
+# declaration (LightKind), not copied.
+POINT = wp.constant(int(LightKind.POINT))
+SPHERE = wp.constant(int(LightKind.SPHERE))
+RECT = wp.constant(int(LightKind.RECT))
+DISK = wp.constant(int(LightKind.DISK))
+CYLINDER = wp.constant(int(LightKind.CYLINDER))
 
 
 @wp.func
@@ -541,13 +532,12 @@ def vertex_irradiance(
         # (from p, parallel) was seen past a shade the mesh ray hit.
         for li in range(scene.n_lights):
             l = scene.lights[li]
-            if l.kind == RECT or l.kind == DISK or l.kind == SPHERE or l.kind == CYLINDER:
-                t = hit_light_before(l, o, wi, t_hit)
-                if t > 0.0 and count:
-                    w = float(1.0)
-                    if params.mis != 0 and params.nee != 0:
-                        w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, t, -1))
-                    total += (w_dir * w * shaping_factor(l, -wi)) * l.emission
+            t = hit_light_before(l, o, wi, t_hit)  # −1 for lights with no surface
+            if t > 0.0 and count:
+                w = float(1.0)
+                if params.mis != 0 and params.nee != 0:
+                    w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, t, -1))
+                total += (w_dir * w * shaping_factor(l, -wi)) * l.emission
         if face < 0:
             for li in range(scene.n_lights):
                 le = escaped_radiance(scene.lights[li], wi)
@@ -602,9 +592,8 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     total = wp.vec2(0.0, 0.0)
     for li in range(scene.n_lights):
         l = scene.lights[li]
-        if l.kind == RECT or l.kind == DISK or l.kind == SPHERE or l.kind == CYLINDER:
-            if hit_light_before(l, o, d, t_hit) > 0.0 and direct:
-                total += shaping_factor(l, -d) * l.emission
+        if hit_light_before(l, o, d, t_hit) > 0.0 and direct:
+            total += shaping_factor(l, -d) * l.emission
     if face < 0:
         if direct:
             for li in range(scene.n_lights):
@@ -621,15 +610,110 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
 
 
 @wp.func
-def sample_sensor(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+def sample_irradiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+    """One estimate of the irradiance on the sensor's side."""
+    return vertex_irradiance(scene, s.position, s.normal, 1.0, params, params.skip_direct, rng_in)
+
+
+@wp.func
+def sample_patch(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+    """One estimate of the irradiance at a point drawn uniformly on the patch."""
     rng = rng_in
-    if s.kind == RADIANCE:
-        return sample_radiance(scene, s, params, rng)
-    p = s.position
-    if s.kind == PATCH:
-        u = wp.vec2(wp.randf(rng), wp.randf(rng))
-        p = p + ((u[0] - 0.5) * s.width) * s.right + ((u[1] - 0.5) * s.height) * s.up
+    u = wp.vec2(wp.randf(rng), wp.randf(rng))
+    p = s.position + ((u[0] - 0.5) * s.width) * s.right + ((u[1] - 0.5) * s.height) * s.up
     return vertex_irradiance(scene, p, s.normal, 1.0, params, params.skip_direct, rng)
+
+
+@wp.func
+def analytic_irradiance(scene: SceneRec, s: SensorRec) -> wp.vec2:
+    """Every light's unoccluded irradiance on the sensor, in closed form."""
+    v = wp.vec2(0.0, 0.0)
+    for li in range(scene.n_lights):
+        l = scene.lights[li]
+        e = analytic_light(scene, li, s.position, s.normal)
+        if l.shaped != 0:  # the planner sends only shaped point lights here: E = I(ω)·cosψ/d²
+            e = e * shaping_factor(l, wp.normalize(s.position - l.position))
+        v += e
+    return v
+
+
+@wp.func
+def analytic_patch(scene: SceneRec, s: SensorRec) -> wp.vec2:
+    """Every light's unoccluded mean irradiance on the patch, in closed form
+    (point lights: I·Ω/A)."""
+    v = wp.vec2(0.0, 0.0)
+    for li in range(scene.n_lights):
+        v += analytic_patch_light(scene.lights[li], s.position, s.normal, s.right, s.up, s.width, s.height)
+    return v
+
+
+def _upload_radiance(rec, sensor: Sensor) -> None:
+    # 1 − cos of the cone as 2·sin²(θ/2), without cancellation
+    rec.one_minus_cos = 2.0 * math.sin(0.5 * sensor.half_angle) ** 2
+
+
+def _upload_patch(rec, sensor: Sensor) -> None:
+    from simulator.scene.model import patch_width_axis
+
+    rec.right = wp.vec3(*map(float, patch_width_axis(sensor.up, sensor.normal)))
+    rec.up = wp.vec3(*map(float, sensor.up))
+    rec.width, rec.height = float(sensor.size[0]), float(sensor.size[1])
+
+
+@dataclass(frozen=True)
+class SensorKernel:
+    """One sensor kind's device side (its other facts: ``SensorKindSpec``).
+
+    ``sample(scene, s, params, rng) -> vec2`` draws one sample of the
+    reading; ``analytic(scene, s) -> vec2`` is its closed form, if any;
+    ``upload(rec, sensor)`` fills its fields of the :class:`SensorRec`."""
+
+    kind: SensorKind
+    sample: Any
+    analytic: Any = None
+    upload: Callable | None = None
+
+
+#: sensor kinds read by :func:`estimate_kernel` (probes have their own kernel)
+SENSOR_KERNELS = (
+    SensorKernel(SensorKind.IRRADIANCE, sample_irradiance, analytic=analytic_irradiance),
+    SensorKernel(SensorKind.RADIANCE, sample_radiance, upload=_upload_radiance),
+    SensorKernel(SensorKind.PATCH, sample_patch, analytic=analytic_patch, upload=_upload_patch),
+)
+_SAMPLE = tuple((int(k.kind), k.sample) for k in SENSOR_KERNELS)
+_ANALYTIC = tuple((int(k.kind), k.analytic) for k in SENSOR_KERNELS if k.analytic is not None)
+
+
+@wp.func
+def sample_sensor(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+    """One sample of sensor ``s``'s reading (dispatch over ``SENSOR_KERNELS``)."""
+    for i in range(wp.static(len(_SAMPLE))):
+        if s.kind == wp.static(_SAMPLE[i][0]):
+            return wp.static(_SAMPLE[i][1])(scene, s, params, rng_in)
+    return wp.vec2(0.0, 0.0)
+
+
+@wp.func
+def analytic_sensor(scene: SceneRec, s: SensorRec) -> wp.vec2:
+    """Closed-form reading of sensor ``s`` (dispatch over ``SENSOR_KERNELS``)."""
+    for i in range(wp.static(len(_ANALYTIC))):
+        if s.kind == wp.static(_ANALYTIC[i][0]):
+            return wp.static(_ANALYTIC[i][1])(scene, s)
+    return wp.vec2(0.0, 0.0)
+
+
+def sensor_record(sensor: Sensor) -> SensorRec:
+    """The device record of one sensor: common fields, then its kind's ``upload``."""
+    r = SensorRec()
+    r.kind = int(sensor.kind)
+    r.position = wp.vec3(*map(float, sensor.position))
+    r.normal = wp.vec3(*map(float, sensor.normal))
+    r.one_minus_cos = 0.0
+    r.cull = 1 if sensor.spec.culls_lights else 0
+    for k in SENSOR_KERNELS:
+        if k.kind == sensor.kind and k.upload is not None:
+            k.upload(r, sensor)
+    return r
 
 
 @wp.kernel
@@ -662,7 +746,7 @@ def estimate_kernel(
     s = sensors[sid]
     prm = params
     prm.thread = t
-    prm.mask_row = wp.where(s.kind == RADIANCE, -1, sid)
+    prm.mask_row = wp.where(s.cull != 0, sid, -1)
     for j in range(thread_count[t]):
         v = sample_sensor(scene, s, prm, wp.rand_init(key, first + j))
         if not (wp.isfinite(v[0]) and wp.isfinite(v[1])):
@@ -683,65 +767,6 @@ def estimate_kernel(
 # ---------------------------------------------------------------- analytic
 
 
-@wp.func
-def analytic_light(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3) -> wp.vec2:
-    """Unoccluded irradiance on (p, n) from light ``li`` in closed form (the
-    host has checked that the closed form applies; see plan.analytic_refusal)."""
-    l = scene.lights[li]
-    if l.kind == POINT:  # E = I(ω)·cosψ/d²; the planner sends no other shaped light here
-        return (l.emission * point_irradiance(l.position, p, n)) * shaping_factor(l, wp.normalize(p - l.position))
-    if l.kind == SPHERE:
-        d = l.position - p
-        d2 = wp.length_sq(d)
-        if d2 <= l.radius * l.radius:
-            return wp.vec2(0.0, 0.0)
-        return l.emission * cap_irradiance(d / wp.sqrt(d2), l.radius * l.radius / d2, n)
-    if l.kind == RECT or l.kind == DISK:
-        if wp.dot(p - l.position, l.ez) >= 0.0:
-            return wp.vec2(0.0, 0.0)  # behind a one-sided emitter
-        if l.kind == DISK:
-            return l.emission * disk_irradiance(l.position, l.ex, l.ey, l.radius, p, n)
-        hx = 0.5 * l.width * l.ex
-        hy = 0.5 * l.height * l.ey
-        c = l.position
-        return l.emission * polygon_irradiance4(c - hx - hy, c + hx - hy, c + hx + hy, c - hx + hy, 4, p, n)
-    if l.kind == DISTANT:
-        if l.one_minus_cos <= 0.0:
-            return l.emission * wp.max(0.0, wp.dot(l.ez, n))
-        omc = l.one_minus_cos
-        return l.emission * cap_irradiance(l.ez, omc * (2.0 - omc), n)
-    if l.kind == DOME:
-        return l.emission * PI  # the whole upper hemisphere is sky
-    if l.kind == EMISSIVE:
-        total = wp.vec2(0.0, 0.0)
-        for k in range(scene.emit_tris.shape[0]):
-            tri = scene.emit_tris[k]
-            a = tri_vertex(scene, tri, 0)
-            b = tri_vertex(scene, tri, 1)
-            c = tri_vertex(scene, tri, 2)
-            facing = wp.dot(p - a, wp.cross(b - a, c - a))  # > 0: p in front
-            le = tri_emitted(scene, tri, facing)
-            if le[0] > 0.0 or le[1] > 0.0:
-                total += le * polygon_irradiance4(a, b, c, c, 3, p, n)
-        return total
-    return wp.vec2(0.0, 0.0)
-
-
-@wp.func
-def analytic_patch_point(l: LightRec, s: SensorRec) -> wp.vec2:
-    """Mean irradiance on a patch from a point light: I·Ω/A, Ω the patch's solid
-    angle seen from the light, counted when the light is on the side it faces."""
-    if wp.dot(l.position - s.position, s.normal) <= 0.0:
-        return wp.vec2(0.0, 0.0)
-    hx = 0.5 * s.width * s.right
-    hy = 0.5 * s.height * s.up
-    c = s.position - l.position
-    omega = triangle_solid_angle(c - hx - hy, c + hx - hy, c + hx + hy) + triangle_solid_angle(
-        c - hx - hy, c + hx + hy, c - hx + hy
-    )
-    return l.emission * (omega / (s.width * s.height))
-
-
 @wp.kernel
 def analytic_kernel(
     scene: SceneRec,
@@ -752,12 +777,5 @@ def analytic_kernel(
     """Closed-form reading of each listed sensor: irradiance sensors sum every
     light's unoccluded irradiance; patches sum point lights' I·Ω/A."""
     t = wp.tid()
-    sid = sensor_ids[t]
-    s = sensors[sid]
-    v = wp.vec2(0.0, 0.0)
-    for li in range(scene.n_lights):
-        if s.kind == PATCH:
-            v += analytic_patch_point(scene.lights[li], s)
-        else:
-            v += analytic_light(scene, li, s.position, s.normal)
+    v = analytic_sensor(scene, sensors[sensor_ids[t]])
     out_value[t] = wp.vec2d(wp.float64(v[0]), wp.float64(v[1]))

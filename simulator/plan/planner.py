@@ -28,12 +28,10 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from simulator.errors import UserError
-from simulator.scene.model import LightKind, Scene, Sensor, SensorKind
+from simulator.engine.methods import MC_METHODS
+from simulator.scene.model import LightKind, Scene, Sensor, SensorKind, patch_width_axis
 
 __all__ = ["MC_METHODS", "SensorPlan", "Plan", "make_plan", "probe_method", "analytic_refusal", "lights_behind", "format_plan"]
-
-#: methods with a Monte Carlo kernel
-MC_METHODS = ("light", "bsdf", "mis", "path")
 
 #: a light subtending more than this solid angle (sr) from a direct-lit
 #: sensor makes `mis` the plan: its cosine-weighted direction then lands on
@@ -254,8 +252,7 @@ def _largest_solid_angle(scene: Scene, sensor: Sensor, culled: list[str]) -> flo
 
 
 def _patch_corners(s: Sensor) -> list[np.ndarray]:
-    right = np.cross(s.up, s.normal)
-    right /= np.linalg.norm(right)
+    right = patch_width_axis(s.up, s.normal)
     hx, hy = 0.5 * s.size[0] * right, 0.5 * s.size[1] * s.up
     return [s.position + a * hx + b * hy for a in (-1, 1) for b in (-1, 1)]
 
