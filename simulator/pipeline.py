@@ -36,7 +36,7 @@ def load_scene(cfg: RunConfig) -> Scene:
     from simulator.scene.usd import load_stage  # the stage reader: the only code that imports pxr
 
     return load_stage(cfg.stage, light_units=cfg.light_units, radiometric_spectrum=cfg.radiometric_spectrum,
-                      variants=cfg.variants)
+                      variants=cfg.variants, require_light=True)  # a run of a stage with no light is refused
 
 
 def collect_sensors(cfg: RunConfig, scene: Scene) -> list[Sensor]:

@@ -18,7 +18,7 @@ equal-energy spectrum K ≈ 182.46 lm/W.
 References
 ----------
 CIE 15:2004 Colorimetry; CIE 018:2019 (photometry); the CIE 1924 V(λ) and D65
-tables as published by the ``colour-science`` package.
+tables as published by the ``colour-science`` package. docs/REFERENCES.md §Photometry.
 """
 
 from __future__ import annotations
@@ -46,7 +46,8 @@ SPECTRA = ("D65", "E")
 _WAVELENGTHS_NM = np.arange(380.0, 781.0, 1.0)
 
 # Rec. 709 / linear sRGB luminance weights (ITU-R BT.709), the colour space
-# UsdLux and UsdPreviewSurface colours are authored in by default.
+# UsdLux and UsdPreviewSurface colours are authored in by default. They sum to
+# 1 exactly as decimals, but not as the nearest doubles; see luminance_grey.
 _REC709_Y = np.array([0.2126, 0.7152, 0.0722])
 
 
@@ -138,6 +139,40 @@ def emission_pair(value: float, light_units: str, spectrum: str | float) -> tupl
     raise ValueError(f"light_units must be 'photometric' or 'radiometric', not {light_units!r}")
 
 
-def luminance_grey(rgb) -> float:
-    """Luminance-weighted grey of a linear Rec. 709 colour (BT.709 Y weights)."""
-    return float(np.dot(_REC709_Y, np.asarray(rgb, float)))
+def luminance_grey(rgb):
+    """Luminance-weighted grey of linear Rec. 709 colours (BT.709 Y weights).
+
+    Parameters
+    ----------
+    rgb : array_like, shape (3,) or (..., 3)
+        Linear Rec. 709 colours, any units.
+
+    Returns
+    -------
+    float or numpy.ndarray, shape (...)
+        Y = 0.2126·R + 0.7152·G + 0.0722·B, a float for one colour.
+
+    Notes
+    -----
+    Evaluated as deviations from the green component,
+
+        Y = G + 0.2126·(R − G) + 0.0722·(B − G),
+
+    which equals the weighted sum because the weights sum to 1. Written this
+    way the sum of the weights is never formed in floating point: an exactly
+    grey colour (R = G = B = g) returns g itself (the plain dot product gives
+    0.9·0.2126 + 0.9·0.7152 + 0.9·0.0722 = 0.8999999999999999), a near-grey
+    one stays within its components' spread of g (R − G and B − G are exact
+    for close components), and a scene's grey albedo or emission is read as
+    authored, whatever the BLAS or summation order.
+
+    References
+    ----------
+    ITU-R BT.709-6 (2015), item 3.2; docs/REFERENCES.md §Luminance of a colour.
+    """
+    c = np.asarray(rgb, dtype=np.float64)
+    if c.shape[-1:] != (3,):
+        raise ValueError(f"luminance_grey: expected colours of shape (..., 3), got {c.shape}")
+    r, g, b = c[..., 0], c[..., 1], c[..., 2]
+    y = g + _REC709_Y[0] * (r - g) + _REC709_Y[2] * (b - g)
+    return float(y) if y.ndim == 0 else y

@@ -136,7 +136,7 @@ def test_nearest_hit_matches_brute_force(n_tri, size, seed):
     eng = engine_for(pts, tris)
     t_max = 10.0 * size
     hit, t, face = (wp.empty(len(o), dtype=dt, device="cpu") for dt in (int, float, int))
-    wp.launch(k_nearest, dim=len(o), inputs=[eng._scene_rec, arr(o, wp.vec3), arr(d, wp.vec3), t_max], outputs=[hit, t, face], device="cpu")
+    wp.launch(k_nearest, dim=len(o), inputs=[eng.scene_rec, arr(o, wp.vec3), arr(d, wp.vec3), t_max], outputs=[hit, t, face], device="cpu")
     hit, t, face = hit.numpy(), t.numpy(), face.numpy()
     # the float32 rays the kernel saw, in float64
     o32, d32 = o.astype(np.float32).astype(np.float64), d.astype(np.float32).astype(np.float64)
@@ -172,7 +172,7 @@ def test_shadow_query_matches_brute_force(seed):
     dist[k & (third == 1)] = 1.01 * nearest[k & (third == 1)]
     eng = engine_for(pts, tris)
     clear = wp.empty(len(o), dtype=int, device="cpu")
-    wp.launch(k_shadow, dim=len(o), inputs=[eng._scene_rec, arr(o, wp.vec3), arr(d, wp.vec3), arr(dist, float)], outputs=[clear], device="cpu")
+    wp.launch(k_shadow, dim=len(o), inputs=[eng.scene_rec, arr(o, wp.vec3), arr(d, wp.vec3), arr(dist, float)], outputs=[clear], device="cpu")
     clear = clear.numpy().astype(bool)
     skip = np.zeros(len(o), bool)
     for i in range(len(o)):  # ambiguity relative to this ray's own segment length

@@ -681,8 +681,8 @@ def test_cie171_5_2_exact_is_the_point_source_law():
 
 def test_cie171_5_2_published_table_within_0_025_lx():
     """The published table differs from the exact I₀h²/d⁴ by at most
-    0.024 lx — REFERENCES.md says "up to 0.02 lx", which is that figure
-    rounded: B 105.21 vs 105.186 (−0.024), F 85.64 vs 85.663 (+0.023),
+    0.024 lx (docs/REFERENCES.md §CIE 171:2006 case 5.2), the largest
+    differences: B 105.21 vs 105.186 (−0.024), F 85.64 vs 85.663 (+0.023),
     H 74.36 vs 74.380 (+0.020), every other point ≤ 0.008. The table's
     rounded intensities cause it, not the formula. Tolerance 0.025 lx
     (≤ 0.03 % of the value, far inside the 1 % project aim); every point

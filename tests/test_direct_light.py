@@ -1,7 +1,7 @@
 """The `light` estimator on every bundled closed-form stage, in both light-unit modes.
 
 Each expected value comes from ``simulator.reference.closed_forms`` (an independent
-numpy implementation of the formulas in REFERENCES.md), evaluated with the
+numpy implementation of the formulas in docs/REFERENCES.md), evaluated with the
 light parameters the stage reader produced. A reading passes when
 |estimate − truth| ≤ 4·stderr + 2e-6·|truth|: four standard errors is the
 statistical bound (a fixed seed; a 6e-5 two-sided chance per reading of a
@@ -24,7 +24,7 @@ from simulator.reference import closed_forms as cf
 from simulator.config.loader import load_config
 from simulator.engine.driver import Engine
 from simulator.pipeline import collect_sensors, load_scene
-from simulator.scene.model import LightKind, SensorKind
+from simulator.scene.model import LightKind, SensorKind, patch_width_axis
 
 CONFIGS = Path(__file__).resolve().parents[1] / "configs"
 FLOAT32_SLACK = 2e-6
@@ -36,8 +36,7 @@ def _light(scene, kind):
 
 
 def _patch_vertices(s):
-    right = np.cross(s.up, s.normal)
-    right /= np.linalg.norm(right)
+    right = patch_width_axis(s.up, s.normal)
     w, h = s.size
     c = s.position
     return np.array([c - right * w / 2 - s.up * h / 2, c + right * w / 2 - s.up * h / 2,

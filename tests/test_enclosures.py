@@ -3,8 +3,8 @@
 Every case runs the ``path`` method (multiple importance sampling at every
 vertex, Russian roulette, no bounce cap) on a bundled stage and config, with
 a fixed seed, and checks each reading against a closed form of
-``simulator.reference.closed_forms`` (sources in REFERENCES.md, "Enclosures" and
-"CIE 171:2006 test cases"):
+``simulator.reference.closed_forms`` (sources in docs/REFERENCES.md §Furnace, §Integrating sphere
+and §CIE 171:2006 case 5.8):
 
 - furnace (stages/furnace.usda, ρ = 0.5, 0.9, 0.95 by variant): radiance
   L_e/(1 − ρ) and irradiance π·L_e/(1 − ρ) everywhere inside;
@@ -36,7 +36,7 @@ from simulator.reference import closed_forms as cf
 from simulator.config.loader import load_config
 from simulator.engine.driver import Engine
 from simulator.pipeline import collect_sensors, load_scene
-from simulator.scene.model import LightKind, Sensor, SensorKind
+from simulator.scene.model import LightKind, Sensor, SensorKind, patch_width_axis
 
 CONFIGS = Path(__file__).resolve().parents[1] / "configs"
 FLOAT32_SLACK = 2e-6
@@ -70,8 +70,7 @@ def _check(name: str, est: float, se: float, truth: float, extra: float = 0.0, m
 
 
 def _patch_vertices(s) -> np.ndarray:
-    right = np.cross(s.up, s.normal)
-    right /= np.linalg.norm(right)
+    right = patch_width_axis(s.up, s.normal)
     (w, h), c = s.size, s.position
     return np.array([c - right * w / 2 - s.up * h / 2, c + right * w / 2 - s.up * h / 2,
                      c + right * w / 2 + s.up * h / 2, c - right * w / 2 + s.up * h / 2])  # fmt: skip
@@ -88,8 +87,8 @@ def test_furnace(variant):
     reflects with albedo ρ. Expected, for every sensor whatever its place or
     orientation (flush on a wall, in a corner, oblique), radiance
     L_e/(1 − ρ) and irradiance π·L_e/(1 − ρ): 2π, 10π, 20π W/m² for ρ = 0.5,
-    0.9, 0.95 (cf.furnace_radiance / furnace_irradiance; REFERENCES.md
-    "Furnace"); a patch reads its mean irradiance, the same. Both channels
+    0.9, 0.95 (cf.furnace_radiance / furnace_irradiance; docs/REFERENCES.md
+    §Furnace); a patch reads its mean irradiance, the same. Both channels
     (the photometric one is L_e × 182.46 lm/W, equal-energy spectrum).
     The config's 8192 samples per sensor give a measured relative variance
     per sample of 0.008–0.05 (path throughput weight window), i.e. a
@@ -110,7 +109,7 @@ def test_furnace_bounce_cap_truncates_and_default_does_not(max_depth):
     """Furnace at ρ = 0.95, one upward sensor. With at most k bounces the
     path sums the Neumann series to order k: E_k = π·L_e·(1 − ρ^(k+1))/(1 − ρ),
     which is what it must read (4.3π = 14.3 W/m² at k = 4; at k = 64 it still
-    loses ρ^65 = 3.6% of the light, REFERENCES.md "Enclosures"); both are
+    loses ρ^65 = 3.6% of the light, docs/REFERENCES.md §Truncated paths); both are
     far (> 10 standard errors) below the full 20π = 62.83 W/m², and the
     default (max_depth −1, Russian roulette only) reads the full value.
     16384 samples: relative variance per sample ≤ 0.05 → stderr ≤ 0.18%."""
@@ -166,7 +165,7 @@ def test_integrating_sphere():
     an isotropic point source of I = 100 cd at the centre, Φ = 4π·I =
     1256.6 lm (the radiometric channel likewise from I in W/sr).
 
-    Ideal sphere (REFERENCES.md "Ideal integrating sphere"): the reflected
+    Ideal sphere (docs/REFERENCES.md §Integrating sphere): the reflected
     light is uniform inside, E_r = Φ/(4πR²)·ρ/(1 − ρ) = 400 lx on any receiver
     facing any way (cf.integrating_sphere_reflected), and the wall irradiance
     is Φ/(4πR²(1 − ρ)) = 500 lx (cf.integrating_sphere_irradiance). So the

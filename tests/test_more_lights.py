@@ -400,9 +400,9 @@ def test_several_textured_domes_add(tmp_path):
 
 
 def test_dome_texture_errors(tmp_path):
-    """A missing texture, an unsupported texture:format, a file that is not an EXR, an
-    'automatic' non-EXR file, and negative texels are UserErrors naming the stage, the prim
-    and the file."""
+    """A missing texture, an unsupported texture:format, a file that is not an EXR, a
+    Radiance .hdr with no pixels, and negative texels are UserErrors naming the stage, the
+    prim and the file."""
     stage = write_stage(tmp_path, dome_body("missing.exr"))
     with pytest.raises(UserError, match=r"s\.usda: /Sky: texture:file .*missing\.exr"):
         load_stage(stage)
@@ -414,7 +414,7 @@ def test_dome_texture_errors(tmp_path):
     with pytest.raises(UserError, match=r"s\.usda: /Sky: texture:file .*junk\.exr: not an OpenEXR file"):
         load_stage(write_stage(tmp_path, dome_body("junk.exr")))
     (tmp_path / "sky.hdr").write_text("#?RADIANCE\n")
-    with pytest.raises(UserError, match=r"s\.usda: /Sky: texture:file .*sky\.hdr: only lat-long OpenEXR"):
+    with pytest.raises(UserError, match=r"s\.usda: /Sky: texture:file .*sky\.hdr: not a readable Radiance picture"):
         load_stage(write_stage(tmp_path, dome_body("sky.hdr", fmt="automatic")))
     exr.write_channels(tmp_path / "neg.exr", {"Y": -np.ones((4, 8))})
     with pytest.raises(UserError, match=r"/Sky: texture:file .*neg\.exr: 32 texel\(s\) are negative"):

@@ -4,7 +4,7 @@ Statistical checks use |estimate − truth| ≤ 4·stderr + 2e-6·|truth| (fixed
 seeds; four standard errors is a 6e-5 two-sided false-alarm chance for a
 correct estimator; 2e-6 relative covers float32 arithmetic in the kernels,
 so zero-variance readings must be exact to float32). Reference values come
-from the formulas in REFERENCES.md: a uniform environment of radiance L gives
+from docs/REFERENCES.md §Radiometric quantities: a uniform environment of radiance L gives
 scalar irradiance (fluence rate) ∫L dω = 4πL and πL on any face; a uniform
 cone of half-angle θ gives 2πL(1 − cos θ); a point light gives I/d² along the
 direction to it.

@@ -30,7 +30,8 @@ import warp as wp
 from scipy import stats
 
 from simulator.reference import closed_forms as cf
-from simulator.engine.driver import Engine, _warp
+from simulator.engine.device import warp as _warp
+from simulator.engine.driver import Engine
 from simulator.kernels.lights import SceneRec, pdf_light, sample_light
 from simulator.kernels.sampling import (
     frame_x,
@@ -388,7 +389,7 @@ def _expected_counts(eng: Engine, li: int, p, n, param: SurfaceParam, nu: int, n
         with wp.ScopedDevice("cpu"):
             (pdf,) = launch(
                 k_pdf_light, len(U),
-                [eng._scene_rec, li, wp.vec3(*p), wp.vec3(*n), wp.array(wi.astype(np.float32), dtype=wp.vec3),
+                [eng.scene_rec, li, wp.vec3(*p), wp.vec3(*n), wp.array(wi.astype(np.float32), dtype=wp.vec3),
                  wp.array(t.astype(np.float32), dtype=float), wp.array(tri.astype(np.int32), dtype=int)],
                 [float],
             )  # fmt: skip
@@ -410,7 +411,7 @@ def _check_light(eng: Engine, li: int, p, n, param: SurfaceParam, nu: int, nv: i
     seed = zlib.crc32(what.encode()) & 0x7FFFFFFF  # a different stream per test
     with wp.ScopedDevice("cpu"):
         wi, dist, pdf, value, tri, pdf_again = launch(
-            k_sample_light, N, [eng._scene_rec, li, wp.vec3(*p), wp.vec3(*n), seed], [wp.vec3, float, float, wp.vec2, int, float]
+            k_sample_light, N, [eng.scene_rec, li, wp.vec3(*p), wp.vec3(*n), seed], [wp.vec3, float, float, wp.vec2, int, float]
         )
     ok = pdf > 0
     # the pdf a sample reports is the pdf the MIS weights ask for

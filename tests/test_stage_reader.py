@@ -311,11 +311,15 @@ def test_degenerate_faces_skipped_and_bad_indices_rejected(tmp_path):
         load_stage(write_stage(tmp_path, quad_mesh("Bad", pts, indices=[0, 1, 7])))
 
 
-def test_unsupported_gprim_warns(tmp_path):
-    """A UsdGeom.Cylinder is not tessellated: no triangles, one warning naming it."""
-    s = load_stage(write_stage(tmp_path, 'def Cylinder "Can"\n{\n}\n'))
+def test_unsupported_gprims_are_one_summary_warning_with_counts(tmp_path):
+    """Three BasisCurves and two Points are not read: no triangles, and exactly one
+    warning line that counts them by type ("not read: 3 BasisCurves, 2 Points")."""
+    body = "".join(f'def BasisCurves "C{i}"\n{{\n}}\n' for i in range(3))
+    body += "".join(f'def Points "P{i}"\n{{\n}}\n' for i in range(2))
+    s = load_stage(write_stage(tmp_path, body))
     assert s.geometry.n_triangles == 0
-    assert any("/Can" in w and "not supported" in w for w in s.warnings)
+    lines = [w for w in s.warnings if "not read" in w]
+    assert lines == ["s.usda: not read: 3 BasisCurves, 2 Points"], s.warnings
 
 
 # --------------------------------------------------------------------------- #
@@ -390,12 +394,12 @@ def test_opacity_zero_prim_left_out(tmp_path):
     assert any("/Pane" in w and "opacity 0" in w for w in s.warnings)
 
 
-@pytest.mark.parametrize("diffuse", [(1.0, 1.0, 1.0), (-0.1, -0.1, -0.1)])
+@pytest.mark.parametrize("diffuse", [(1.2, 1.2, 1.2), (1.0, 1.0, 1.01), (-0.1, -0.1, -0.1)])
 def test_albedo_out_of_range_is_user_error(tmp_path, diffuse):
-    """Albedo >= 1 (or < 0) breaks energy conservation: UserError naming file and prim."""
+    """Albedo > 1 (or < 0) breaks energy conservation: UserError naming file and prim."""
     tri = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]
     path = write_stage(tmp_path, material("White", diffuse) + quad_mesh("Snow", tri, bound("White")))
-    with pytest.raises(UserError, match=r"s\.usda: /Snow: albedo .*\[0, 1\)"):
+    with pytest.raises(UserError, match=r"s\.usda: /Snow: albedo .*\[0, 1\]"):
         load_stage(path)
 
 
@@ -739,10 +743,10 @@ def test_composition_error_is_a_warning(tmp_path):
 
 
 def test_unsupported_light_warns(tmp_path):
-    """A PortalLight is not read: no light, one warning naming it."""
-    s = load_stage(write_stage(tmp_path, 'def PortalLight "Portal"\n{\n}\n'))
+    """Two PortalLights are not read: no light, one summary warning counting them."""
+    s = load_stage(write_stage(tmp_path, 'def PortalLight "Portal"\n{\n}\ndef PortalLight "P2"\n{\n}\n'))
     assert not s.lights
-    assert any("/Portal" in w for w in s.warnings)
+    assert [w for w in s.warnings if "not read" in w] == ["s.usda: not read: 2 PortalLight"]
 
 
 def test_mesh_light_is_emitting_geometry(tmp_path):

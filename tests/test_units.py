@@ -1,4 +1,4 @@
-"""Photometry: luminous efficacies and emission pairs (REFERENCES.md, photometry section)."""
+"""Photometry: luminous efficacies and emission pairs (docs/REFERENCES.md §Photometry)."""
 
 import pytest
 

@@ -58,6 +58,7 @@ import numpy as np
 
 from simulator import __version__
 from simulator.bundled import bundled_configs
+from simulator.engine.methods import READ_METHODS
 from simulator.errors import UserError
 
 __all__ = [
@@ -76,7 +77,7 @@ __all__ = [
 DEFAULT_CONFIGS = ("point", "sphere", "rect", "disk", "polygon", "distant_occluder", "dome", "furnace",
                    "cie171_5_2", "cie171_5_8")  # fmt: skip
 CSV_COLUMNS = ("config", "method", "budget", "seed", "sensor", "estimate", "reference", "stderr", "seconds", "device")
-METHODS = ("analytic", "light", "bsdf", "mis", "path")
+METHODS = READ_METHODS
 #: first rung of the ladder, samples per sensor
 FIRST_BUDGET = 16
 #: last possible rung (sample indices are int32 in the kernel)

@@ -68,7 +68,22 @@ def _parser() -> argparse.ArgumentParser:
     st.add_argument("--quick", action="store_true", help="0.25 s per cell instead of 1 s")
     st.add_argument("--seconds", type=float, metavar="S", help="budget per cell in seconds (overrides --quick)")
     st.add_argument("--device", choices=("cpu", "cuda", "auto"), default="cpu", help="Warp device (default cpu)")
+
+    ex = sub.add_parser("example", help="copy a bundled config and its stage into a folder, ready to run and edit")
+    ex.add_argument("name", nargs="?", metavar="NAME", help="bundled example (see --list)")
+    ex.add_argument("dir", nargs="?", metavar="DIR", help="folder to copy it into (created if missing)")
+    ex.add_argument("--list", action="store_true", help="list the bundled examples")
+    sd = sub.add_parser("study", help="placement study: candidates x scenarios, zone figures, the best K sensors (resumable, dask)")
+    sd.add_argument("study", metavar="STUDY.toml", help="study file (.toml)")
+    sd.add_argument("--out", metavar="DIR", help="output and chunk folder (default: the study's [output] dir)")
+    sd.add_argument("--scheduler", metavar="ADDRESS", help="dask scheduler, e.g. tcp://host:8786 (default: this machine)")
     return p
+
+
+def _cmd_example(args) -> int:
+    from simulator.commands.example import main_example
+
+    return main_example(args.name, args.dir, args.list)
 
 
 def _cmd_chart(args) -> int:
@@ -213,6 +228,12 @@ def main(argv: list[str] | None = None) -> int:
             return _cmd_chart(args)
         if args.command == "stability":
             return _cmd_stability(args)
+        if args.command == "example":
+            return _cmd_example(args)
+        if args.command == "study":
+            from simulator.commands.study import main_study
+
+            return main_study(args.study, args.out, args.scheduler)
     except UserError as e:
         print(f"probesim: error: {e}", file=sys.stderr)
         return e.exit_code

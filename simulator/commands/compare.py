@@ -32,11 +32,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from simulator.errors import UserError
+from simulator.units import luminance_grey
 
 __all__ = ["Comparison", "compare_files", "compare_arrays", "format_comparison"]
 
-#: Rec. 709 luminance weights of R, G, B
-_Y_WEIGHTS = (0.2126, 0.7152, 0.0722)
 #: log floor relative to the largest |B|
 LOG_FLOOR = 1e-6
 
@@ -79,7 +78,7 @@ def _pick(a: dict, b: dict, channel: str | None, path_a: str, path_b: str) -> tu
     if all(c in a and c in b for c in "RGB"):
 
         def y(ch):
-            return sum(w * ch[c].astype(np.float64) for w, c in zip(_Y_WEIGHTS, "RGB"))
+            return luminance_grey(np.stack([ch[c] for c in "RGB"], axis=-1))
 
         return "Y (from R, G, B)", y(a), y(b), None
     common = sorted(c for c in a if c in b and "stderr" not in c)

@@ -44,6 +44,7 @@ import numpy as np
 
 from simulator.reference import closed_forms as cf
 from simulator.bundled import configs_dir as bundled_configs_dir
+from simulator.engine.methods import READ_METHODS
 from simulator.scene.model import Light, LightKind, Scene, Sensor, SensorKind
 
 __all__ = [
@@ -66,7 +67,7 @@ __all__ = [
 ]
 
 #: estimators in matrix column order
-METHODS = ("analytic", "light", "bsdf", "mis", "path")
+METHODS = READ_METHODS
 #: verdicts from best to worst; a cell shows the worst over its sensors
 VERDICTS = ("ok", "noisy", "biased", "blind")
 

@@ -51,7 +51,7 @@ from simulator.reference import closed_forms as cf
 from simulator.config.loader import RunConfig, load_config
 from simulator.bundled import configs_dir as bundled_configs_dir
 from simulator.errors import UserError
-from simulator.scene.model import Light, LightKind, Scene, Sensor, SensorKind
+from simulator.scene.model import Light, LightKind, Scene, Sensor, SensorKind, patch_width_axis
 
 __all__ = [
     "REL_TOL",
@@ -262,8 +262,7 @@ def _one_light(scene: Scene, kind: LightKind) -> Light:
 
 def _patch_vertices(s: Sensor) -> np.ndarray:
     """Corners of a patch sensor, counter-clockwise about its normal, metres."""
-    right = np.cross(s.up, s.normal)
-    right /= np.linalg.norm(right)
+    right = patch_width_axis(s.up, s.normal)
     hw, hh = 0.5 * s.size[0], 0.5 * s.size[1]
     c = s.position
     return np.array([c - hw * right - hh * s.up, c + hw * right - hh * s.up, c + hw * right + hh * s.up, c - hw * right + hh * s.up])
@@ -331,7 +330,7 @@ def _no_closed_form(ctx: CaseContext, s: Sensor, why: str) -> UserError:
 
 def _point(ctx: CaseContext, s: Sensor, ch: int, scene: Scene | None = None) -> float:
     """Isotropic point source. Irradiance: E = I·cosξ/d² (inverse-square cosine
-    law, REFERENCES.md "Point source"). Patch: flux Φ = I·Ω with Ω the patch's
+    law, docs/REFERENCES.md §Point source). Patch: flux Φ = I·Ω with Ω the patch's
     solid angle (Van Oosterom & Strackee), over its area."""
     l = _one_light(scene or ctx.scene, LightKind.POINT)
     intensity = l.emission[ch]
@@ -351,8 +350,8 @@ def _point_cm_yup(ctx: CaseContext, s: Sensor, ch: int) -> float:
 
 def _sphere(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Uniform sphere light: E = π·L·sin²σ·cosθ above the horizon, the
-    straddling formula across it (Howell's catalogue; REFERENCES.md "Uniform
-    sphere"). A radiance meter whose cone lies inside the sphere's disc reads L."""
+    straddling formula across it (Howell's catalogue; docs/REFERENCES.md
+    §Uniform sphere). A radiance meter whose cone lies inside the sphere's disc reads L."""
     l = _one_light(ctx.scene, LightKind.SPHERE)
     if s.kind == SensorKind.IRRADIANCE:
         return float(cf.sphere_irradiance(l.emission[ch], l.position, l.radius, s.position, s.normal))
@@ -369,9 +368,9 @@ def _sphere(ctx: CaseContext, s: Sensor, ch: int) -> float:
 def _rect(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Rect light. A receiver parallel to it and facing it: corner rectangles
     (Howell's catalogue, parallel rectangle from above a corner, added and
-    subtracted; REFERENCES.md "Rectangle W×H parallel"). Any other receiver:
+    subtracted; docs/REFERENCES.md §Parallel rectangle). Any other receiver:
     Lambert's contour formula after clipping to its upper hemisphere
-    (REFERENCES.md "Uniform polygon"). A meter whose cone lands inside the
+    (docs/REFERENCES.md §Lambert's polygon formula). A meter whose cone lands inside the
     rectangle reads L."""
     l = _one_light(ctx.scene, LightKind.RECT)
     L = l.emission[ch]
@@ -421,7 +420,7 @@ def _disk_bracket(l: Light, s: Sensor, ch: int) -> tuple[float, float]:
 def _disk(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Disk light. On its axis: E = π·L·R²/(R²+h²)·cosω (Howell's catalogue,
     coaxial disk, element tilted). Parallel, off the axis: E = π·L·F with the
-    offset-disk configuration factor (Howell; REFERENCES.md "Parallel disk").
+    offset-disk configuration factor (Howell; docs/REFERENCES.md §Parallel disk).
     Any other receiver (perpendicular, or with the disk partly below its
     horizon): Lambert's contour formula on the inscribed and circumscribed
     8192-gons, which bracket the exact value (their relative gap is about
@@ -456,8 +455,8 @@ def _disk_note(ctx: CaseContext, s: Sensor, ch: int) -> str:
 
 def _distant_occluder(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Delta distant light: E = E⊥·cosξ where the ray toward the light is
-    clear, 0 where the stage's geometry blocks it (REFERENCES.md, point
-    source with I/d² → E⊥). The shadow test is a float64 Möller–Trumbore over
+    clear, 0 where the stage's geometry blocks it (docs/REFERENCES.md
+    §Point source, I/d² → E⊥). The shadow test is a float64 Möller–Trumbore over
     every triangle of the stage, independent of the engine's BVH."""
     l = _one_light(ctx.scene, LightKind.DISTANT)
     if l.half_angle != 0.0 or s.kind != SensorKind.IRRADIANCE:
@@ -476,7 +475,7 @@ def _ground_is_black_plane(scene: Scene) -> bool:
 
 def _dome(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Uniform sky over a black ground: E = π·L·(1 + cos β)/2 for a receiver
-    tilted β from the zenith (REFERENCES.md "Uniform environment"); a meter
+    tilted β from the zenith (docs/REFERENCES.md §Uniform environment); a meter
     whose cone is wholly above the horizon reads L. The ground is 20 km across,
     so from 1 m up the sky seen past its edge is below 1e-4 rad of elevation."""
     l = _one_light(ctx.scene, LightKind.DOME)
@@ -545,8 +544,8 @@ def _emissive_polygon(scene: Scene) -> tuple[np.ndarray, np.ndarray, tuple[float
 def _polygon(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Emissive polygon, front face only: Lambert's contour formula,
     E = (L/2)·|Σ γ_i n·û_i|, after Sutherland–Hodgman clipping to the
-    receiver's upper hemisphere (Lambert 1760; Arvo 1995; REFERENCES.md
-    "Uniform polygon"). A meter whose cone lands inside the polygon reads L."""
+    receiver's upper hemisphere (Lambert 1760; Arvo 1995; docs/REFERENCES.md
+    §Lambert's polygon formula). A meter whose cone lands inside the polygon reads L."""
     verts, front, emission = _emissive_polygon(ctx.scene)
     L = emission[ch]
     if s.kind == SensorKind.IRRADIANCE:
@@ -570,7 +569,7 @@ def _polygon(ctx: CaseContext, s: Sensor, ch: int) -> float:
 def _radiance_floor(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """A Lambertian floor (f = ρ/π) under a delta sun: E = E⊥·cosξ, and the
     floor's radiance, the same toward every direction, is L = ρ·E/π
-    (REFERENCES.md "Reflection equation" with f = ρ/π). The floor is the only
+    (docs/REFERENCES.md §Reflection equation, f = ρ/π). The floor is the only
     surface, so no other light reaches it or the meters."""
     l = _one_light(ctx.scene, LightKind.DISTANT)
     g = ctx.scene.geometry
@@ -642,6 +641,45 @@ def _cie171_5_2_note(ctx: CaseContext, s: Sensor, ch: int) -> str:
     return f"CIE table {grid.published_lx[i]:g}; disk/point {e_disk / e_point - 1.0:+.1e}"
 
 
+# -- shaped (UsdLuxShapingAPI) point-like luminaires: self-contained cases
+
+
+def _shaped_point(ctx: CaseContext, s: Sensor, ch: int) -> float:
+    """A shaped point light (spot cone, focus, IES profile): E = I(ω)·cosψ/d²
+    with I(ω) = emission × LightShaping.factor(θ, φ), θ from the light's −Z
+    axis, φ from its +X toward +Y (the numpy twin of the kernel's factor:
+    cone with smoothstep softness, focus, the IES file's bilinear
+    interpolation; OpenUSD user guide "ShapingAPI"). Sums every light."""
+    if s.kind != SensorKind.IRRADIANCE:
+        raise _no_closed_form(ctx, s, "only irradiance sensors")
+    total = 0.0
+    for l in ctx.scene.lights:
+        if l.kind != LightKind.POINT:
+            raise UserError(f"{ctx.scene.path}: the shaped-luminaire case expects point lights only, found {l.kind.name}")
+        d = s.position - l.position
+        dist = float(np.linalg.norm(d))
+        w = d / dist
+        cos_psi = float(-w @ s.normal)
+        if cos_psi <= 0:
+            continue
+        f = 1.0
+        if l.shaping is not None:
+            ex, ey, ez = l.frame[:, 0], l.frame[:, 1], l.frame[:, 2]
+            theta = math.acos(float(np.clip(-w @ ez, -1.0, 1.0)))
+            phi = math.atan2(float(w @ ey), float(w @ ex))
+            f = float(l.shaping.factor(theta, phi))
+        total += l.emission[ch] * f * cos_psi / dist**2
+    return total
+
+
+def _cie171_5_2_ies_note(ctx: CaseContext, s: Sensor, ch: int) -> str:
+    grid = cf.cie171_point_source_grid()
+    if s.name not in grid.names:
+        return ""
+    i = grid.names.index(s.name)
+    return f"CIE table {grid.published_lx[i]:g}; exact cosine {grid.exact_lx[i]:.5f}" if ch == 1 else ""
+
+
 # -- enclosures (interreflection): configs may be absent while they are being built
 
 
@@ -654,7 +692,7 @@ def _uniform_surface(scene: Scene) -> tuple[float, tuple[float, float]]:
 
 def _furnace(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Closed furnace, every wall emitting L_e with albedo ρ: L = L_e/(1 − ρ)
-    everywhere and E = π·L_e/(1 − ρ) (REFERENCES.md "Furnace")."""
+    everywhere and E = π·L_e/(1 − ρ) (docs/REFERENCES.md §Furnace)."""
     rho, emission = _uniform_surface(ctx.scene)
     if np.ptp(ctx.scene.geometry.emission[:, ch]) != 0:
         raise UserError(f"{ctx.scene.path}: the furnace case expects every wall to emit the same radiance")
@@ -671,8 +709,8 @@ def _furnace(ctx: CaseContext, s: Sensor, ch: int) -> float:
 def _integrating_sphere(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Integrating sphere of albedo ρ with an isotropic point source (flux
     Φ = 4π·I) inside: the light reflected at least once reaches every wall
-    point alike, ρΦ/((1 − ρ)·S) with S the wall area (REFERENCES.md "Ideal
-    integrating sphere": Φ/(4πR²)·ρ/(1 − ρ) for S = 4πR²; the surface mean is
+    point alike, ρΦ/((1 − ρ)·S) with S the wall area (docs/REFERENCES.md
+    §Integrating sphere: Φ/(4πR²)·ρ/(1 − ρ) for S = 4πR²; the surface mean is
     exact for any closed enclosure, closed_forms.cie171_indirect_illuminance,
     and uniform on a sphere). The direct part is the point source's own
     E = I·cosξ/d² at the receiver (a patch: I·Ω/area), which equals Φ/(4πR²)
@@ -734,6 +772,10 @@ _BASE_CASES: tuple[Case, ...] = (
     Case("point_cm_yup", "point_cm_yup.toml", "light", _point_cm_yup),
     Case("sphere", "sphere.toml", "light", _sphere),
     Case("rect", "rect.toml", "light", _rect),
+    Case("cie171_5_3", "cie171_5_3.toml", "light", _rect, note=lambda ctx, s, ch: "Lambert (flush light)"),
+    Case("cie171_5_2_ies", "cie171_5_2_ies.toml", "light", _shaped_point, note=_cie171_5_2_ies_note),
+    Case("spot_cone", "spot_cone.toml", "light", _shaped_point),
+    Case("asymmetric_luminaire", "asymmetric_luminaire.toml", "light", _shaped_point),
     Case("disk", "disk.toml", "light", _disk),
     Case("disk_perpendicular", "disk_perpendicular.toml", "light", _disk, note=_disk_note),
     Case("polygon", "polygon.toml", "mis", _polygon),

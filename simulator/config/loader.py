@@ -73,7 +73,8 @@ from typing import Any
 import numpy as np
 
 from simulator.errors import UserError
-from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SENSOR_KINDS, Sensor, SensorKind
+from simulator.engine.methods import COMPONENTS, METHODS  # estimator and component names
+from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, MAX_PROBE_PIXELS, SENSOR_KINDS, Sensor, SensorKind, patch_width_axis
 from simulator.units import SPECTRA
 
 __all__ = [
@@ -93,16 +94,10 @@ __all__ = [
     "apply_overrides",
 ]
 
-#: estimator names accepted by ``simulation.method`` and ``--method``
-METHODS = ("auto", "analytic", "light", "bsdf", "mis", "path")
 #: device names accepted by ``simulation.device`` and ``--device``
-COMPONENTS = ("total", "direct", "indirect")
 DEVICES = ("cpu", "cuda", "auto")
 #: accepted values of ``light_units``
 LIGHT_UNITS = ("photometric", "radiometric")
-#: most pixels in a probe map (1024 × 512): each pixel keeps float64
-#: running sums of 19 integrands in 2 channels (about 600 B)
-MAX_PROBE_PIXELS = 1 << 19
 #: per-sensor sample cap of an adaptive run when ``max_samples`` is absent
 DEFAULT_MAX_SAMPLES = 2**20
 
@@ -592,8 +587,7 @@ def _grid(ck: _Checker, table: dict, index: int) -> tuple[GridConfig, list[Senso
                 f"expected a number or an array of 2 numbers, got {_toml_type(spacing_value)}",
             )
         sx = sy = ck.positive(spacing_value, f"{key}.spacing")
-    right = np.cross(up, normal)
-    right /= np.linalg.norm(right)
+    right = patch_width_axis(up, normal)
     nx = max(1, round(w / sx))
     ny = max(1, round(h / sy))
     grid = GridConfig(

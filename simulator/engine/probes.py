@@ -29,34 +29,37 @@ same stage has: the world frame for a Z-up stage, the Y-up stage's axes for
 a Y-up one. So the map can be given straight back to that stage as a
 DomeLight's ``texture:file``. The integrals are in the world frame (Z up).
 
-Only this module, :mod:`simulator.engine.driver` and ``simulator.kernels`` import
-``warp``.
+This module holds what only a probe needs: the map layout, the probe's
+device record, and the reductions of per-pixel statistics to the map and the
+integrals. The driver (:meth:`simulator.engine.driver.Engine.run_probes`)
+launches the passes and decides when to stop.
 """
 
 from __future__ import annotations
 
 import math
-import threading
-import time
 from dataclasses import dataclass, field
-from typing import Callable
 
 import numpy as np
 
-from simulator.errors import UserError
-from simulator.scene.model import Sensor, SensorKind
-from simulator.engine.stats import RunningStats, z_for_confidence
+from simulator.engine.stats import RunningStats
+from simulator.scene.model import MAX_PROBE_PIXELS, Sensor  # noqa: F401  (MAX_PROBE_PIXELS re-exported)
 
 __all__ = [
     "FACE_NAMES",
     "SH_NAMES",
     "MIN_PASSES",
     "MAX_PROBE_PIXELS",
+    "N_QUANTITIES",
+    "N_CHANNELS",
     "ProbeResult",
     "latlong_layout",
     "pixel_solid_angles",
     "probe_frame",
-    "run_probes",
+    "probe_record",
+    "stream_key",
+    "integrals",
+    "probe_result",
 ]
 
 #: the six faces of the "cube" sensor, in integrand order
@@ -66,15 +69,13 @@ SH_NAMES = ("0,0", "1,-1", "1,0", "1,1", "2,-2", "2,-1", "2,0", "2,1", "2,2")
 #: fewest passes (directions per pixel) a probe draws: its per-pixel standard
 #: errors come from the spread between passes
 MIN_PASSES = 8
-#: passes one kernel thread draws for one pixel
-PASS_BLOCK = 16
-#: kernel threads per launch: bounds the float64 sums held at once (~900 B each)
-THREADS_PER_LAUNCH = 1 << 16
-#: most pixels in a probe map (keep equal to simulator.config.loader.MAX_PROBE_PIXELS)
-MAX_PROBE_PIXELS = 1 << 19
+#: integrands per sample, see simulator.kernels.probe (19 reported + 3 for covariances)
+N_QUANTITIES = 22
+#: channels: radiometric, photometric
+N_CHANNELS = 2
 
-_Q = 22  # integrands per sample, see simulator.kernels.probe (19 reported + 3 for covariances)
-_C = 2  # channels: radiometric, photometric
+_Q = N_QUANTITIES
+_C = N_CHANNELS
 
 
 # --------------------------------------------------------------------------- layout (numpy)
@@ -235,13 +236,17 @@ class ProbeResult:
         return m, math.degrees(ang)
 
 
-# --------------------------------------------------------------------------- device runs
+# --------------------------------------------------------------------------- records and reductions
 
 
-def _probe_rec(wp, K, sensor: Sensor, frame: np.ndarray, key: int):
+def probe_record(r, sensor: Sensor, frame: np.ndarray, key: int):
+    """Fill the kernels' ``ProbeRec`` ``r`` for ``sensor``: position, map
+    frame (columns of ``frame``), pixel layout and random-stream ``key``."""
+    from simulator.engine.device import warp
+
+    wp = warp()
     w, h = sensor.resolution
     lon0, dlon, lat0, dlat = latlong_layout(w, h)
-    r = K.ProbeRec()
     r.position = wp.vec3(*map(float, sensor.position))
     r.ex = wp.vec3(*map(float, frame[:, 0]))
     r.ey = wp.vec3(*map(float, frame[:, 1]))
@@ -252,7 +257,7 @@ def _probe_rec(wp, K, sensor: Sensor, frame: np.ndarray, key: int):
     return r
 
 
-def _stream_key(seed: int, sensor_index: int) -> int:
+def stream_key(seed: int, sensor_index: int) -> int:
     """``sensor_stream_key`` of simulator.kernels.sampling, in numpy (same bits)."""
 
     def h(x: int) -> int:
@@ -264,218 +269,18 @@ def _stream_key(seed: int, sensor_index: int) -> int:
     return h((seed & 0xFFFFFFFF) ^ h(sensor_index + 0x9E3779B9)) >> 1
 
 
-def _launch_passes(engine, K, rec, params, n_pix: int, first_pass: int, n_passes: int):
-    """Draw passes [first_pass, first_pass + n_passes) of every pixel.
-
-    Returns per-pixel (counts, means, m2s) of shape (P,), (P, 38), (P, 38)
-    and the number of non-finite samples."""
-    from simulator.engine.driver import _warp
-
-    wp = _warp()
-    blocks = (n_passes + PASS_BLOCK - 1) // PASS_BLOCK
-    counts_blk = np.minimum(PASS_BLOCK, n_passes - PASS_BLOCK * np.arange(blocks))
-    pix_per_launch = max(1, THREADS_PER_LAUNCH // blocks)
-    counts = np.full(n_pix, n_passes, np.int64)
-    means = np.empty((n_pix, _Q * _C))
-    m2s = np.empty((n_pix, _Q * _C))
-    bad_total = 0
-    with wp.ScopedDevice(engine.device):
-        for p0 in range(0, n_pix, pix_per_launch):
-            p1 = min(n_pix, p0 + pix_per_launch)
-            n = (p1 - p0) * blocks
-            shift = wp.empty((n, _Q * _C), dtype=wp.float64)
-            s1 = wp.empty((n, _Q * _C), dtype=wp.float64)
-            s2 = wp.empty((n, _Q * _C), dtype=wp.float64)
-            bad = wp.empty(n, dtype=wp.int32)
-
-            def run(offset: int, dim: int):
-                wp.launch(
-                    K.probe_kernel,
-                    dim=dim,
-                    inputs=[engine._scene_rec, rec, params, 0, first_pass, n_passes, PASS_BLOCK, blocks, p0, offset],
-                    outputs=[shift, s1, s2, bad],
-                )
-
-            _split(engine.threads, run, n)
-            wp.synchronize_device()
-            block_pix = np.repeat(np.arange(p0, p1), blocks)
-            block_cnt = np.tile(counts_blk, p1 - p0)
-            _, _, m, v = RunningStats.reduce_blocks(block_pix, block_cnt, shift.numpy(), s1.numpy(), s2.numpy())
-            means[p0:p1] = m
-            m2s[p0:p1] = v
-            bad_total += int(bad.numpy().sum())
-    return counts, means, m2s, bad_total
-
-
-def _split(threads: int, run, n: int) -> None:
-    """Run ``run(offset, dim)`` over n kernel threads, split over ``threads``
-    CPU workers (Warp's CPU launches release the GIL; 1 on a GPU)."""
-    parts = min(threads, n)
-    if parts <= 1:
-        run(0, n)
-        return
-    cuts = np.linspace(0, n, parts + 1).astype(int)
-    workers = [threading.Thread(target=run, args=(int(a), int(b - a))) for a, b in zip(cuts[:-1], cuts[1:])]
-    for w in workers:
-        w.start()
-    for w in workers:
-        w.join()
-
-
-def run_probes(
-    engine,
-    probes: list[Sensor],
-    method: str,
-    *,
-    samples: int,
-    seed: int,
-    stream_ids: list[int] | None = None,
-    rel_error: float | None = None,
-    confidence: float = 0.95,
-    abs_error: float = 0.0,
-    max_samples: int = 1 << 20,
-    time_limit_s: float | None = None,
-    max_depth: int = -1,
-    component: str = "total",
-    progress: Callable | None = None,
-) -> list[ProbeResult]:
-    """Estimate every probe with ``method`` (light, bsdf, mis or path).
+def integrals(stats: RunningStats, omega: np.ndarray, delta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Stratified sphere integrals and their standard errors, each (22, 2).
 
     Parameters
     ----------
-    engine : simulator.engine.driver.Engine
-        The scene, resident on its device.
-    probes : list of Sensor
-        Sensors of kind PROBE.
-    samples : int
-        Directions per probe, rounded up to whole passes (one direction per
-        pixel each), at least :data:`MIN_PASSES` passes. In adaptive mode
-        the first batch.
-    seed : int
-        Run seed.
-    stream_ids : list of int, optional
-        Random-stream index of each probe (its index among all the run's
-        sensors); default ``range(len(probes))``.
-    rel_error, abs_error, max_samples, time_limit_s
-        Adaptive stopping as for :meth:`simulator.engine.driver.Engine.run`, applied
-        to the probe's scalar irradiance (both channels); ``max_samples``
-        caps the directions per probe. ``time_limit_s`` counts from the start
-        of this call; a probe past it still finishes its current batch (at
-        least :data:`MIN_PASSES` passes).
-    max_depth, component
-        As for :meth:`simulator.engine.driver.Engine.run`.
-    progress : callable, optional
-        Receives :class:`simulator.engine.driver.Progress` after each batch.
-
-    Returns
-    -------
-    list of ProbeResult
+    stats : RunningStats
+        Per pixel (P rows), the 22 × 2 integrands' statistics.
+    omega : ndarray, shape (P,)
+        Pixel solid angles, sr.
+    delta : ndarray, shape (22, 2)
+        The delta lights' exact part.
     """
-    from simulator.engine.driver import METHOD_FLAGS, Progress
-
-    if method not in METHOD_FLAGS:
-        raise UserError(f"method {method!r} cannot read probes (use light, bsdf, mis, path or auto)")
-    from simulator.engine.driver import _warp
-    from simulator.kernels import probe as K
-
-    wp = _warp()
-    wp.load_module(K, device=engine.device)
-    params = engine._params(method, seed, max_depth, component)
-    stream_ids = list(range(len(probes))) if stream_ids is None else list(stream_ids)
-    frame = probe_frame(engine.scene.up_axis)
-    adaptive = rel_error is not None
-    z = z_for_confidence(confidence)  # half-width of the confidence interval, in standard errors
-    out: list[ProbeResult] = []
-    t_start = time.perf_counter()
-    total_samples = 0
-    for k, s in enumerate(probes):
-        if s.kind != SensorKind.PROBE:
-            raise ValueError(f"{s.name}: not a probe")
-        w, h = s.resolution
-        n_pix = int(w) * int(h)
-        if n_pix < 1 or n_pix > MAX_PROBE_PIXELS:
-            raise UserError(f"{s.source}: probe {s.name!r}: resolution {w} x {h} must have 1 to {MAX_PROBE_PIXELS} pixels")
-        t0 = time.perf_counter()
-        rec = _probe_rec(wp, K, s, frame, _stream_key(seed, stream_ids[k]))
-        omega = pixel_solid_angles(w, h).reshape(-1)
-        # delta lights: exact, once
-        with wp.ScopedDevice(engine.device):
-            d_shift = wp.zeros((1, _Q * _C), dtype=wp.float64)
-            d_sum = wp.zeros((1, _Q * _C), dtype=wp.float64)
-            d_sq = wp.zeros((1, _Q * _C), dtype=wp.float64)
-            d_bad = wp.zeros(1, dtype=wp.int32)
-            wp.launch(K.probe_kernel, dim=1, inputs=[engine._scene_rec, rec, params, 1, 0, 0, 1, 1, 0, 0],
-                      outputs=[d_shift, d_sum, d_sq, d_bad])  # fmt: skip
-            delta = d_sum.numpy()[0].reshape(_Q, _C)
-        stats = RunningStats(n_pix, _Q * _C)
-        first_batch = max(MIN_PASSES, -(-samples // n_pix))
-        cap = max(MIN_PASSES, -(-max_samples // n_pix)) if adaptive else first_batch
-        want = min(first_batch, cap)
-        bad = 0
-        met = False
-        while True:
-            count = min(want, cap - int(stats.count[0]))
-            counts, means, m2s, b = _launch_passes(engine, K, rec, params, n_pix, int(stats.count[0]), count)
-            stats.merge(np.arange(n_pix), counts, means, m2s)
-            bad += b
-            done = int(stats.count[0]) >= cap
-            if adaptive:
-                val, se = _integrals(stats, omega, delta)
-                target = np.maximum(rel_error * np.abs(val[0]), abs_error)
-                met = bool(np.all(z * se[0] <= target))
-                done |= met
-                if not done:
-                    with np.errstate(divide="ignore", invalid="ignore"):
-                        ratio = float(np.max((z * se[0] / np.maximum(target, 1e-300)) ** 2))
-                    n = int(stats.count[0])
-                    need = math.ceil(n * (ratio if math.isfinite(ratio) else 2.0) * 1.1) - n
-                    want = int(np.clip(need, PASS_BLOCK, max(n, PASS_BLOCK)))
-            elapsed = time.perf_counter() - t_start
-            if time_limit_s is not None and elapsed >= time_limit_s:
-                done = True
-            if progress is not None:
-                progress(Progress(k + int(done), len(probes), total_samples + int(stats.count.sum()), elapsed, None))
-            if done:
-                break
-        passes = int(stats.count[0])
-        total_samples += passes * n_pix
-        val, se = _integrals(stats, omega, delta)
-        # Cov(v_i, v_j) = (Var(v_i + v_j) − Var v_i − Var v_j)/2 from the pair sums
-        var = se**2
-        cov = np.zeros((_C, 3, 3))
-        for a in range(3):
-            cov[:, a, a] = var[7 + a]
-        for q, (a, b) in zip((19, 20, 21), ((0, 1), (0, 2), (1, 2))):
-            cov[:, a, b] = cov[:, b, a] = 0.5 * (var[q] - var[7 + a] - var[7 + b])
-        mean = stats.mean.reshape(n_pix, _Q, _C)[:, 0, :]
-        pse = stats.stderr().reshape(n_pix, _Q, _C)[:, 0, :]
-        warnings = []
-        if bad:
-            warnings.append(f"probe {s.name}: {bad} non-finite samples were counted as 0")
-        out.append(
-            ProbeResult(
-                sensor=s,
-                frame=frame,
-                radiance=mean.reshape(h, w, _C).copy(),
-                radiance_stderr=pse.reshape(h, w, _C).copy(),
-                solid_angle_sr=omega.reshape(h, w),
-                integrals=val[:19],
-                integrals_stderr=se[:19],
-                vector_cov=cov,
-                delta=delta[:19],
-                passes=passes,
-                samples=passes * n_pix,
-                seconds=time.perf_counter() - t0,
-                non_finite=bad,
-                target_met=met if adaptive else None,
-                warnings=warnings,
-            )
-        )
-    return out
-
-
-def _integrals(stats: RunningStats, omega: np.ndarray, delta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Stratified sphere integrals and their standard errors, each (22, 2)."""
     n = stats.count.astype(np.float64)[:, None]
     mean = stats.mean
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -483,3 +288,41 @@ def _integrals(stats: RunningStats, omega: np.ndarray, delta: np.ndarray) -> tup
     val = (omega[:, None] * mean).sum(axis=0).reshape(_Q, _C) + delta
     se = np.sqrt((omega[:, None] ** 2 * var_mean).sum(axis=0)).reshape(_Q, _C)
     return val, se
+
+
+def probe_result(sensor: Sensor, frame: np.ndarray, stats: RunningStats, omega: np.ndarray, delta: np.ndarray,
+                 passes: int, seconds: float, bad: int, target_met: bool | None) -> ProbeResult:  # fmt: skip
+    """A finished probe's :class:`ProbeResult` from its per-pixel statistics
+    (see :func:`integrals`); the vector irradiance's covariances come from
+    the pair sums, Cov(v_i, v_j) = (Var(v_i + v_j) − Var v_i − Var v_j)/2."""
+    w, h = sensor.resolution
+    n_pix = int(w) * int(h)
+    val, se = integrals(stats, omega, delta)
+    var = se**2
+    cov = np.zeros((_C, 3, 3))
+    for a in range(3):
+        cov[:, a, a] = var[7 + a]
+    for q, (a, b) in zip((19, 20, 21), ((0, 1), (0, 2), (1, 2))):
+        cov[:, a, b] = cov[:, b, a] = 0.5 * (var[q] - var[7 + a] - var[7 + b])
+    mean = stats.mean.reshape(n_pix, _Q, _C)[:, 0, :]
+    pse = stats.stderr().reshape(n_pix, _Q, _C)[:, 0, :]
+    warnings = []
+    if bad:
+        warnings.append(f"probe {sensor.name}: {bad} non-finite samples were counted as 0")
+    return ProbeResult(
+        sensor=sensor,
+        frame=frame,
+        radiance=mean.reshape(h, w, _C).copy(),
+        radiance_stderr=pse.reshape(h, w, _C).copy(),
+        solid_angle_sr=omega.reshape(h, w),
+        integrals=val[:19],
+        integrals_stderr=se[:19],
+        vector_cov=cov,
+        delta=delta[:19],
+        passes=passes,
+        samples=passes * n_pix,
+        seconds=seconds,
+        non_finite=bad,
+        target_met=target_met,
+        warnings=warnings,
+    )

@@ -32,6 +32,12 @@ from the side its sensors face, ``up`` pointing up. String metadata:
 bar in lx, axes in metres from the grid centre, and the grid's minimum,
 mean, maximum and uniformity (min/mean) in the title.
 
+With sensor responses (:mod:`simulator.spectra`), each response's
+irradiance column and its standard error are more EXR channels named as the
+CSV columns (``ppfd_umol_m2_s``, ``ppfd_stderr_umol_m2_s``), its min/mean/max
+and uniformity are in the header (``probesim:par_uniformity``), and
+``<csv stem>.<grid>.<response>.png`` maps it the same way.
+
 Probe maps, for every probe of a run
 ------------------------------------
 ``<csv stem>.<probe>.exr``: a lat-long map of incident radiance (see
@@ -132,7 +138,7 @@ def _vec(v) -> str:
 # --------------------------------------------------------------------------- grids
 
 
-def grid_arrays(grid, values: dict[str, dict[str, float]]) -> dict[str, np.ndarray]:
+def grid_arrays(grid, values: dict[str, dict[str, float]], extra: tuple[str, ...] = ()) -> dict[str, np.ndarray]:
     """The grid's readings as images, shape (ny, nx), row 0 = cell row j = ny − 1.
 
     Parameters
@@ -140,15 +146,19 @@ def grid_arrays(grid, values: dict[str, dict[str, float]]) -> dict[str, np.ndarr
     grid : simulator.config.loader.GridConfig
     values : dict
         Sensor name → its CSV values (``irradiance_W_m2``, …).
+    extra : tuple of str
+        More CSV columns to map, each becoming a channel of its own name
+        (response columns such as ``ppfd_umol_m2_s``).
 
     Returns
     -------
     dict of str to ndarray
-        :data:`GRID_CHANNELS` → float64 images.
+        :data:`GRID_CHANNELS` (and ``extra``) → float64 images.
     """
     keys = {
         "E_W_m2": "irradiance_W_m2", "E_stderr_W_m2": "irradiance_stderr_W_m2",
         "Ev_lx": "illuminance_lx", "Ev_stderr_lx": "illuminance_stderr_lx",
+        **{c: c for c in extra},
     }  # fmt: skip
     out = {c: np.empty((grid.ny, grid.nx)) for c in keys}
     for j in range(grid.ny):
@@ -165,15 +175,16 @@ def _stats(lx: np.ndarray) -> tuple[float, float, float, float]:
     return lo, mean, hi, (lo / mean if mean > 0 else math.nan)
 
 
-def grid_png(grid, images: dict[str, np.ndarray]) -> bytes:
-    """PNG bytes of the grid's false-colour illuminance map.
+def grid_png(grid, images: dict[str, np.ndarray], channel: str = "Ev_lx", title: str = "illuminance",
+             unit: str = "lx") -> bytes:
+    """PNG bytes of the grid's false-colour map of one channel (illuminance by default).
 
-    The colour bar is in lx; axes are metres along ``right`` and ``up`` from
-    the grid centre; the title gives min, mean, max and uniformity.
+    The colour bar is in ``unit``; axes are metres along ``right`` and ``up``
+    from the grid centre; the title gives min, mean, max and uniformity.
     """
     from matplotlib.figure import Figure  # no pyplot: no global state, no display
 
-    lx = images["Ev_lx"]
+    lx = images[channel]
     lo, mean, hi, uni = _stats(lx)
     w, h = grid.size
     fig = Figure(figsize=(6.4, 4.8), dpi=100, layout="constrained")
@@ -181,12 +192,12 @@ def grid_png(grid, images: dict[str, np.ndarray]) -> bytes:
     # row 0 is the far end along up: drawn on top
     im = ax.imshow(lx, cmap="viridis", origin="upper", extent=(-w / 2, w / 2, -h / 2, h / 2), interpolation="nearest")
     cbar = fig.colorbar(im, ax=ax)
-    cbar.set_label("illuminance (lx)")
+    cbar.set_label(f"{title} ({unit})")
     ax.set_xlabel("along right (m)")
     ax.set_ylabel("along up (m)")
     ax.set_title(
-        f"{grid.name}: illuminance, {grid.nx} x {grid.ny} cells\n"
-        f"min / mean / max: {lo:.4g} / {mean:.4g} / {hi:.4g} lx\n"
+        f"{grid.name}: {title}, {grid.nx} x {grid.ny} cells\n"
+        f"min / mean / max: {lo:.4g} / {mean:.4g} / {hi:.4g} {unit}\n"
         f"uniformity (min/mean): {uni:.3f}",
         fontsize=10,
     )
@@ -195,7 +206,8 @@ def grid_png(grid, images: dict[str, np.ndarray]) -> bytes:
     return buf.getvalue()
 
 
-def grid_outputs(csv_path: Path, grids: list, rows: list, meta: dict[str, str]) -> dict[Path, Content]:
+def grid_outputs(csv_path: Path, grids: list, rows: list, meta: dict[str, str],
+                 responses: list[dict] | tuple = ()) -> dict[Path, Content]:
     """EXR and PNG maps of every grid.
 
     Parameters
@@ -206,6 +218,11 @@ def grid_outputs(csv_path: Path, grids: list, rows: list, meta: dict[str, str]) 
         The run's rows (the grids' cells among them).
     meta : dict of str to str
         Run-wide metadata: ``seed``, ``method``, ``light_units``, ``stage``.
+    responses : list of dict, optional
+        Response maps (:func:`simulator.spectra.posthoc.response_channels`):
+        each ``{"channel", "stderr_channel", "unit", "title", "name"}`` adds
+        its two channels (named as the CSV columns) to the grid's EXR and a
+        PNG ``<csv stem>.<grid>.<name>.png`` with its uniformity.
 
     Returns
     -------
@@ -213,14 +230,16 @@ def grid_outputs(csv_path: Path, grids: list, rows: list, meta: dict[str, str]) 
     """
     values = {r.sensor.name: r.values for r in rows}
     stems = output_names(csv_path, [g.name for g in grids])
+    extra = tuple(c for r in responses for c in (r["channel"], r["stderr_channel"]))
+    units = {**GRID_CHANNELS, **{c: r["unit"].replace("µ", "u") for r in responses for c in (r["channel"], r["stderr_channel"])}}
     files: dict[Path, Content] = {}
     for g in grids:
-        images = grid_arrays(g, values)
+        images = grid_arrays(g, values, extra)
         lo, mean, hi, uni = _stats(images["Ev_lx"])
         header = {
             "probesim:kind": "grid",
             "probesim:grid": g.name,
-            "probesim:units": "; ".join(f"{c}: {u}" for c, u in GRID_CHANNELS.items()),
+            "probesim:units": "; ".join(f"{c}: {u}" for c, u in units.items()),
             "probesim:seed": str(meta.get("seed", "")),
             "probesim:method": str(meta.get("method", "")),
             "probesim:light_units": str(meta.get("light_units", "")),
@@ -239,9 +258,16 @@ def grid_outputs(csv_path: Path, grids: list, rows: list, meta: dict[str, str]) 
             "probesim:illuminance_min_mean_max_lx": f"{lo:.9g} {mean:.9g} {hi:.9g}",
             "probesim:uniformity": f"{uni:.9g}",
         }
+        for r in responses:
+            r_lo, r_mean, r_hi, r_uni = _stats(images[r["channel"]])
+            header[f"probesim:{r['name']}_min_mean_max"] = f"{r_lo:.9g} {r_mean:.9g} {r_hi:.9g}"
+            header[f"probesim:{r['name']}_uniformity"] = f"{r_uni:.9g}"
         stem = stems[g.name]
         files[csv_path.with_name(stem + ".exr")] = _exr_writer(images, header)
         files[csv_path.with_name(stem + ".png")] = grid_png(g, images)
+        for r in responses:
+            files[csv_path.with_name(f"{stem}.{sanitise_name(r['name'])}.png")] = grid_png(
+                g, images, r["channel"], r["title"], r["unit"])
     return files
 
 

@@ -18,33 +18,29 @@ from pathlib import Path
 import numpy as np
 
 from simulator.errors import UserError
-from simulator.scene.model import Sensor, SensorKind
+from simulator.scene.model import SENSOR_SPECS, SensorKind, Sensor
 
-__all__ = ["COLUMNS", "PROBE_COLUMNS", "Reading", "readings_from", "probe_readings", "write_outputs", "format_table"]
+__all__ = ["COLUMNS", "PROBE_COLUMNS", "Reading", "readings_from", "probe_readings", "extra_columns", "write_outputs", "format_table"]
+
+
+def _value_columns() -> tuple[str, ...]:
+    """Every sensor kind's value columns (``SensorKindSpec.columns``), in
+    kind order, each once."""
+    out: list[str] = []
+    for spec in SENSOR_SPECS:
+        for group in spec.columns:
+            out += [c for c in group.columns if c not in out]
+    return tuple(out)
+
 
 #: CSV columns, in order; units are in the names. A column that does not
 #: apply to a sensor's kind is left empty, never 0.
-COLUMNS = (
-    "sensor", "kind", "x", "y", "z", "dx", "dy", "dz",
-    "irradiance_W_m2", "irradiance_stderr_W_m2", "illuminance_lx", "illuminance_stderr_lx",
-    "radiance_W_m2_sr", "radiance_stderr_W_m2_sr", "luminance_cd_m2", "luminance_stderr_cd_m2",
-    "flux_W", "flux_stderr_W", "luminous_flux_lm", "luminous_flux_stderr_lm",
-    "scalar_irradiance_W_m2", "scalar_irradiance_stderr_W_m2", "scalar_illuminance_lx", "scalar_illuminance_stderr_lx",
-    "mean_direction_x", "mean_direction_y", "mean_direction_z", "mean_direction_stderr_deg",
-    "samples", "seconds", "method", "target_met",
-)  # fmt: skip
+COLUMNS = ("sensor", "kind", "x", "y", "z", "dx", "dy", "dz", *_value_columns(), "samples", "seconds", "method", "target_met")
 #: columns only a probe fills: scalar irradiance (fluence rate, ∫L dω over the
 #: sphere) and the unit mean direction of arrival (normalised ∫L·ω dω,
 #: radiometric) with its angular standard error; the six face irradiances and
 #: SH coefficients go to ``<csv stem>.probes.json`` (see simulator.io.maps)
-PROBE_COLUMNS = COLUMNS[COLUMNS.index("scalar_irradiance_W_m2") : COLUMNS.index("samples")]
-
-_KIND_NAMES = {
-    SensorKind.IRRADIANCE: "irradiance",
-    SensorKind.RADIANCE: "radiance",
-    SensorKind.PATCH: "patch",
-    SensorKind.PROBE: "probe",
-}
+PROBE_COLUMNS = tuple(c for group in SENSOR_SPECS[SensorKind.PROBE].columns for c in group.columns)
 
 
 @dataclass
@@ -62,20 +58,21 @@ class Reading:
 def readings_from(sensors: list[Sensor], mean: np.ndarray, stderr: np.ndarray, samples, seconds, method, target_met) -> list[Reading]:
     """Turn per-sensor estimates (channel 0 radiometric, 1 photometric) into rows.
 
-    A patch's estimate is its mean irradiance; its flux is that × its area.
+    Each kind fills the column groups its ``SensorKindSpec.columns`` names:
+    a patch's estimate is its mean irradiance, and its flux that × its area.
     ``method`` is one name for all, or one per sensor.
     """
     rows = []
     for i, s in enumerate(sensors):
         m, e = mean[i], stderr[i]
         v: dict[str, float] = {}
-        if s.kind == SensorKind.RADIANCE:
-            v.update(radiance_W_m2_sr=m[0], radiance_stderr_W_m2_sr=e[0], luminance_cd_m2=m[1], luminance_stderr_cd_m2=e[1])
-        else:
-            v.update(irradiance_W_m2=m[0], irradiance_stderr_W_m2=e[0], illuminance_lx=m[1], illuminance_stderr_lx=e[1])
-        if s.kind == SensorKind.PATCH:
-            area = s.size[0] * s.size[1]
-            v.update(flux_W=m[0] * area, flux_stderr_W=e[0] * area, luminous_flux_lm=m[1] * area, luminous_flux_stderr_lm=e[1] * area)
+        for group in s.spec.columns:
+            val, val_se, photo, photo_se = group.columns
+            if group.factor == "area":
+                area = s.size[0] * s.size[1]
+                v.update({val: m[0] * area, val_se: e[0] * area, photo: m[1] * area, photo_se: e[1] * area})
+            else:
+                v.update({val: m[0], val_se: e[0], photo: m[1], photo_se: e[1]})
         met = None if target_met is None else bool(target_met[i])
         m_i = method if isinstance(method, str) else method[i]
         rows.append(Reading(s, {k: float(x) for k, x in v.items()}, int(samples[i]), float(seconds[i]), m_i, met))
@@ -113,20 +110,35 @@ def _fmt(x) -> str:
     return str(x)
 
 
+def extra_columns(rows: list[Reading]) -> list[str]:
+    """Columns beyond :data:`COLUMNS` that rows carry (response columns such as
+    ``ppfd_umol_m2_s``, see :mod:`simulator.spectra.posthoc`), in first-seen order.
+    They follow the standard columns; a run without them writes exactly
+    :data:`COLUMNS`."""
+    known = set(COLUMNS)
+    seen: dict[str, None] = {}
+    for r in rows:
+        for k in r.values:
+            if k not in known:
+                seen[k] = None
+    return list(seen)
+
+
 def _csv_text(rows: list[Reading]) -> str:
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(COLUMNS)
+    columns = COLUMNS + tuple(extra_columns(rows))
+    w.writerow(columns)
     for r in rows:
         s = r.sensor
         rec = {
-            "sensor": s.name, "kind": _KIND_NAMES[s.kind],
+            "sensor": s.name, "kind": s.spec.name,
             "x": s.position[0], "y": s.position[1], "z": s.position[2],
-            **({} if s.kind == SensorKind.PROBE else {"dx": s.normal[0], "dy": s.normal[1], "dz": s.normal[2]}),
+            **({"dx": s.normal[0], "dy": s.normal[1], "dz": s.normal[2]} if s.spec.directed else {}),
             "samples": r.samples, "seconds": r.seconds, "method": r.method, "target_met": r.target_met,
             **r.values,
         }  # fmt: skip
-        w.writerow([_fmt(rec.get(c)) for c in COLUMNS])
+        w.writerow([_fmt(rec.get(c)) for c in columns])
     return buf.getvalue()
 
 
@@ -200,17 +212,11 @@ def format_table(rows: list[Reading], max_rows: int = 30) -> str:
     shown = rows if len(rows) <= max_rows else [r for r in rows if r.sensor.grid is None][:max_rows]
     for r in shown:
         v = r.values
-        if r.sensor.kind == SensorKind.PROBE:  # scalar irradiance (fluence rate)
-            val, err, unit, ph, phu = v["scalar_irradiance_W_m2"], v["scalar_irradiance_stderr_W_m2"], "W/m²", v["scalar_illuminance_lx"], "lx"
-        elif r.sensor.kind == SensorKind.RADIANCE:
-            val, err, unit, ph, phu = v["radiance_W_m2_sr"], v["radiance_stderr_W_m2_sr"], "W/m²/sr", v["luminance_cd_m2"], "cd/m²"
-        elif r.sensor.kind == SensorKind.PATCH:
-            val, err, unit, ph, phu = v["flux_W"], v["flux_stderr_W"], "W", v["luminous_flux_lm"], "lm"
-        else:
-            val, err, unit, ph, phu = v["irradiance_W_m2"], v["irradiance_stderr_W_m2"], "W/m²", v["illuminance_lx"], "lx"
+        g = r.sensor.spec.columns[r.sensor.spec.headline]  # a probe's: scalar irradiance (fluence rate)
+        val, err, unit, ph, phu = v[g.columns[0]], v[g.columns[1]], g.unit, v[g.columns[2]], g.photometric_unit
         rel = f"{100 * err / abs(val):.2f}%" if val else "-"
         lines.append(
-            f"{r.sensor.name[:24]:<24} {_KIND_NAMES[r.sensor.kind]:<10} {val:>9.4g} {unit:<4} {err:>12.3g} {rel:>7}  {ph:>9.4g} {phu:<5} {r.samples:>8}"
+            f"{r.sensor.name[:24]:<24} {r.sensor.spec.name:<10} {val:>9.4g} {unit:<4} {err:>12.3g} {rel:>7}  {ph:>9.4g} {phu:<5} {r.samples:>8}"
         )
     grids: dict[str, list[Reading]] = {}
     for r in rows:

@@ -33,34 +33,28 @@ J. Arvo, D. Kirk, "Particle transport and image synthesis", SIGGRAPH 1990
 (Russian roulette).
 """
 
+import math
+from dataclasses import dataclass
+from typing import Any, Callable
+
 import warp as wp
 
-from .closed_forms import (
-    cap_irradiance,
-    disk_irradiance,
-    point_irradiance,
-    polygon_irradiance4,
-    triangle_solid_angle,
-)
+from simulator.scene.model import LightKind, Sensor, SensorKind
+
 from .lights import (  # noqa: F401  (LightRec, SceneRec re-exported for the engine)
-    CYLINDER,
-    DISK,
-    DISTANT,
-    DOME,
-    POINT,
-    EMISSIVE,
     RAY_INF,
-    RECT,
-    SPHERE,
     LightRec,
     LightSample,
     SceneRec,
+    analytic_light,
+    analytic_patch_light,
     escaped_radiance,
-    tri_vertex,
     hit_light,
+    light_within,
     pdf_light,
     sample_light,
     tri_emitted,
+    tri_vertex,
 )
 from .sampling import (
     INV_PI,
@@ -74,11 +68,6 @@ from .sampling import (
 
 # Forward-only: no gradients are taken, and skipping the adjoint halves compile time.
 wp.set_module_options({"enable_backward": False})
-
-# Sensor kinds; must match simulator.scene.model.SensorKind.
-IRRADIANCE = wp.constant(0)
-RADIANCE = wp.constant(1)
-PATCH = wp.constant(2)
 
 # A path whose every bounce survives Russian roulette with probability ρ < 1
 # ends with probability one; this cap only guards against ρ rounding to 1.
@@ -109,6 +98,7 @@ class SensorRec:
     width: float
     height: float
     one_minus_cos: float  # radiance cone: 1 − cos(half-angle); 0 = one direction
+    cull: int  # 1: the first vertex is the sensor, so the plan's light mask applies there
 
 
 @wp.struct
@@ -230,16 +220,8 @@ def near_light(scene: SceneRec, p: wp.vec3, reach: float) -> bool:
     ``mis`` lost the bsdf share of its weight."""
     for li in range(scene.n_lights):
         l = scene.lights[li]
-        d = p - l.position
-        if l.kind == SPHERE:
-            if wp.length(d) - l.radius < reach:
-                return True
-        if l.kind == RECT or l.kind == DISK or l.kind == CYLINDER:
-            # within the light's bounding box grown by reach (cheap and sufficient)
-            ext = wp.max(wp.max(0.5 * l.width, 0.5 * l.height), wp.max(l.radius, 0.5 * l.length))
-            if wp.abs(wp.dot(d, l.ex)) <= ext + reach and wp.abs(wp.dot(d, l.ey)) <= ext + reach:
-                if wp.abs(wp.dot(d, l.ez)) <= wp.where(l.kind == CYLINDER, l.radius, 0.0) + reach:
-                    return True
+        if light_within(l, p - l.position, reach):
+            return True
     return False
 
 
@@ -247,8 +229,9 @@ def near_light(scene: SceneRec, p: wp.vec3, reach: float) -> bool:
 def unoccluded(scene: SceneRec, o: wp.vec3, wi: wp.vec3, dist: float, tri: int) -> bool:
     """True if nothing blocks the segment from o along wi for ``dist``. A
     sampled emissive triangle is reached when the first hit is that triangle;
-    UsdLux lights are not geometry, so the segment ends exactly on them and a
-    surface 10⁻⁴ m in front of a lamp still blocks it."""
+    UsdLux lights are not geometry, so the segment ends on them (see
+    :func:`light_end_offset`) and a surface 10⁻⁴ m in front of a lamp still
+    blocks it."""
     if scene.has_mesh == 0:
         return True
     if tri >= 0:
@@ -257,24 +240,234 @@ def unoccluded(scene: SceneRec, o: wp.vec3, wi: wp.vec3, dist: float, tri: int) 
     return first_hit(scene, o, wi, dist).face < 0
 
 
-@wp.func
-def shadow_ray_clear(scene: SceneRec, o: wp.vec3, p: wp.vec3, ls: LightSample) -> bool:
-    """Visibility of light sample ``ls`` (drawn at p) from the ray origin o.
+#: float32 unit roundoff u = 2⁻²⁴
+FLOAT32_U = wp.constant(5.9604645e-08)
+#: roundings bounded by LIGHT_POINT_GAMMA = γ(16) in light_point_error (see there)
+LIGHT_POINT_GAMMA = wp.constant(16.0 * 5.9604645e-08 / (1.0 - 16.0 * 5.9604645e-08))
+#: γ(6): the shadow segment's own reconstruction o + dist·wi (see light_end_offset)
+SEGMENT_GAMMA = wp.constant(6.0 * 5.9604645e-08 / (1.0 - 6.0 * 5.9604645e-08))
 
-    The segment runs from o to the sampled light point p + dist·wi itself,
-    not from o along wi for dist: o is pushed off the surface by up to
-    1e-5·|p|∞ (3 mm at 300 m), and the parallel segment ended beside the
-    lamp, short of a shade 1e-4 m below it (a leak, measured on the leak
-    stage moved 300 m out). Lights at infinity keep the direction."""
+
+# Kind integers for the flush-light error bounds below, taken from the one
+# declaration (LightKind), not copied.
+POINT = wp.constant(int(LightKind.POINT))
+SPHERE = wp.constant(int(LightKind.SPHERE))
+RECT = wp.constant(int(LightKind.RECT))
+DISK = wp.constant(int(LightKind.DISK))
+CYLINDER = wp.constant(int(LightKind.CYLINDER))
+
+
+@wp.func
+def abs3(v: wp.vec3) -> wp.vec3:
+    return wp.vec3(wp.abs(v[0]), wp.abs(v[1]), wp.abs(v[2]))
+
+
+@wp.func
+def light_point_error(l: LightRec, p: wp.vec3, q: wp.vec3) -> wp.vec3:
+    """Componentwise bound (metres) on how far the float32 light point q, as
+    a shadow ray from a receiver at p ends on it, and the float32 vertices of
+    a surface authored through that point, may lie from the exact light
+    surface.
+
+    Notes
+    -----
+    A computed sum of k float32 terms, each carrying j roundings, is off by
+    at most γ(j + k)·Σ|terms| in each component (Higham 2002, §3.1;
+    γ(n) = n·u/(1 − n·u), u = 2⁻²⁴). The light samplers form q from the
+    receiver p, the light's centre c, and local coordinates along the
+    light's frame axes a ∈ {ex, ey, ez} times those axes' components: the
+    spherical-rectangle sampler as p + x·ex + y·ey + z₀·ez, with z₀ =
+    (corner − p)·ez and the corner c − ½w·ex − ½h·ey; the disk sampler as c
+    + x·ex + y·ey; the shadow ray then takes q back as p + dist·wi (d = q −
+    p). Bounding each local coordinate (and the rounding of the dot product
+    that gives it) by M_a = |a|·(|p| + |c|) + |d·a| + the half extent along
+    a, a term along axis a moves component i by at most γ·|aᵢ|·M_a, so
+
+        |q̃ᵢ − qᵢ| ≤ γ(n)·(|pᵢ| + |cᵢ| + |dᵢ| + Σ_a |aᵢ|·M_a).
+
+    No term's path takes more than ~8 roundings, the centre and frame were
+    rounded once from the stage's float64 transform, and a surface flush
+    with the light has its float32 vertices (u/2 each) off the authored
+    plane by no more than u·(|cᵢ| + extent); n = 16 covers these with a
+    factor 2 to spare. Like pbrt-v4's error bounds on computed points
+    (Pharr, Jakob, Humphreys, "Physically Based Rendering", 4th ed., §6.8)
+    it scales with each coordinate's magnitude, so it holds in metres or
+    centimetres and near the origin or far from it; and since it keeps the
+    frame's components, a horizontal lamp 300 m out, whose frame has exact
+    zeros across its plane, gets a bound across the plane of γ·(a few
+    metres), not γ·300 m. Sphere and cylinder points, formed along
+    directions not in the light's frame, take |d| + extent in every
+    component; a point light's q is its centre, exact."""
+    c = l.position
+    d = q - p
+    if l.kind == POINT:
+        return LIGHT_POINT_GAMMA * abs3(c)
+    base = abs3(p) + abs3(c) + abs3(d)
+    if l.kind == RECT or l.kind == DISK:
+        pc = abs3(p) + abs3(c)
+        hx = wp.where(l.kind == RECT, 0.5 * l.width, l.radius)
+        hy = wp.where(l.kind == RECT, 0.5 * l.height, l.radius)
+        mx = wp.dot(abs3(l.ex), pc) + wp.abs(wp.dot(d, l.ex)) + hx
+        my = wp.dot(abs3(l.ey), pc) + wp.abs(wp.dot(d, l.ey)) + hy
+        mz = wp.dot(abs3(l.ez), pc) + wp.abs(wp.dot(d, l.ez))
+        return LIGHT_POINT_GAMMA * (base + mx * abs3(l.ex) + my * abs3(l.ey) + mz * abs3(l.ez))
+    ext = wp.max(l.radius, 0.5 * l.length)
+    s = wp.length(d) + ext
+    return LIGHT_POINT_GAMMA * (base + wp.vec3(s, s, s))
+
+
+@wp.func
+def light_emit_normal(l: LightRec, q: wp.vec3, toward: wp.vec3) -> wp.vec3:
+    """Unit normal of light ``l``'s emitting surface at q, on the side the
+    light shines from (toward the receiver); for a point light, which has no
+    surface, the unit direction ``toward`` the receiver itself."""
+    if l.kind == RECT or l.kind == DISK:
+        return -l.ez
+    if l.kind == SPHERE:
+        return wp.normalize(q - l.position)
+    if l.kind == CYLINDER:
+        r = q - l.position
+        return wp.normalize(r - wp.dot(r, l.ex) * l.ex)
+    return toward
+
+
+@wp.func
+def light_end_offset(l: LightRec, o: wp.vec3, p: wp.vec3, q: wp.vec3, nl: wp.vec3) -> float:
+    """How far (metres) a shadow ray's far end is moved off the light point
+    q, along the light's emitting normal nl (toward the receiver), so that a
+    surface the light is flush with does not block it while a shade a
+    little further in front still does.
+
+    Notes
+    -----
+    As pbrt-v4 offsets both ends of a shadow ray (``SpawnRayTo``) by the
+    error bounds of its two points, projected on each point's normal, the
+    end moves by
+
+        δ = Σᵢ |nlᵢ|·(eᵢ + γ(6)·|qᵢ − oᵢ|),
+
+    e the componentwise bound of :func:`light_point_error` (its projection
+    on nl is the error across the light's surface, which alone decides on
+    which side of a flush surface the end lies), plus the error with which
+    the traced segment o + t·wi, t ≤ dist, reproduces its end: wi =
+    fl(fl(q' − o)/fl(|q' − o|)) carries one rounding of the difference, ≤ 4
+    in the norm and 1 in the division, so dist·wiᵢ is within γ(6)·|qᵢ − oᵢ|
+    of q'ᵢ − oᵢ. ``first_hit`` finds plane crossings exactly (float64 on the
+    float32 data), so a flush surface lies behind the moved end and is not
+    hit. The leak stage's shades, 1e-4 m in front of their lamps, are ≥ 10δ
+    away (δ ≈ 5e-6 m near the origin, and for the horizontal lamp 300 m out,
+    whose frame keeps the bound across its plane small); a shade closer to a
+    lamp than δ does not shadow it. For a point light nl is the direction to
+    the receiver, so a surface through the point, seen at angle ψ from its
+    normal, is cleared by δ·cos ψ only."""
+    e = light_point_error(l, p, q) + SEGMENT_GAMMA * abs3(q - o)
+    return wp.dot(abs3(nl), e)
+
+
+@wp.func
+def shadow_ray_clear(scene: SceneRec, o: wp.vec3, p: wp.vec3, li: int, ls: LightSample) -> bool:
+    """Visibility of light sample ``ls`` of light ``li`` (drawn at p) from
+    the ray origin o.
+
+    The segment runs from o to the sampled light point q = p + dist·wi (a
+    point light's centre), moved off the light's surface toward the
+    receiver by :func:`light_end_offset`, not from o along wi for dist: o is
+    pushed off the surface by up to 1e-5·|p|∞ (3 mm at 300 m), and the
+    parallel segment ended beside the lamp, short of a shade 1e-4 m below it
+    (a leak, measured on the leak stage moved 300 m out); and a segment
+    ending on q itself was blocked, about half the time by rounding, by a
+    ceiling the light is flush with (CIE 171 case 5.3's layout read 21–29%
+    low). Lights at infinity keep the direction; an emissive triangle's
+    segment ends on q itself, since it is met as the mesh triangle it is."""
     if scene.has_mesh == 0:
         return True
     if ls.dist >= RAY_INF:
         return unoccluded(scene, o, ls.wi, ls.dist, ls.tri)
-    d = (p + ls.dist * ls.wi) - o
+    l = scene.lights[li]
+    q = p + ls.dist * ls.wi
+    if ls.tri < 0:
+        q = wp.where(l.kind == POINT, l.position, q)
+        nl = light_emit_normal(l, q, -ls.wi)
+        q = q + light_end_offset(l, o, p, q, nl) * nl
+    d = q - o
     dist = wp.length(d)
     if dist <= 0.0:
         return True
     return unoccluded(scene, o, d / dist, dist, ls.tri)
+
+
+@wp.func
+def hit_light_before(l: LightRec, o: wp.vec3, d: wp.vec3, t_surface: float) -> float:
+    """Distance along the ray (o, d) to the emitting side of area light
+    ``l`` when it is met before the surface hit at ``t_surface`` (or −1):
+    the light's surface is taken moved by :func:`light_end_offset` toward
+    the ray's origin, as shadow rays take it, so a light flush with the
+    surface the ray hits is seen by direction samples as by light samples
+    (the two strategies that MIS weighs estimate the same integrand). A
+    surface at grazing cosθl to the light moves by δ/cosθl along the ray."""
+    t = hit_light(l, o, d, RAY_INF)
+    if t <= 0.0:
+        return -1.0
+    if t < t_surface:
+        return t
+    q = o + t * d
+    nl = light_emit_normal(l, q, -d)
+    cos_l = -wp.dot(d, nl)
+    if cos_l <= 0.0:
+        return -1.0
+    if t - light_end_offset(l, o, o, q, nl) / cos_l < t_surface:
+        return t
+    return -1.0
+
+
+@wp.func
+def ies_candela(l: LightRec, theta_deg: float, phi_deg: float) -> float:
+    """Bilinear interpolation of the light's regular (θ, φ) candela table
+    (rows θ = 0…180°, columns φ = 0…360°; see
+    GoniometricDistribution.regular_table, which puts every measured angle
+    on a node, so this equals the distribution's own interpolation)."""
+    ft = wp.clamp(theta_deg, 0.0, 180.0) / 180.0 * float(l.map_h - 1)
+    fp = wp.clamp(phi_deg, 0.0, 360.0) / 360.0 * float(l.map_w - 1)
+    i = wp.clamp(int(wp.floor(ft)), 0, l.map_h - 2)
+    j = wp.clamp(int(wp.floor(fp)), 0, l.map_w - 2)
+    a = wp.clamp(ft - float(i), 0.0, 1.0)
+    b = wp.clamp(fp - float(j), 0.0, 1.0)
+    w = l.map_w
+    v0 = (1.0 - b) * l.map[i * w + j] + b * l.map[i * w + j + 1]
+    v1 = (1.0 - b) * l.map[(i + 1) * w + j] + b * l.map[(i + 1) * w + j + 1]
+    return (1.0 - a) * v0 + a * v1
+
+
+@wp.func
+def shaping_factor(l: LightRec, w_out: wp.vec3) -> float:
+    """UsdLuxShapingAPI factor of light ``l``'s emission toward the unit
+    direction ``w_out`` (from the light to the receiver); 1 for an unshaped
+    light. θ is the angle from the light's −Z axis, φ its azimuth from +X
+    toward +Y (the IES frame); see :class:`simulator.scene.model.LightShaping`
+    for the formula (cone with smoothstep softness, focus with tint, IES
+    candela table). Multiplying a sample's value by it keeps every estimator
+    unbiased: the pdfs are those of the unshaped light."""
+    if l.shaped == 0:
+        return 1.0
+    cos_t = wp.clamp(-wp.dot(w_out, l.ez), -1.0, 1.0)
+    theta = wp.acos(cos_t)
+    cut = l.shaping[0]
+    if theta > cut:
+        return 0.0
+    f = float(1.0)
+    start = cut * (1.0 - l.shaping[1])
+    if l.shaping[1] > 0.0 and cut > start:
+        t = wp.clamp((theta - start) / (cut - start), 0.0, 1.0)
+        f = 1.0 - t * t * (3.0 - 2.0 * t)
+    if l.shaping[2] > 0.0:
+        tint = l.shaping[3]
+        f = f * (tint + (1.0 - tint) * wp.pow(wp.abs(cos_t), l.shaping[2]))
+    if l.ies_scale > 0.0:
+        phi = wp.atan2(wp.dot(w_out, l.ey), wp.dot(w_out, l.ex))
+        if phi < 0.0:
+            phi = phi + 2.0 * PI
+        f = f * l.ies_scale * ies_candela(l, wp.degrees(theta), wp.degrees(phi))
+    return f
 
 
 @wp.func
@@ -311,13 +504,14 @@ def vertex_irradiance(
                     if scene.light_mask[params.mask_row * scene.n_lights + li] == 0:
                         continue
                 ls = sample_light(scene, li, p, n, u)  # geometry from the true point; only rays start at o
+                ls.value = ls.value * shaping_factor(scene.lights[li], -ls.wi)
                 if ls.value[0] > 0.0 or ls.value[1] > 0.0:
                     w = float(1.0)
                     if params.mis != 0 and ls.pdf > 0.0:
                         w = power_heuristic(ls.pdf, pdf_cosine_hemisphere(wp.dot(ls.wi, n)))
                     if w > 0.0:
                         count_ray(scene, params)
-                    if w > 0.0 and shadow_ray_clear(scene, o, p, ls):
+                    if w > 0.0 and shadow_ray_clear(scene, o, p, li, ls):
                         total += (weight * w) * ls.value
         if params.bsdf == 0:
             break
@@ -338,13 +532,12 @@ def vertex_irradiance(
         # (from p, parallel) was seen past a shade the mesh ray hit.
         for li in range(scene.n_lights):
             l = scene.lights[li]
-            if l.kind == RECT or l.kind == DISK or l.kind == SPHERE or l.kind == CYLINDER:
-                t = hit_light(l, o, wi, t_hit)
-                if t > 0.0 and count:
-                    w = float(1.0)
-                    if params.mis != 0 and params.nee != 0:
-                        w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, t, -1))
-                    total += (w_dir * w) * l.emission
+            t = hit_light_before(l, o, wi, t_hit)  # −1 for lights with no surface
+            if t > 0.0 and count:
+                w = float(1.0)
+                if params.mis != 0 and params.nee != 0:
+                    w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, t, -1))
+                total += (w_dir * w * shaping_factor(l, -wi)) * l.emission
         if face < 0:
             for li in range(scene.n_lights):
                 le = escaped_radiance(scene.lights[li], wi)
@@ -399,9 +592,8 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     total = wp.vec2(0.0, 0.0)
     for li in range(scene.n_lights):
         l = scene.lights[li]
-        if l.kind == RECT or l.kind == DISK or l.kind == SPHERE or l.kind == CYLINDER:
-            if hit_light(l, o, d, t_hit) > 0.0 and direct:
-                total += l.emission
+        if hit_light_before(l, o, d, t_hit) > 0.0 and direct:
+            total += shaping_factor(l, -d) * l.emission
     if face < 0:
         if direct:
             for li in range(scene.n_lights):
@@ -418,15 +610,110 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
 
 
 @wp.func
-def sample_sensor(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+def sample_irradiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+    """One estimate of the irradiance on the sensor's side."""
+    return vertex_irradiance(scene, s.position, s.normal, 1.0, params, params.skip_direct, rng_in)
+
+
+@wp.func
+def sample_patch(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+    """One estimate of the irradiance at a point drawn uniformly on the patch."""
     rng = rng_in
-    if s.kind == RADIANCE:
-        return sample_radiance(scene, s, params, rng)
-    p = s.position
-    if s.kind == PATCH:
-        u = wp.vec2(wp.randf(rng), wp.randf(rng))
-        p = p + ((u[0] - 0.5) * s.width) * s.right + ((u[1] - 0.5) * s.height) * s.up
+    u = wp.vec2(wp.randf(rng), wp.randf(rng))
+    p = s.position + ((u[0] - 0.5) * s.width) * s.right + ((u[1] - 0.5) * s.height) * s.up
     return vertex_irradiance(scene, p, s.normal, 1.0, params, params.skip_direct, rng)
+
+
+@wp.func
+def analytic_irradiance(scene: SceneRec, s: SensorRec) -> wp.vec2:
+    """Every light's unoccluded irradiance on the sensor, in closed form."""
+    v = wp.vec2(0.0, 0.0)
+    for li in range(scene.n_lights):
+        l = scene.lights[li]
+        e = analytic_light(scene, li, s.position, s.normal)
+        if l.shaped != 0:  # the planner sends only shaped point lights here: E = I(ω)·cosψ/d²
+            e = e * shaping_factor(l, wp.normalize(s.position - l.position))
+        v += e
+    return v
+
+
+@wp.func
+def analytic_patch(scene: SceneRec, s: SensorRec) -> wp.vec2:
+    """Every light's unoccluded mean irradiance on the patch, in closed form
+    (point lights: I·Ω/A)."""
+    v = wp.vec2(0.0, 0.0)
+    for li in range(scene.n_lights):
+        v += analytic_patch_light(scene.lights[li], s.position, s.normal, s.right, s.up, s.width, s.height)
+    return v
+
+
+def _upload_radiance(rec, sensor: Sensor) -> None:
+    # 1 − cos of the cone as 2·sin²(θ/2), without cancellation
+    rec.one_minus_cos = 2.0 * math.sin(0.5 * sensor.half_angle) ** 2
+
+
+def _upload_patch(rec, sensor: Sensor) -> None:
+    from simulator.scene.model import patch_width_axis
+
+    rec.right = wp.vec3(*map(float, patch_width_axis(sensor.up, sensor.normal)))
+    rec.up = wp.vec3(*map(float, sensor.up))
+    rec.width, rec.height = float(sensor.size[0]), float(sensor.size[1])
+
+
+@dataclass(frozen=True)
+class SensorKernel:
+    """One sensor kind's device side (its other facts: ``SensorKindSpec``).
+
+    ``sample(scene, s, params, rng) -> vec2`` draws one sample of the
+    reading; ``analytic(scene, s) -> vec2`` is its closed form, if any;
+    ``upload(rec, sensor)`` fills its fields of the :class:`SensorRec`."""
+
+    kind: SensorKind
+    sample: Any
+    analytic: Any = None
+    upload: Callable | None = None
+
+
+#: sensor kinds read by :func:`estimate_kernel` (probes have their own kernel)
+SENSOR_KERNELS = (
+    SensorKernel(SensorKind.IRRADIANCE, sample_irradiance, analytic=analytic_irradiance),
+    SensorKernel(SensorKind.RADIANCE, sample_radiance, upload=_upload_radiance),
+    SensorKernel(SensorKind.PATCH, sample_patch, analytic=analytic_patch, upload=_upload_patch),
+)
+_SAMPLE = tuple((int(k.kind), k.sample) for k in SENSOR_KERNELS)
+_ANALYTIC = tuple((int(k.kind), k.analytic) for k in SENSOR_KERNELS if k.analytic is not None)
+
+
+@wp.func
+def sample_sensor(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+    """One sample of sensor ``s``'s reading (dispatch over ``SENSOR_KERNELS``)."""
+    for i in range(wp.static(len(_SAMPLE))):
+        if s.kind == wp.static(_SAMPLE[i][0]):
+            return wp.static(_SAMPLE[i][1])(scene, s, params, rng_in)
+    return wp.vec2(0.0, 0.0)
+
+
+@wp.func
+def analytic_sensor(scene: SceneRec, s: SensorRec) -> wp.vec2:
+    """Closed-form reading of sensor ``s`` (dispatch over ``SENSOR_KERNELS``)."""
+    for i in range(wp.static(len(_ANALYTIC))):
+        if s.kind == wp.static(_ANALYTIC[i][0]):
+            return wp.static(_ANALYTIC[i][1])(scene, s)
+    return wp.vec2(0.0, 0.0)
+
+
+def sensor_record(sensor: Sensor) -> SensorRec:
+    """The device record of one sensor: common fields, then its kind's ``upload``."""
+    r = SensorRec()
+    r.kind = int(sensor.kind)
+    r.position = wp.vec3(*map(float, sensor.position))
+    r.normal = wp.vec3(*map(float, sensor.normal))
+    r.one_minus_cos = 0.0
+    r.cull = 1 if sensor.spec.culls_lights else 0
+    for k in SENSOR_KERNELS:
+        if k.kind == sensor.kind and k.upload is not None:
+            k.upload(r, sensor)
+    return r
 
 
 @wp.kernel
@@ -459,7 +746,7 @@ def estimate_kernel(
     s = sensors[sid]
     prm = params
     prm.thread = t
-    prm.mask_row = wp.where(s.kind == RADIANCE, -1, sid)
+    prm.mask_row = wp.where(s.cull != 0, sid, -1)
     for j in range(thread_count[t]):
         v = sample_sensor(scene, s, prm, wp.rand_init(key, first + j))
         if not (wp.isfinite(v[0]) and wp.isfinite(v[1])):
@@ -480,65 +767,6 @@ def estimate_kernel(
 # ---------------------------------------------------------------- analytic
 
 
-@wp.func
-def analytic_light(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3) -> wp.vec2:
-    """Unoccluded irradiance on (p, n) from light ``li`` in closed form (the
-    host has checked that the closed form applies; see plan.analytic_refusal)."""
-    l = scene.lights[li]
-    if l.kind == POINT:
-        return l.emission * point_irradiance(l.position, p, n)
-    if l.kind == SPHERE:
-        d = l.position - p
-        d2 = wp.length_sq(d)
-        if d2 <= l.radius * l.radius:
-            return wp.vec2(0.0, 0.0)
-        return l.emission * cap_irradiance(d / wp.sqrt(d2), l.radius * l.radius / d2, n)
-    if l.kind == RECT or l.kind == DISK:
-        if wp.dot(p - l.position, l.ez) >= 0.0:
-            return wp.vec2(0.0, 0.0)  # behind a one-sided emitter
-        if l.kind == DISK:
-            return l.emission * disk_irradiance(l.position, l.ex, l.ey, l.radius, p, n)
-        hx = 0.5 * l.width * l.ex
-        hy = 0.5 * l.height * l.ey
-        c = l.position
-        return l.emission * polygon_irradiance4(c - hx - hy, c + hx - hy, c + hx + hy, c - hx + hy, 4, p, n)
-    if l.kind == DISTANT:
-        if l.one_minus_cos <= 0.0:
-            return l.emission * wp.max(0.0, wp.dot(l.ez, n))
-        omc = l.one_minus_cos
-        return l.emission * cap_irradiance(l.ez, omc * (2.0 - omc), n)
-    if l.kind == DOME:
-        return l.emission * PI  # the whole upper hemisphere is sky
-    if l.kind == EMISSIVE:
-        total = wp.vec2(0.0, 0.0)
-        for k in range(scene.emit_tris.shape[0]):
-            tri = scene.emit_tris[k]
-            a = tri_vertex(scene, tri, 0)
-            b = tri_vertex(scene, tri, 1)
-            c = tri_vertex(scene, tri, 2)
-            facing = wp.dot(p - a, wp.cross(b - a, c - a))  # > 0: p in front
-            le = tri_emitted(scene, tri, facing)
-            if le[0] > 0.0 or le[1] > 0.0:
-                total += le * polygon_irradiance4(a, b, c, c, 3, p, n)
-        return total
-    return wp.vec2(0.0, 0.0)
-
-
-@wp.func
-def analytic_patch_point(l: LightRec, s: SensorRec) -> wp.vec2:
-    """Mean irradiance on a patch from a point light: I·Ω/A, Ω the patch's solid
-    angle seen from the light, counted when the light is on the side it faces."""
-    if wp.dot(l.position - s.position, s.normal) <= 0.0:
-        return wp.vec2(0.0, 0.0)
-    hx = 0.5 * s.width * s.right
-    hy = 0.5 * s.height * s.up
-    c = s.position - l.position
-    omega = triangle_solid_angle(c - hx - hy, c + hx - hy, c + hx + hy) + triangle_solid_angle(
-        c - hx - hy, c + hx + hy, c - hx + hy
-    )
-    return l.emission * (omega / (s.width * s.height))
-
-
 @wp.kernel
 def analytic_kernel(
     scene: SceneRec,
@@ -549,12 +777,5 @@ def analytic_kernel(
     """Closed-form reading of each listed sensor: irradiance sensors sum every
     light's unoccluded irradiance; patches sum point lights' I·Ω/A."""
     t = wp.tid()
-    sid = sensor_ids[t]
-    s = sensors[sid]
-    v = wp.vec2(0.0, 0.0)
-    for li in range(scene.n_lights):
-        if s.kind == PATCH:
-            v += analytic_patch_point(scene.lights[li], s)
-        else:
-            v += analytic_light(scene, li, s.position, s.normal)
+    v = analytic_sensor(scene, sensors[sensor_ids[t]])
     out_value[t] = wp.vec2d(wp.float64(v[0]), wp.float64(v[1]))

@@ -45,9 +45,15 @@ Harmonics (SH) Tricks", GDC 2008, appendix).
 
 import warp as wp
 
-from .estimators import RADIANCE, SensorRec, TraceParams, sample_radiance, unoccluded
-from .lights import DISTANT, POINT, SceneRec
+from simulator.scene.model import LightKind, SensorKind
+
+from .estimators import SensorRec, TraceParams, sample_radiance, shaping_factor, unoccluded
+from .lights import SceneRec
 from .sampling import sensor_stream_key
+
+_POINT = wp.constant(int(LightKind.POINT))
+_DISTANT = wp.constant(int(LightKind.DISTANT))
+_RADIANCE = wp.constant(int(SensorKind.RADIANCE))
 
 # Forward-only: no gradients are taken, and skipping the adjoint halves compile time.
 wp.set_module_options({"enable_backward": False})
@@ -168,7 +174,7 @@ def delta_incident(scene: SceneRec, li: int, p: wp.vec3) -> wp.vec4:
     in the fourth; use :func:`delta_scale` for the photometric twin. Zero if
     the light is not a delta light or is blocked."""
     l = scene.lights[li]
-    if l.kind == POINT:
+    if l.kind == _POINT:
         d = l.position - p
         dist = wp.length(d)
         if dist <= 0.0:
@@ -176,8 +182,8 @@ def delta_incident(scene: SceneRec, li: int, p: wp.vec3) -> wp.vec4:
         w = d / dist
         if not unoccluded(scene, p, w, dist, -1):
             return wp.vec4(0.0)
-        return wp.vec4(w[0], w[1], w[2], 1.0 / (dist * dist))  # E⊥ = I/d²
-    if l.kind == DISTANT and l.one_minus_cos <= 0.0:
+        return wp.vec4(w[0], w[1], w[2], shaping_factor(l, -w) / (dist * dist))  # E⊥ = I(ω)/d²
+    if l.kind == _DISTANT and l.one_minus_cos <= 0.0:
         if not unoccluded(scene, p, l.ez, 1.0e30, -1):
             return wp.vec4(0.0)
         return wp.vec4(l.ez[0], l.ez[1], l.ez[2], 1.0)  # E⊥ is the emission itself
@@ -254,7 +260,7 @@ def probe_kernel(
     lat_a = probe.lat0 + float(j) * probe.dlat
     key = sensor_stream_key(probe.key, pix)
     s = SensorRec()
-    s.kind = RADIANCE
+    s.kind = _RADIANCE
     s.position = probe.position
     s.one_minus_cos = 0.0
     bad = int(0)

@@ -28,12 +28,10 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from simulator.errors import UserError
-from simulator.scene.model import LightKind, Scene, Sensor, SensorKind
+from simulator.engine.methods import MC_METHODS
+from simulator.scene.model import LightKind, Scene, Sensor, SensorKind, patch_width_axis
 
 __all__ = ["MC_METHODS", "SensorPlan", "Plan", "make_plan", "probe_method", "analytic_refusal", "lights_behind", "format_plan"]
-
-#: methods with a Monte Carlo kernel
-MC_METHODS = ("light", "bsdf", "mis", "path")
 
 #: a light subtending more than this solid angle (sr) from a direct-lit
 #: sensor makes `mis` the plan: its cosine-weighted direction then lands on
@@ -87,6 +85,8 @@ def analytic_refusal(scene: Scene, sensor: Sensor) -> str | None:
     for l in scene.lights:
         if l.kind == LightKind.CYLINDER:
             return f"no closed form for the CylinderLight {l.name}"
+        if l.shaping is not None and (l.kind != LightKind.POINT or sensor.kind == SensorKind.PATCH):
+            return f"no closed form for the shaped light {l.name} (only a point light's E = I(ω)·cosψ/d²)"
         if l.kind == LightKind.DOME and l.texture:
             return f"no closed form for the textured DomeLight {l.name}"
         if l.kind == LightKind.DISK and sensor.kind == SensorKind.IRRADIANCE:
@@ -252,8 +252,7 @@ def _largest_solid_angle(scene: Scene, sensor: Sensor, culled: list[str]) -> flo
 
 
 def _patch_corners(s: Sensor) -> list[np.ndarray]:
-    right = np.cross(s.up, s.normal)
-    right /= np.linalg.norm(right)
+    right = patch_width_axis(s.up, s.normal)
     hx, hy = 0.5 * s.size[0] * right, 0.5 * s.size[1] * s.up
     return [s.position + a * hx + b * hy for a in (-1, 1) for b in (-1, 1)]
 

@@ -63,6 +63,7 @@ __all__ = [
     "polygon_solid_angle",
     "point_flux_through_polygon",
     "dome_irradiance",
+    "lambertian_radiance",
     "furnace_radiance",
     "furnace_irradiance",
     "integrating_sphere_irradiance",
@@ -151,7 +152,7 @@ def point_irradiance(intensity, source, p, n):
 
     References
     ----------
-    .. [1] REFERENCES.md, "Closed-form irradiance on a small receiver".
+    .. [1] docs/REFERENCES.md §Point source.
     """
     to_src = _vec(source, "source") - _vec(p, "p")
     n = _unit(n, "n")
@@ -211,7 +212,7 @@ def sphere_irradiance(radiance, centre, radius, p, n):
     .. [1] Howell, *Catalog of Configuration Factors*, "differential planar
            element to sphere; element tilted, part of the sphere below the
            element's plane" (E = π·L·F).
-    .. [2] REFERENCES.md, "Uniform sphere of radiance L".
+    .. [2] docs/REFERENCES.md §Uniform sphere.
     """
     radius = np.asarray(radius, float)
     if np.any(radius <= 0.0):
@@ -331,7 +332,7 @@ def polygon_irradiance(radiance, vertices, p, n, one_sided_normal=None):
     .. [1] Lambert, *Photometria* (1760); Arvo (SIGGRAPH 1995), eq. for the
            irradiance from a polygonal luminaire.
     .. [2] Sutherland & Hodgman, Comm. ACM 17(1), 1974.
-    .. [3] REFERENCES.md, "Uniform polygon of radiance L".
+    .. [3] docs/REFERENCES.md §Lambert's polygon formula.
     """
     v = _vertices(vertices)
     p = _vec(p, "p")
@@ -437,7 +438,7 @@ def disk_irradiance_on_axis(radiance, R, h, tilt=0.0):
     ----------
     .. [1] Howell, *Catalog of Configuration Factors*, "differential planar
            element to coaxial disk, element tilted".
-    .. [2] REFERENCES.md, "Uniform disk of radiance L".
+    .. [2] docs/REFERENCES.md §Uniform disk.
     """
     R = np.asarray(R, float)
     h = np.asarray(h, float)
@@ -484,7 +485,7 @@ def disk_factor_parallel(R, h, a):
     ----------
     .. [1] Howell, *Catalog of Configuration Factors*, "differential planar
            element to parallel disk, element offset from the axis".
-    .. [2] REFERENCES.md, "Parallel disk".
+    .. [2] docs/REFERENCES.md §Parallel disk.
     """
     R = np.asarray(R, float)
     h = np.asarray(h, float)
@@ -560,7 +561,7 @@ def rect_corner_factor(W, H, S):
     .. [1] Howell, *Catalog of Configuration Factors*, "differential planar
            element to parallel rectangle; normal to the element passes
            through a corner of the rectangle".
-    .. [2] REFERENCES.md, "Rectangle W×H parallel to the receiver".
+    .. [2] docs/REFERENCES.md §Parallel rectangle.
     """
     W = np.asarray(W, float)
     H = np.asarray(H, float)
@@ -611,8 +612,7 @@ def rect_irradiance_parallel(radiance, x0, x1, y0, y1, S):
     ----------
     .. [1] Howell, *Catalog of Configuration Factors* (factor algebra for
            parallel rectangles built from corner cases).
-    .. [2] REFERENCES.md, "Other positions: add and subtract corner
-           rectangles".
+    .. [2] docs/REFERENCES.md §Parallel rectangle.
     """
     x0, x1, y0, y1 = (np.asarray(t, float) for t in (x0, x1, y0, y1))
     if np.any(x1 < x0) or np.any(y1 < y0):
@@ -646,7 +646,7 @@ def rect_solid_angle_centred(a, b, d):
 
     References
     ----------
-    .. [1] REFERENCES.md, "Solid angle of a centred a×b rectangle".
+    .. [1] docs/REFERENCES.md §Solid angle of a rectangle.
     """
     a, b, d = (np.asarray(t, float) for t in (a, b, d))
     if np.any(d <= 0.0):
@@ -734,7 +734,7 @@ def point_flux_through_polygon(intensity, source, vertices):
 
     References
     ----------
-    .. [1] REFERENCES.md, "flux from an isotropic point source through it".
+    .. [1] docs/REFERENCES.md §Solid angle of a rectangle.
     """
     return _out(np.asarray(intensity, float) * polygon_solid_angle(vertices, source))
 
@@ -769,9 +769,40 @@ def dome_irradiance(radiance, tilt):
 
     References
     ----------
-    .. [1] REFERENCES.md, "Uniform environment of radiance L".
+    .. [1] docs/REFERENCES.md §Uniform environment.
     """
     return _out(np.asarray(radiance, float) * np.pi * 0.5 * (1.0 + np.cos(np.asarray(tilt, float))))
+
+
+def lambertian_radiance(albedo, irradiance):
+    """Radiance leaving an ideal diffuse (Lambertian) surface lit by an irradiance.
+
+    Parameters
+    ----------
+    albedo : float or array_like
+        Diffuse reflectance ρ, in [0, 1] (1: a white surface that absorbs nothing).
+    irradiance : float or array_like
+        Irradiance E on the surface, W/m² (or lx).
+
+    Returns
+    -------
+    L : ndarray or float
+        Reflected radiance, the same in every direction: ρ·E/π, W m⁻² sr⁻¹ (or cd/m²).
+
+    Notes
+    -----
+    A Lambertian BRDF is the constant f = ρ/π (its cosine-weighted integral
+    over the hemisphere is ρ), so L_o = ∫ f L_i cos θ dω = (ρ/π)·E.
+
+    References
+    ----------
+    .. [1] M. Pharr, W. Jakob, G. Humphreys, "Physically Based Rendering",
+       4th ed. (2023), §9.2 "Diffuse Reflection".
+    """
+    albedo = np.asarray(albedo, float)
+    if np.any(albedo < 0.0) or np.any(albedo > 1.0):
+        raise ValueError("albedo must be in [0, 1]")
+    return _out(albedo * np.asarray(irradiance, float) / np.pi)
 
 
 def _check_albedo(albedo):
@@ -805,7 +836,7 @@ def furnace_radiance(emitted_radiance, albedo):
 
     References
     ----------
-    .. [1] REFERENCES.md, "Furnace".
+    .. [1] docs/REFERENCES.md §Furnace.
     """
     return _out(np.asarray(emitted_radiance, float) / (1.0 - _check_albedo(albedo)))
 
@@ -832,7 +863,7 @@ def furnace_irradiance(emitted_radiance, albedo):
 
     References
     ----------
-    .. [1] REFERENCES.md, "Furnace".
+    .. [1] docs/REFERENCES.md §Furnace.
     """
     return _out(np.pi * furnace_radiance(emitted_radiance, albedo))
 
@@ -869,7 +900,7 @@ def integrating_sphere_irradiance(flux, R, albedo):
 
     References
     ----------
-    .. [1] REFERENCES.md, "Ideal integrating sphere".
+    .. [1] docs/REFERENCES.md §Integrating sphere.
     """
     flux, area, rho = _sphere_args(flux, R, albedo)
     return _out(flux / (area * (1.0 - rho)))
@@ -903,7 +934,7 @@ def integrating_sphere_first_bounce(flux, R, albedo):
 
     References
     ----------
-    .. [1] REFERENCES.md, "Ideal integrating sphere".
+    .. [1] docs/REFERENCES.md §Integrating sphere.
     """
     flux, area, rho = _sphere_args(flux, R, albedo)
     return _out(rho * flux / area)
@@ -934,7 +965,7 @@ def integrating_sphere_reflected(flux, R, albedo):
 
     References
     ----------
-    .. [1] REFERENCES.md, "Ideal integrating sphere".
+    .. [1] docs/REFERENCES.md §Integrating sphere.
     """
     flux, area, rho = _sphere_args(flux, R, albedo)
     return _out(flux / area * rho / (1.0 - rho))
@@ -1016,7 +1047,7 @@ def cie171_point_source_grid() -> CIE171PointSourceGrid:
     References
     ----------
     .. [1] CIE 171:2006, section 5.2.
-    .. [2] REFERENCES.md, "CIE 171:2006 test cases".
+    .. [2] docs/REFERENCES.md §CIE 171:2006 case 5.2.
     """
     names = tuple(_CIE171_5_2_OFFSETS_M)
     offsets = np.array([_CIE171_5_2_OFFSETS_M[k] for k in names], float)
@@ -1076,6 +1107,7 @@ def cie171_indirect_illuminance(flux_lm, reflectance, total_area):
     References
     ----------
     .. [1] CIE 171:2006, section 5.8 (table in :data:`CIE171_5_8_TABLE_LX`).
+    .. [2] docs/REFERENCES.md §CIE 171:2006 case 5.8.
     """
     flux = np.asarray(flux_lm, float)
     rho = _check_albedo(reflectance)
@@ -1115,6 +1147,7 @@ def cie_overcast_luminance(zenith_luminance, theta):
     P. Moon, D. E. Spencer, "Illumination from a non-uniform sky",
     Illuminating Engineering 37, 707–726, 1942; CIE S 011/E:2003, *Spatial
     distribution of daylight — CIE standard general sky* (type 16).
+    docs/REFERENCES.md §CIE standard overcast sky.
     """
     return zenith_luminance * (1.0 + 2.0 * np.cos(theta)) / 3.0
 
@@ -1144,6 +1177,7 @@ def cie_overcast_row_means(zenith_luminance, n_rows):
     P. Moon, D. E. Spencer, "Illumination from a non-uniform sky",
     Illuminating Engineering 37, 707–726, 1942; CIE S 011/E:2003, *Spatial
     distribution of daylight — CIE standard general sky* (type 16).
+    docs/REFERENCES.md §CIE standard overcast sky.
     """
     t = np.linspace(0.0, np.pi, n_rows + 1)
     t0, t1 = t[:-1], t[1:]
@@ -1177,6 +1211,7 @@ def cie_overcast_illuminance(zenith_luminance, vertical=False):
     P. Moon, D. E. Spencer, "Illumination from a non-uniform sky",
     Illuminating Engineering 37, 707–726, 1942; CIE S 011/E:2003, *Spatial
     distribution of daylight — CIE standard general sky* (type 16).
+    docs/REFERENCES.md §CIE standard overcast sky.
     """
     if vertical:
         return zenith_luminance * (np.pi / 6.0 + 4.0 / 9.0)

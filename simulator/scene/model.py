@@ -16,14 +16,23 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from enum import IntEnum
+from typing import NamedTuple
 
 import numpy as np
 
-__all__ = ["LightKind", "Light", "Geometry", "SensorKind", "SENSOR_KINDS", "DEFAULT_PROBE_RESOLUTION", "Sensor", "Scene"]
+__all__ = [
+    "LightKind", "Light", "LightShaping", "Geometry", "SensorKind", "ColumnGroup", "SensorKindSpec", "SENSOR_SPECS", "SENSOR_KINDS",
+    "DEFAULT_PROBE_RESOLUTION", "MAX_PROBE_PIXELS", "patch_width_axis", "Sensor", "Scene",
+]  # fmt: skip
 
 
 class LightKind(IntEnum):
-    """Light types; the integer is what the Warp kernels switch on."""
+    """Light types; the integer is what the Warp kernels switch on.
+
+    Each kind's device code (sampler and pdf, hits, closed form, upload)
+    lives in one file of :mod:`simulator.kernels.lights`, which generates the
+    kernels' dispatch from these members.
+    """
 
     POINT = 0  #: delta source; emission = intensity (W/sr, cd)
     SPHERE = 1  #: radius > 0; emission = radiance (W m^-2 sr^-1, cd/m^2), outward
@@ -32,6 +41,7 @@ class LightKind(IntEnum):
     DISTANT = 4  #: half-angle > 0: emission = radiance; half-angle 0 (delta): normal irradiance (W/m^2, lx)
     DOME = 5  #: environment; emission = radiance (× texture_map[texel] when textured)
     CYLINDER = 6  #: radius, length along local X; emission = radiance, outward from the side
+    EMISSIVE = 7  #: emissive geometry: one engine-made record for all emitting triangles (no UsdLux light)
 
 
 #: kinds that are delta distributions: no direction sample can hit them.
@@ -83,6 +93,8 @@ class Light:
     #: at the pole ``frame[:, 1]`` (the convention of :mod:`simulator.io.latlong`);
     #: radiance along a direction = ``emission × texture_map[texel]``. None if untextured.
     texture_map: np.ndarray | None = None
+    #: UsdLuxShapingAPI of a point, sphere, disk or rect light (None: unshaped)
+    shaping: "LightShaping | None" = None
 
     @property
     def is_delta(self) -> bool:
@@ -90,6 +102,70 @@ class Light:
         return self.kind == LightKind.POINT or (
             self.kind == LightKind.DISTANT and self.half_angle == 0.0
         )
+
+
+@dataclass
+class LightShaping:
+    """How a light's emission varies with the emission direction ω (UsdLux
+    ShapingAPI; OpenUSD user guide, "ShapingAPI"): the radiance (or a point
+    light's intensity) toward ω is ``emission × factor(ω)``.
+
+    With θ the angle between ω and the light's −Z axis, and (θ, φ) the IES
+    angles in the light's frame (θ from −Z, φ from +X toward +Y):
+
+        factor = cone(θ) · focus(θ) · ies_scale · I_file(θ, φ)
+
+    - cone: 0 for θ > ``cone_angle_rad``; with softness s (clamped to
+      [0, 1]), 1 − smoothstep(θ_c·(1 − s), θ_c, θ), so 1 inside θ_c(1 − s)
+      and the whole cone at s = 0;
+    - focus: tint + (1 − tint)·|cos θ|^focus (focus ≤ 0: 1), tint the grey of
+      ``shaping:focusTint``; θ is taken from the light's axis for every kind
+      (UsdLux measures it from the emitting surface's normal, the same for
+      rect and disk lights but not for a SphereLight of finite radius);
+    - IES: ``ies_scale × I_file`` (omitted without a file): relative mode
+      ``1 / max I_file`` (the authored intensity is the peak), with
+      ``shaping:ies:normalize`` ``4π / Φ_file`` (the profile's mean over the
+      sphere is 1, which keeps a point light's total flux; an area light's
+      cosθ weighting makes that approximate); absolute mode (``probesim:ies:absolute``,
+      point lights only) makes the light emit the file's candelas × the
+      light loss factor, ignoring its intensity (emission is set to 1 cd).
+
+    Attributes
+    ----------
+    cone_angle_rad : float
+    cone_softness : float
+    focus : float
+    focus_tint : float
+    ies : GoniometricDistribution or None
+    ies_scale : float
+        Multiplier of I_file (cd⁻¹, or dimensionless × cd⁻¹·cd in absolute mode).
+    absolute : bool
+    light_loss_factor : float
+    """
+
+    cone_angle_rad: float = float(np.pi / 2)
+    cone_softness: float = 0.0
+    focus: float = 0.0
+    focus_tint: float = 0.0
+    ies: object | None = None
+    ies_scale: float = 0.0
+    absolute: bool = False
+    light_loss_factor: float = 1.0
+
+    def factor(self, theta_rad, phi_rad) -> np.ndarray:
+        """The factor toward emission directions at (θ, φ), radians (numpy twin of the kernel's)."""
+        th = np.asarray(theta_rad, float)
+        f = np.where(th > self.cone_angle_rad, 0.0, 1.0)
+        s = min(max(self.cone_softness, 0.0), 1.0)
+        if s > 0:
+            a = self.cone_angle_rad * (1 - s)
+            t = np.clip((th - a) / (self.cone_angle_rad - a), 0.0, 1.0)
+            f = f * (1 - t * t * (3 - 2 * t))
+        if self.focus > 0:
+            f = f * (self.focus_tint + (1 - self.focus_tint) * np.abs(np.cos(th)) ** self.focus)
+        if self.ies is not None:
+            f = f * self.ies_scale * self.ies.candela_at(np.degrees(th), np.degrees(phi_rad))
+        return f
 
 
 @dataclass
@@ -137,16 +213,93 @@ class SensorKind(IntEnum):
     PROBE = 3  #: full-sphere light probe
 
 
-#: sensor kind names, as configs and ``probesim:sensor:kind`` spell them
-SENSOR_KINDS = {
-    "irradiance": SensorKind.IRRADIANCE,
-    "radiance": SensorKind.RADIANCE,
-    "patch": SensorKind.PATCH,
-    "probe": SensorKind.PROBE,
-}
-
 #: lat-long map size ``(width, height)`` of a probe that does not say
 DEFAULT_PROBE_RESOLUTION = (64, 32)
+#: most pixels in a probe map (1024 × 512): each pixel keeps float64 running
+#: sums of 22 integrands in 2 channels (about 700 B)
+MAX_PROBE_PIXELS = 1 << 19
+
+
+
+class ColumnGroup(NamedTuple):
+    """Four CSV columns of one quantity: value and standard error,
+    radiometric then photometric (for a probe's mean direction: x, y, z and
+    the angular standard error). ``factor`` on the sensor's mean reading:
+    ``"1"``, or ``"area"`` (× the patch area); units for summaries."""
+
+    columns: tuple[str, str, str, str]
+    factor: str = "1"
+    unit: str = ""
+    photometric_unit: str = ""
+
+
+_IRRADIANCE = ColumnGroup(("irradiance_W_m2", "irradiance_stderr_W_m2", "illuminance_lx", "illuminance_stderr_lx"), "1", "W/m²", "lx")
+_RADIANCE = ColumnGroup(("radiance_W_m2_sr", "radiance_stderr_W_m2_sr", "luminance_cd_m2", "luminance_stderr_cd_m2"), "1", "W/m²/sr", "cd/m²")
+_FLUX = ColumnGroup(("flux_W", "flux_stderr_W", "luminous_flux_lm", "luminous_flux_stderr_lm"), "area", "W", "lm")
+_SCALAR = ColumnGroup(
+    ("scalar_irradiance_W_m2", "scalar_irradiance_stderr_W_m2", "scalar_illuminance_lx", "scalar_illuminance_stderr_lx"), "1", "W/m²", "lx"
+)
+_DIRECTION = ColumnGroup(("mean_direction_x", "mean_direction_y", "mean_direction_z", "mean_direction_stderr_deg"))
+
+
+@dataclass(frozen=True)
+class SensorKindSpec:
+    """Everything outside the kernels that one sensor kind declares.
+
+    Attributes
+    ----------
+    kind : SensorKind
+    name : str
+        How configs and ``probesim:sensor:kind`` spell it.
+    attributes : tuple of str
+        :class:`Sensor` fields the kind reads beyond ``position`` and
+        ``normal`` (``up``, ``size``, ``half_angle``, ``resolution``).
+    reader : str
+        ``"estimate"``: read by :meth:`simulator.engine.driver.Engine.run`
+        through the estimator kernel (its per-sample entry is registered in
+        :mod:`simulator.kernels.estimators`); ``"probe"``: by
+        :meth:`~simulator.engine.driver.Engine.run_probes`.
+    columns : tuple of ColumnGroup
+        CSV value columns it fills. A probe's are filled from its sphere
+        integrals (``simulator.io.results.probe_readings``).
+    headline : int
+        The group a one-line summary shows.
+    culls_lights : bool
+        Its first path vertex is the sensor itself, so lights the plan
+        proved wholly behind it may be skipped there.
+    directed : bool
+        Its ``normal`` is a direction the CSV reports (``dx, dy, dz``).
+    """
+
+    kind: SensorKind
+    name: str
+    attributes: tuple[str, ...]
+    reader: str
+    columns: tuple[ColumnGroup, ...]
+    culls_lights: bool
+    headline: int = 0
+    directed: bool = True
+
+
+#: every sensor kind, in ``SensorKind`` order
+SENSOR_SPECS = (
+    SensorKindSpec(SensorKind.IRRADIANCE, "irradiance", (), "estimate", (_IRRADIANCE,), culls_lights=True),
+    SensorKindSpec(SensorKind.RADIANCE, "radiance", ("half_angle",), "estimate", (_RADIANCE,), culls_lights=False),
+    SensorKindSpec(SensorKind.PATCH, "patch", ("up", "size"), "estimate", (_IRRADIANCE, _FLUX), culls_lights=True, headline=1),
+    SensorKindSpec(SensorKind.PROBE, "probe", ("resolution",), "probe", (_SCALAR, _DIRECTION), culls_lights=False, directed=False),
+)  # fmt: skip
+assert [int(s.kind) for s in SENSOR_SPECS] == list(range(len(SensorKind)))
+
+#: sensor kind names, as configs and ``probesim:sensor:kind`` spell them
+SENSOR_KINDS = {s.name: s.kind for s in SENSOR_SPECS}
+
+
+def patch_width_axis(up: np.ndarray, normal: np.ndarray) -> np.ndarray:
+    """A patch's unit width axis, ``normalize(cross(up, normal))``: with
+    ``up`` the height axis, (width, up, normal) is right-handed."""
+    right = np.cross(up, normal)
+    right /= np.linalg.norm(right)
+    return right
 
 
 @dataclass
@@ -186,6 +339,11 @@ class Sensor:
     resolution: tuple[int, int] = (0, 0)
     grid: str | None = None
     source: str = ""
+
+    @property
+    def spec(self) -> SensorKindSpec:
+        """The declaration of this sensor's kind."""
+        return SENSOR_SPECS[self.kind]
 
 
 @dataclass

@@ -6,38 +6,63 @@ stage into numpy arrays and small records in the *probesim world frame*
 
 One job per module: :mod:`.stage` opens the stage, applies variants, sets
 the world frame and walks the prims; :mod:`.geometry` (with the pure-numpy
-:mod:`.tessellation`) turns gprims into triangles; :mod:`.materials` reads
-surfaces; :mod:`.lights` reads UsdLux and geometry lights; :mod:`.sensors`
-reads stage-authored sensors. :mod:`.context` holds what they share and
-:mod:`.transforms` the world transforms.
+:mod:`.tessellation`) turns gprims into triangles; :mod:`.instancers` places
+PointInstancer prototypes; :mod:`.materials` reads surfaces and
+:mod:`.textures` the textures they use; :mod:`.lights` reads UsdLux and
+geometry lights; :mod:`.sensors` reads stage-authored sensors.
+:mod:`.context` holds what they share and :mod:`.transforms` the world
+transforms.
 
 What is read
 ------------
 Geometry
-    ``UsdGeom.Mesh`` (any polygon counts), ``UsdGeom.Cube`` and
-    ``UsdGeom.Sphere``, merged into one triangle soup. Faces are wound so that
-    ``cross(p1 - p0, p2 - p0)`` is the front face in world space: a
-    ``leftHanded`` prim is re-wound, and so is a prim whose world transform
-    has a negative determinant (a mirror swaps handedness); both together
-    cancel. Other gprims (Cylinder, Cone, Capsule, Plane, curves, points,
-    volumes) are skipped with a warning.
+    ``UsdGeom.Mesh`` (any polygon counts), ``Cube``, ``Sphere``, ``Capsule``
+    (and ``Capsule_1`` with equal radii), ``Cone``, ``Cylinder`` (and the
+    ``Cylinder_1`` frustum) with their ``axis``, and ``Plane`` (``width``,
+    ``length``, ``axis``; double-sided by its fallback), merged into one
+    triangle soup. Faces are wound so that ``cross(p1 - p0, p2 - p0)`` is the
+    front face in world space: a ``leftHanded`` prim is re-wound, and so is a
+    prim whose world transform has a negative determinant (a mirror swaps
+    handedness); both together cancel. Other gprims (curves, points, NURBS,
+    volumes) are not read: one summary warning counts them by type.
     A Sphere becomes a UV sphere of :data:`SPHERE_SEGMENTS` (longitude
     segments, latitude rings), vertices on the surface, so its facets lie
     inside it by up to about r·((pi/n_lon)^2 + (pi/(2 n_lat))^2)/2: 0.24% of
     r at 64 x 32. Where that matters (an integrating sphere) author
     ``int2 probesim:tessellation = (512, 256)`` on the prim: 261,120
-    triangles, within 3.8e-5·r of the sphere.
+    triangles, within 3.8e-5·r of the sphere. Cylinders and cones use the
+    first number (segments around), capsules both; their inscribed polygons
+    have up to 2 (2 pi/n)^2/6 less area and volume (0.32% at n = 64).
+    A Mesh with an authored ``subdivisionScheme`` other than ``none`` is
+    read as its control cage (one summary warning), as Hydra draws it at
+    refinement level 0; ``holeIndices`` are counted as ignored.
+Instancing
+    Scene-graph instances (``instanceable = true``) are read through their
+    instance proxies. A ``PointInstancer`` draws its prototypes where its
+    instances stand (positions, orientations, scales, the prototype's own
+    transform, the instancer's transform; ``invisibleIds`` and inactive ids
+    left out; nested instancers too), never in the prototypes' own place:
+    see :mod:`.instancers`.
 Materials
     The bound material's ``UsdPreviewSurface``: ``diffuseColor`` is the
     Lambertian albedo, ``emissiveColor`` the front-face emitted radiance in
     the stage's light units, ``opacity`` 0 removes the prim (it blocks
-    nothing). Inputs are followed through connections to authored constant
-    values (e.g. a Material interface input); anything else (a texture)
-    falls back to the UsdPreviewSurface default with a warning. With no bound
-    material, ``primvars:displayColor`` is the albedo if authored, else
-    UsdPreviewSurface's default 0.18. Colours become their luminance-weighted
-    grey (BT.709 Y), with one warning naming the prims whose colour was not
-    grey.
+    nothing). The binding is resolved for the ``full`` purpose (a final
+    render), falling back to the all-purpose one, collection bindings
+    included; ``GeomSubset`` s of the ``materialBind`` family give their faces
+    their own material. Inputs are followed through connections to authored
+    constant values (e.g. a Material interface input); an input connected to
+    a ``UsdUVTexture`` reads the texture's mean (sRGB-decoded for 8-bit
+    textures, then ``scale`` and ``bias``; one summary warning), anything else
+    falls back to the UsdPreviewSurface default and is counted as ignored.
+    With no bound material, ``primvars:displayColor`` is the albedo if
+    authored, else UsdPreviewSurface's default 0.18. Colours become their
+    luminance-weighted grey (BT.709 Y), with one warning naming the prims
+    whose colour was not grey. An albedo must lie in [0, 1]; exactly 1 is
+    accepted with a warning (paths end there only by escaping the scene, so
+    a closed albedo-1 enclosure has no finite reading). Inputs probesim does
+    not model (``roughness``, ``metallic``, ``specularColor``, ...), when
+    authored away from their fallback, are counted in the summary warning.
 Lights
     UsdLux Sphere, Rect, Disk, Distant, Dome (and DomeLight_1) and Cylinder
     lights, resolved to world size and emission as described in
@@ -48,12 +73,15 @@ Lights
     ``frame[:, 1]``, (lat 0, lon 0) along ``frame[:, 2]``, (lat 0, lon pi/2)
     along ``frame[:, 0]`` (UsdLux DomeLight: the prim's own frame;
     DomeLight_1 with a Z ``poleAxis``: the prim frame turned +90 deg about X).
-    A dome's ``texture:file`` must be a lat-long OpenEXR image
-    (``texture:format`` ``latlong``, or ``automatic`` for a ``.exr`` file);
-    it is read into ``Light.texture_map`` as luminance grey (BT.709 Y) and
-    scales the dome's emission texel by texel (see :mod:`simulator.io.latlong`
-    for the pixel <-> direction map). Portal and plugin lights are ignored
-    with a warning.
+    A dome's ``texture:file`` is a lat-long image (``texture:format``
+    ``latlong`` or ``automatic``): OpenEXR or Radiance ``.hdr`` (linear), or
+    an 8/16-bit PNG, JPEG, ... read as sRGB relative radiance, linearised,
+    with a warning that it clips bright sources. It is read into
+    ``Light.texture_map`` as luminance grey (BT.709 Y) and scales the dome's
+    emission texel by texel (see :mod:`simulator.io.latlong` for the pixel
+    <-> direction map). Portal and plugin lights are not read (counted in
+    the summary warning). A stage with no light at all (no UsdLux light, no
+    emitting triangle) is refused: every reading would be zero.
 Geometry lights
     A Mesh, Cube or Sphere with ``MeshLightAPI`` (or ``LightAPI`` applied
     directly) is geometry that emits: it blocks light like any surface and
@@ -83,9 +111,20 @@ rendered things, so visibility and purpose do not hide them (deactivate a
 sensor prim to drop it). Time-varying attributes are read at
 ``Usd.TimeCode.EarliestTime()`` (the first time sample, or the default value).
 
+Summary warnings
+----------------
+What is not read comes back as one line per kind, with counts, not one
+line per prim: ``stage.usda: not read: 3 BasisCurves, 12 Points; ignored:
+5 x inputs:roughness``; likewise the texture means, albedo-1 surfaces,
+subdivision cages and colours reduced to grey. Attributes that change
+nothing in a Lambertian reading (``doc``, ``kind``, extents, normals,
+``primvars:st``, inputs at their fallback) are not named.
+
 World frame
 -----------
-Stage coordinates are scaled by ``UsdGeom.GetStageMetersPerUnit``. A Y-up
+Stage coordinates are scaled by ``UsdGeom.GetStageMetersPerUnit``; a stage
+that does not author ``metersPerUnit`` is read in centimetres (UsdGeom's
+fallback, 0.01) with a warning. A Y-up
 stage is rotated +90 degrees about X, ``(x, y, z)_Yup -> (x, -z, y)_Zup``, so
 stage "up" becomes world +Z. Positions, directions, frames and lengths all go
 through the same map ``p_world = s * R_up @ (A_stage @ p + t_stage)``.
@@ -132,14 +171,17 @@ import os
 
 from pxr import Usd, UsdGeom, UsdLux
 
-from simulator.scene.model import Geometry, Light, Scene, Sensor
+from simulator.errors import UserError
+from simulator.scene.model import Geometry, Light, LightKind, Scene, Sensor
 from simulator.scene.usd.context import _Context
 
 # The public constants live with the code that uses them and are re-exported
 # here; so are TESSELLATION_ATTR, MAX_SPHERE_FACES and DOME_TEXTURE_FORMATS.
 from simulator.scene.usd.geometry import MAX_SPHERE_FACES, SPHERE_SEGMENTS, TESSELLATION_ATTR  # noqa: F401
 from simulator.scene.usd.geometry import _GeometryBuilder, _read_gprim
-from simulator.scene.usd.lights import DOME_TEXTURE_FORMATS, _read_light  # noqa: F401
+from simulator.scene.usd.enclosures import sealed_light
+from simulator.scene.usd.instancers import _read_instancer
+from simulator.scene.usd.lights import DOME_TEXTURE_FORMATS, _is_supported_light, _read_light, _require_light  # noqa: F401
 from simulator.scene.usd.materials import DEFAULT_ALBEDO, _finish_warnings
 from simulator.scene.usd.sensors import DEFAULT_PROBE_RESOLUTION, SENSOR_ATTR_PREFIX, SENSOR_KINDS, _is_sensor, _read_sensor
 from simulator.scene.usd.stage import (
@@ -150,6 +192,7 @@ from simulator.scene.usd.stage import (
     _reading_context,
     _select_variants,
     _traverse,
+    _warn_unauthored_units,
     _world_frame,
 )
 
@@ -176,6 +219,7 @@ def load_stage(
     light_units: str = "photometric",
     radiometric_spectrum: str | float = "E",
     variants: dict[str, str] | None = None,
+    require_light: bool = False,
 ) -> Scene:
     """Read a USD stage into a :class:`Scene` in world metres, Z up.
 
@@ -197,6 +241,11 @@ def load_stage(
         Variant selections, variant-set name to variant name (a config's
         ``variants`` table), applied before anything is read; see
         :func:`_select_variants`.
+    require_light : bool
+        Refuse a stage with nothing that emits (no UsdLux light, no emitting
+        geometry): every reading would be zero. A run asks for this
+        (:func:`simulator.pipeline.load_scene`); ``False`` (the default)
+        reads geometry alone, for tools that only look at the surfaces.
 
     Returns
     -------
@@ -209,8 +258,8 @@ def load_stage(
     UserError
         The file is missing or not a USD stage, or the stage has a value
         probesim cannot honour (negative intensity or size, albedo outside
-        [0, 1), NaN/Inf transform, unknown sensor kind, ...). The message
-        names the file and the prim.
+        [0, 1], NaN/Inf transform, unknown sensor kind, ...), or it has no
+        light (with ``require_light``). The message names the file and the prim.
 
     Notes
     -----
@@ -252,7 +301,11 @@ def load_stage(
     mpu, up_axis = _world_frame(stage, path)
     ctx = _reading_context(path, mpu, up_axis, light_units, radiometric_spectrum)
     _collect_composition_errors(stage, ctx)
+    _warn_unauthored_units(stage, ctx)
     geometry, lights, sensors = _read_prims(ctx, stage)
+    if require_light:
+        _require_light(ctx, lights, geometry)
+    _refuse_sealed_light(ctx, geometry, lights)
     _finish_warnings(ctx)
     return Scene(
         geometry=geometry,
@@ -265,19 +318,47 @@ def load_stage(
     )
 
 
+def _refuse_sealed_light(ctx: _Context, geometry: Geometry, lights: list[Light]) -> None:
+    """Refuse light sealed in a closed albedo-1 surface: nothing absorbs it, every reading there diverges.
+
+    See :mod:`.enclosures`. Lights at infinity (distant, dome) are outside everything.
+    """
+    if not ctx.white:
+        return
+    placed = [(l.name, l.position) for l in lights if l.kind not in (LightKind.DISTANT, LightKind.DOME)]
+    found = sealed_light(geometry.points, geometry.triangles, geometry.albedo, geometry.emission, placed)
+    if found is not None:
+        name, tri = found
+        wall = geometry.prim_names[geometry.prim[tri]]
+        raise UserError(f"{ctx.path}: {name} is sealed inside a closed surface of albedo 1 ({wall}): nothing "
+                        "absorbs its light, so the readings diverge (a trace would stop only at max_depth or "
+                        "65536 bounces); make the albedo less than 1 or open the enclosure")
+
+
 def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light], list[Sensor]]:
-    """Walk every active prim, instance proxies included, and sort it into geometry, lights, sensors."""
+    """Walk every active prim, instance proxies included, and sort it into geometry, lights, sensors.
+
+    A PointInstancer's subtree is not walked: its prototypes are drawn where
+    its instances stand (:mod:`.instancers`), not in their own place.
+    """
     geo = _GeometryBuilder()
     lights: list[Light] = []
     sensors: list[Sensor] = []
-    for prim in _traverse(stage):
+    walk = _traverse(stage)
+    for prim in walk:
         if _is_sensor(prim):
             sensors.append(_read_sensor(ctx, prim))  # sensors ignore visibility and purpose
         if not _is_rendered(ctx, prim):
             continue
-        if prim.IsA(UsdGeom.Gprim):
+        if prim.IsA(UsdGeom.PointInstancer):
+            walk.PruneChildren()
+            _read_instancer(ctx, prim, geo)
+        elif prim.IsA(UsdGeom.Gprim):
             _read_gprim(ctx, prim, geo)  # MeshLightAPI prims too: geometry that emits
         elif prim.HasAPI(UsdLux.LightAPI):
+            if not _is_supported_light(prim):
+                ctx.not_read[prim.GetTypeName() or "untyped light"] += 1
+                continue
             light = _read_light(ctx, prim)
             if light is not None:
                 lights.append(light)

@@ -7,6 +7,7 @@ stage -> world map, the light units and the warnings gathered so far;
 
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -32,6 +33,17 @@ class _Context:
     warnings: list[str] = field(default_factory=list)
     coloured: dict[str, None] = field(default_factory=dict)  # ordered set of prim paths
     materials: dict[str, dict] = field(default_factory=dict)  # material path -> raw inputs
+    #: prims not read, by type name ("3 BasisCurves"): one summary warning at the end
+    not_read: Counter = field(default_factory=Counter)
+    #: attributes that would change the reading but are ignored, by name ("5 x inputs:roughness")
+    ignored: Counter = field(default_factory=Counter)
+    #: textured inputs read as their texture's mean, by input name; texture files read
+    textured: Counter = field(default_factory=Counter)
+    textures: dict[str, object] = field(default_factory=dict)  # resolved texture path -> mean RGB or None
+    #: prims with albedo exactly 1 (ordered set of paths)
+    white: dict[str, None] = field(default_factory=dict)
+    #: meshes with an authored subdivisionScheme other than none, read as their cage
+    subdivided: Counter = field(default_factory=Counter)
 
     def warn(self, message: str) -> None:
         if message not in self.warnings:

@@ -1,4 +1,4 @@
-"""Geometry: Mesh, Cube and Sphere gprims as one world-space triangle soup.
+"""Geometry: Mesh and the implicit gprims as one world-space triangle soup.
 
 Each supported gprim is validated, tessellated (:mod:`.tessellation`),
 wound so that ``cross(p1 - p0, p2 - p0)`` is its front face in world space
@@ -10,15 +10,25 @@ added to a :class:`_GeometryBuilder`, which concatenates everything once.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
-from pxr import Usd, UsdGeom
+from pxr import Usd, UsdGeom, UsdShade, UsdSkel
 
 from simulator.scene.model import Geometry
 from simulator.scene.usd.context import _Context, _get
 from simulator.scene.usd.lights import _geometry_light_emission, _geometry_light_surface, _is_geometry_light
 from simulator.scene.usd.materials import _surface
-from simulator.scene.usd.tessellation import _cube_polygons, _drop_zero_area, _sphere_polygons, _triangulate
+from simulator.scene.usd.tessellation import (
+    _capsule_polygons,
+    _cone_polygons,
+    _cube_polygons,
+    _cylinder_polygons,
+    _nonzero_area,
+    _plane_polygons,
+    _sphere_polygons,
+    _triangulate_faces,
+)
 from simulator.scene.usd.transforms import _world_affine
 
 #: UsdGeom.Sphere tessellation: (longitude segments, latitude rings)
@@ -42,8 +52,9 @@ class _GeometryBuilder:
         self._names: list[str] = []
         self._n_points = 0
 
-    def add(self, name: str, points: np.ndarray, tris: np.ndarray, albedo: float,
-            emission: tuple[float, float], two_sided: bool) -> None:
+    def add(self, name: str, points: np.ndarray, tris: np.ndarray, albedo,
+            emission, two_sided: bool) -> None:
+        """Add one prim's world triangles; ``albedo`` (T,) or scalar, ``emission`` (T, 2) or (2,)."""
         t = len(tris)
         if t == 0:
             return
@@ -52,8 +63,8 @@ class _GeometryBuilder:
         self._points.append(points)
         self._tris.append(tris.astype(np.int64) + self._n_points)
         self._n_points += len(points)
-        self._albedo.append(np.full(t, albedo))
-        self._emission.append(np.tile(np.asarray(emission, float), (t, 1)))
+        self._albedo.append(np.broadcast_to(np.asarray(albedo, float), (t,)))
+        self._emission.append(np.broadcast_to(np.asarray(emission, float), (t, 2)))
         self._two_sided.append(np.full(t, bool(two_sided)))
         self._prim.append(np.full(t, index, np.int32))
 
@@ -71,35 +82,139 @@ class _GeometryBuilder:
         )
 
 
+@dataclass
+class _Part:
+    """One gprim tessellated in its own frame, with the surface of every triangle.
+
+    ``points`` (P, 3) and ``tris`` (T, 3) are local (stage units, the prim's
+    own frame); ``tris`` already carries the ``leftHanded`` re-winding.
+    ``albedo`` (T,) and ``emission`` (T, 2) are per triangle (GeomSubsets
+    may bind different materials to different faces).
+    """
+
+    name: str
+    points: np.ndarray
+    tris: np.ndarray
+    albedo: np.ndarray
+    emission: np.ndarray
+    two_sided: bool
+    is_light: bool
+
+
 def _read_gprim(ctx: _Context, prim: Usd.Prim, geo: _GeometryBuilder) -> None:
-    """Tessellate one gprim, resolve its material, and add it to the soup."""
-    local = _gprim_polygons(ctx, prim)
-    if local is None:
-        return
-    points, counts, indices = local
-    is_light = _is_geometry_light(ctx, prim)
-    surface = _geometry_light_surface(ctx, prim) if is_light else _surface(ctx, prim)
-    if surface is None:  # opacity 0: it lets light through
+    """Tessellate one gprim, resolve its material, and add it to the soup at its place in the world."""
+    part = _gprim_part(ctx, prim)
+    if part is None:
         return
     a, t = _world_affine(ctx, prim)
-    tris, fanned = _triangulate(points, counts, indices)
+    _add_placed(ctx, prim, part, a[None], t[None], geo, part.name)
+
+
+def _gprim_part(ctx: _Context, prim: Usd.Prim) -> _Part | None:
+    """A gprim as a :class:`_Part` in its local frame, None when it adds nothing (unsupported, empty, opacity 0)."""
+    local = _gprim_polygons(ctx, prim)
+    if local is None:
+        return None
+    points, counts, indices = local
+    is_light = _is_geometry_light(ctx, prim)
+    n_faces = len(counts)
+    if is_light:
+        surface = _geometry_light_surface(ctx, prim)
+        faces = (np.full(n_faces, surface[0]), np.zeros((n_faces, 2)), np.ones(n_faces, bool))
+    else:
+        faces = _face_surfaces(ctx, prim, n_faces)
+    if faces is None:  # opacity 0 everywhere: it lets light through
+        return None
+    albedo, emission, keep = faces
+    tris, fanned, face_of = _triangulate_faces(points, counts, indices)
     if fanned:
         ctx.warn(f"{prim.GetPath()}: {fanned} self-intersecting or non-planar face(s) fan-triangulated")
+    if not keep.all():
+        tris, face_of = tris[keep[face_of]], face_of[keep[face_of]]
     gprim = UsdGeom.Gprim(prim)
-    left = gprim.GetOrientationAttr().Get(ctx.time) == UsdGeom.Tokens.leftHanded
-    mirrored = np.linalg.det(a) < 0
-    if left != mirrored:  # either one flips which side is the front; both cancel
+    if gprim.GetOrientationAttr().Get(ctx.time) == UsdGeom.Tokens.leftHanded:
         tris = tris[:, [0, 2, 1]]
-    world = points @ a.T + t
-    tris = _drop_zero_area(world, tris)
-    albedo, emission = surface
-    if is_light:
-        emission = _geometry_light_emission(ctx, prim, world, tris)
-    geo.add(str(prim.GetPath()), world, tris, albedo, emission, bool(gprim.GetDoubleSidedAttr().Get(ctx.time)))
+    return _Part(name=str(prim.GetPath()), points=points, tris=tris, albedo=albedo[face_of],
+                 emission=emission[face_of], two_sided=bool(gprim.GetDoubleSidedAttr().Get(ctx.time)),
+                 is_light=is_light)
+
+
+def _face_surfaces(ctx: _Context, prim: Usd.Prim, n_faces: int):
+    """Per-face ``(albedo (F,), emission (F, 2), kept (F,))`` of a gprim; None when nothing is kept.
+
+    The prim's own bound material (or displayColor) covers every face; each
+    ``GeomSubset`` of the ``materialBind`` family with a material bound to
+    it (``UsdShadeMaterialBindingAPI.GetMaterialBindSubsets``) then covers
+    its faces. A face with opacity 0 is dropped (it blocks nothing).
+    """
+    base = _surface(ctx, prim)
+    subsets = [] if not prim.IsA(UsdGeom.Mesh) else UsdShade.MaterialBindingAPI(prim).GetMaterialBindSubsets()
+    if not subsets:
+        if base is None:
+            return None
+        return np.full(n_faces, base[0]), np.tile(np.asarray(base[1], float), (n_faces, 1)), np.ones(n_faces, bool)
+    albedo = np.full(n_faces, base[0] if base else 0.0)
+    emission = np.tile(np.asarray(base[1] if base else (0.0, 0.0), float), (n_faces, 1))
+    keep = np.full(n_faces, base is not None)
+    for subset in subsets:
+        sub = subset.GetPrim()
+        element = str(subset.GetElementTypeAttr().Get(ctx.time))
+        if element != "face":
+            ctx.ignored[f"materialBind GeomSubset of elementType {element}"] += 1
+            continue
+        faces = np.asarray(subset.GetIndicesAttr().Get(ctx.time) or [], np.int64)
+        if len(faces) and (faces.min() < 0 or faces.max() >= n_faces):
+            raise ctx.error(sub, f"indices out of range for a mesh of {n_faces} faces")
+        surface = _surface(ctx, prim, bind_prim=sub)
+        if surface is None:
+            keep[faces] = False
+            continue
+        albedo[faces], emission[faces], keep[faces] = surface[0], surface[1], True
+    return (albedo, emission, keep) if keep.any() else None
+
+
+def _add_placed(ctx: _Context, prim: Usd.Prim, part: _Part, a: np.ndarray, t: np.ndarray,
+                geo: _GeometryBuilder, name: str) -> None:
+    """Add ``part`` at N places: world points ``a[k] @ p + t[k]``, a (N, 3, 3) and t (N, 3), metres.
+
+    A place whose linear map mirrors (negative determinant) re-winds its
+    triangles, so the front face stays the front face; zero-area triangles
+    (a collapsed axis, fan slivers) are dropped.
+    """
+    n = len(a)
+    if n == 0 or len(part.tris) == 0:
+        return
+    if n == 1:
+        world = (part.points @ a[0].T + t[0])[None]
+    else:
+        world = np.matmul(part.points[None], a.transpose(0, 2, 1)) + t[:, None, :]  # (N, P, 3)
+    mirrored = np.linalg.det(a) < 0
+    tris = np.broadcast_to(part.tris, (n,) + part.tris.shape).copy()
+    tris[mirrored] = tris[mirrored][:, :, [0, 2, 1]]
+    tris += (np.arange(n) * len(part.points))[:, None, None]
+    world = world.reshape(-1, 3)
+    tris = tris.reshape(-1, 3)
+    keep = _nonzero_area(world, tris)
+    per_tri = np.tile(np.arange(len(part.tris)), n)[keep]
+    tris = tris[keep]
+    emission = part.emission[per_tri]
+    if part.is_light:  # each place's own world area (normalize divides by it)
+        place = np.repeat(np.arange(n), len(part.tris))[keep]
+        emission = np.zeros((len(tris), 2))
+        for k in range(n):
+            mine = place == k
+            emission[mine] = _geometry_light_emission(ctx, prim, world, tris[mine])
+    geo.add(name, world, tris, part.albedo[per_tri], emission, part.two_sided)
 
 
 def _gprim_polygons(ctx: _Context, prim: Usd.Prim):
-    """Local ``(points, faceVertexCounts, faceVertexIndices)`` of a supported gprim, else None."""
+    """Local ``(points, faceVertexCounts, faceVertexIndices)`` of a supported gprim, else None.
+
+    Unsupported gprims (curves, points, NURBS, volumes) are counted for the
+    summary warning.
+    """
+    if prim.HasAPI(UsdSkel.BindingAPI):
+        ctx.ignored["skinning (UsdSkel: read in its unposed points)"] += 1
     if prim.IsA(UsdGeom.Mesh):
         return _mesh_polygons(ctx, prim)
     if prim.IsA(UsdGeom.Cube):
@@ -108,12 +223,73 @@ def _gprim_polygons(ctx: _Context, prim: Usd.Prim):
     if prim.IsA(UsdGeom.Sphere):
         radius = _gprim_size(ctx, prim, UsdGeom.Sphere(prim).GetRadiusAttr(), "Sphere radius")
         return _sphere_polygons(radius, *_sphere_segments(ctx, prim)) if radius > 0 else None
-    ctx.warn(f"{prim.GetPath()}: {prim.GetTypeName()} is not supported (only Mesh, Cube, Sphere); ignored")
+    for schema, build in _QUADRICS:
+        if prim.IsA(schema):
+            return build(ctx, prim, schema(prim))
+    ctx.not_read[prim.GetTypeName() or "untyped gprim"] += 1
     return None
 
 
+def _axis(ctx: _Context, prim: Usd.Prim, shape) -> str:
+    axis = str(shape.GetAxisAttr().Get(ctx.time))
+    if axis not in ("X", "Y", "Z"):
+        raise ctx.error(prim, f"axis must be 'X', 'Y' or 'Z', not {axis!r}")
+    return axis
+
+
+def _cylinder(ctx: _Context, prim: Usd.Prim, shape):
+    """UsdGeom.Cylinder / Cylinder_1 (radiusTop, radiusBottom): a capped cylinder or frustum."""
+    h = _gprim_size(ctx, prim, shape.GetHeightAttr(), "Cylinder height")
+    if isinstance(shape, UsdGeom.Cylinder_1):
+        r_top = _gprim_size(ctx, prim, shape.GetRadiusTopAttr(), "Cylinder radiusTop")
+        r_bottom = _gprim_size(ctx, prim, shape.GetRadiusBottomAttr(), "Cylinder radiusBottom")
+    else:
+        r_top = r_bottom = _gprim_size(ctx, prim, shape.GetRadiusAttr(), "Cylinder radius")
+    if max(r_top, r_bottom) == 0:
+        return None
+    return _cylinder_polygons(r_top, r_bottom, h, _sphere_segments(ctx, prim)[0], _axis(ctx, prim, shape))
+
+
+def _cone(ctx: _Context, prim: Usd.Prim, shape):
+    """UsdGeom.Cone: apex up the axis, capped base."""
+    h = _gprim_size(ctx, prim, shape.GetHeightAttr(), "Cone height")
+    r = _gprim_size(ctx, prim, shape.GetRadiusAttr(), "Cone radius")
+    return _cone_polygons(r, h, _sphere_segments(ctx, prim)[0], _axis(ctx, prim, shape)) if r > 0 else None
+
+
+def _capsule(ctx: _Context, prim: Usd.Prim, shape):
+    """UsdGeom.Capsule (and Capsule_1 when its two radii are equal): cylinder plus hemispheres."""
+    h = _gprim_size(ctx, prim, shape.GetHeightAttr(), "Capsule height")
+    if isinstance(shape, UsdGeom.Capsule_1):
+        r = _gprim_size(ctx, prim, shape.GetRadiusTopAttr(), "Capsule radiusTop")
+        if _gprim_size(ctx, prim, shape.GetRadiusBottomAttr(), "Capsule radiusBottom") != r:
+            ctx.not_read["Capsule_1 with two radii"] += 1
+            return None
+    else:
+        r = _gprim_size(ctx, prim, shape.GetRadiusAttr(), "Capsule radius")
+    return _capsule_polygons(r, h, *_sphere_segments(ctx, prim), _axis(ctx, prim, shape)) if r > 0 else None
+
+
+def _plane(ctx: _Context, prim: Usd.Prim, shape):
+    """UsdGeom.Plane: one quad facing +axis (double-sided by the schema's fallback)."""
+    w = _gprim_size(ctx, prim, shape.GetWidthAttr(), "Plane width")
+    length = _gprim_size(ctx, prim, shape.GetLengthAttr(), "Plane length")
+    return _plane_polygons(w, length, _axis(ctx, prim, shape)) if w > 0 and length > 0 else None
+
+
+# the implicit shapes beyond Cube and Sphere: schema and builder (Cylinder_1 before Cylinder: IsA is exact)
+_QUADRICS = (
+    (UsdGeom.Cylinder_1, _cylinder),
+    (UsdGeom.Cylinder, _cylinder),
+    (UsdGeom.Cone, _cone),
+    (UsdGeom.Capsule_1, _capsule),
+    (UsdGeom.Capsule, _capsule),
+    (UsdGeom.Plane, _plane),
+)
+
+
 def _gprim_size(ctx: _Context, prim: Usd.Prim, attr: Usd.Attribute, what: str) -> float:
-    """A Cube's size or a Sphere's radius in stage units: a non-negative number (0: nothing to add)."""
+    """A shape's size (Cube size, a radius, height, width, ...) in stage units: a non-negative number."""
     value = float(_get(ctx, attr))
     if not math.isfinite(value) or value < 0:
         raise ctx.error(prim, f"{what} must be a non-negative number, not {value}")
@@ -121,8 +297,8 @@ def _gprim_size(ctx: _Context, prim: Usd.Prim, attr: Usd.Attribute, what: str) -
 
 
 def _sphere_segments(ctx: _Context, prim: Usd.Prim) -> tuple[int, int]:
-    """``(longitude segments, latitude rings)`` of a Sphere: ``probesim:tessellation`` if authored,
-    else :data:`SPHERE_SEGMENTS`."""
+    """``(longitude segments, latitude rings)`` of a round shape: ``probesim:tessellation`` if authored,
+    else :data:`SPHERE_SEGMENTS` (Cylinder and Cone use the first number, Capsule both)."""
     attr = prim.GetAttribute(TESSELLATION_ATTR)
     value = attr.Get(ctx.time) if attr and attr.HasAuthoredValue() else None
     if value is None:
@@ -154,7 +330,10 @@ def _mesh_polygons(ctx: _Context, prim: Usd.Prim):
     if len(indices) and (indices.min() < 0 or indices.max() >= len(points)):
         raise ctx.error(prim, f"faceVertexIndices out of range for {len(points)} points")
     if mesh.GetHoleIndicesAttr().Get(ctx.time):
-        ctx.warn(f"{prim.GetPath()}: holeIndices ignored (hole faces are kept)")
+        ctx.ignored["holeIndices (hole faces kept)"] += 1
+    scheme = mesh.GetSubdivisionSchemeAttr()
+    if scheme.HasAuthoredValue() and str(scheme.Get(ctx.time)) != UsdGeom.Tokens.none:
+        ctx.subdivided[str(scheme.Get(ctx.time))] += 1
     if np.any(counts < 3):
         ctx.warn(f"{prim.GetPath()}: {int(np.sum(counts < 3))} face(s) with fewer than 3 vertices skipped")
     return points, counts, indices

@@ -25,6 +25,7 @@ from simulator.units import luminance_grey
 from simulator.scene.model import Light, LightKind
 from simulator.scene.usd.context import _Context, _get, _not_uniform
 from simulator.scene.usd.materials import _albedo, _grey, _material_inputs
+from simulator.scene.usd.shaping import has_shaping, read_shaping
 from simulator.scene.usd.tessellation import _parallelogram_areas
 from simulator.scene.usd.transforms import _axis_scales, _frame, _mean_scale, _world_affine
 
@@ -39,8 +40,28 @@ _LIGHT_SCHEMAS = (
     (UsdLux.CylinderLight, LightKind.CYLINDER),
 )
 
-#: ``texture:format`` values a DomeLight may have (``automatic`` only for ``.exr`` files)
+#: ``texture:format`` values a DomeLight may have (``automatic``: a lat-long map unless an EXR header says cube)
 DOME_TEXTURE_FORMATS = ("latlong", "automatic")
+
+
+def _is_supported_light(prim: Usd.Prim) -> bool:
+    """True for the UsdLux light types probesim reads (see ``_LIGHT_SCHEMAS``)."""
+    return any(prim.IsA(schema) for schema, _ in _LIGHT_SCHEMAS)
+
+
+def _require_light(ctx: _Context, lights: list[Light], geometry) -> None:
+    """Refuse a stage in which nothing emits: every reading would be a silent zero.
+
+    Raises
+    ------
+    UserError
+        No UsdLux light was read and no triangle emits (``emissiveColor`` or
+        a mesh light).
+    """
+    emits = geometry.n_triangles > 0 and bool(np.any(geometry.emission > 0))
+    if not lights and not emits:
+        raise UserError(f"{ctx.path}: no light in the stage (no UsdLux light and no emissive geometry); "
+                        "every reading would be zero")
 
 
 def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:
@@ -56,16 +77,15 @@ def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:
     if value is None:
         return None
     light.emission = ctx.emission(value, spectrum)
+    read_shaping(ctx, prim, light)
     return light
 
 
 def _light_inputs(ctx: _Context, prim: Usd.Prim) -> tuple[float, str | float, bool]:
     """``(value, spectrum, normalize)`` of any light: :func:`_light_value` and its ``normalize`` flag.
 
-    Shaping (cone, focus, IES profile) is not modelled: warned about and ignored.
+    Shaping (cone, focus, IES profile) is read by :mod:`simulator.scene.usd.shaping`.
     """
-    if prim.HasAPI(UsdLux.ShapingAPI):
-        ctx.warn(f"{prim.GetPath()}: UsdLuxShapingAPI (cone, focus, IES) ignored")
     raw, spectrum = _light_value(ctx, prim)
     return raw, spectrum, bool(UsdLux.LightAPI(prim).GetNormalizeAttr().Get(ctx.time))
 
@@ -194,23 +214,38 @@ def _dome_texture_frame(ctx: _Context, prim: Usd.Prim, frame: np.ndarray) -> np.
 def _dome_texture_map(ctx: _Context, prim: Usd.Prim, path: str) -> np.ndarray:
     """A dome's lat-long map as luminance grey, shape (H, W), float64 (see :mod:`simulator.io.latlong`).
 
-    ``texture:format`` must be ``latlong``, or ``automatic`` for a ``.exr``
-    file whose header does not declare a cube map. RGB becomes BT.709 Y (the
-    weights of :func:`simulator.units.luminance_grey`); a grey ``Y`` image is
-    used as is. Values must be finite and non-negative.
+    ``texture:format`` must be ``latlong``, or ``automatic`` (read as
+    lat-long, unless an OpenEXR header declares a cube map). The file may be
+    OpenEXR or Radiance ``.hdr`` (RGBE, :mod:`simulator.io.hdr`): linear
+    radiance, used as is. An 8-bit (or 16-bit) PNG, JPEG, ... is read as
+    sRGB-encoded relative radiance and linearised
+    (:func:`simulator.io.images.srgb_to_linear`), with a warning: such a map
+    stops at 1, so a bright source in it (the sun) is clipped and the dome
+    gives too little light. RGB becomes BT.709 Y (the weights of
+    :func:`simulator.units.luminance_grey`); a grey image is used as is.
+    Values must be finite and non-negative.
     """
     from simulator.io import exr
+    from simulator.io.images import read_image, srgb_to_linear
 
     attr = prim.GetAttribute("inputs:texture:format")
     fmt = str((attr.Get(ctx.time) if attr else None) or "automatic")
     if fmt not in DOME_TEXTURE_FORMATS:
         raise ctx.error(prim, f"texture:format {fmt!r} of texture:file {path} is not supported "
-                              "(only 'latlong', or 'automatic' for a lat-long .exr)")
-    if not path.lower().endswith(".exr"):
-        raise ctx.error(prim, f"texture:file {path}: only lat-long OpenEXR (.exr) maps are supported")
+                              "(only 'latlong', or 'automatic' for a lat-long map)")
+    is_exr = path.lower().endswith(".exr")
     try:
-        header = exr.read_header(path) if fmt == "automatic" else {}
-        rgb = exr.read_rgb(path)
+        header = exr.read_header(path) if fmt == "automatic" and is_exr else {}
+        if is_exr:
+            rgb = exr.read_rgb(path)
+        else:
+            image = read_image(path, _texture_bytes(path))
+            rgb = image.rgb
+            if image.integer_bits:
+                rgb = srgb_to_linear(rgb)
+                ctx.warn(f"{prim.GetPath()}: texture:file {os.path.basename(path)} is a {image.integer_bits}-bit "
+                         "image: read as sRGB relative radiance (linearised); it clips bright sources such as "
+                         "the sun, so the dome's light is too low where it clips: prefer an .exr or .hdr map")
     except UserError as err:  # names the file; add the stage and prim
         raise ctx.error(prim, f"texture:file {err}") from None
     if "CUBE" in str(header.get("envmap", "")).upper():
@@ -218,14 +253,22 @@ def _dome_texture_map(ctx: _Context, prim: Usd.Prim, path: str) -> np.ndarray:
     bad = int(np.sum(~np.isfinite(rgb).all(axis=-1) | (rgb < 0).any(axis=-1)))
     if bad:
         raise ctx.error(prim, f"texture:file {path}: {bad} texel(s) are negative, NaN or Inf")
-    weights = np.array([luminance_grey(e) for e in np.eye(3)])  # BT.709 Y per channel
     rgb = rgb.astype(np.float64)
     if _not_uniform(np.ptp(rgb, axis=-1).max(), float(rgb.max())):
         ctx.coloured[str(prim.GetPath())] = None
     h, w = rgb.shape[:2]
     if w != 2 * h:
         ctx.warn(f"{prim.GetPath()}: texture:file {path} is {w} x {h}, not 2:1; read as lat-long anyway")
-    return rgb @ weights
+    return luminance_grey(rgb)  # a grey texel keeps its value exactly
+
+
+def _texture_bytes(path: str) -> bytes | None:
+    """Bytes of a resolved texture inside a package (``pkg.usdz[tex.hdr]``); None for a plain file."""
+    if "[" not in path:
+        return None
+    from simulator.scene.usd.textures import _asset_data
+
+    return _asset_data(path)
 
 
 def _is_geometry_light(ctx: _Context, prim: Usd.Prim) -> bool:
@@ -265,6 +308,8 @@ def _geometry_light_emission(ctx: _Context, prim: Usd.Prim, world: np.ndarray,
     """Emission pair of a geometry light: ``intensity * 2**exposure * grey(color)``,
     divided by its world area (one side) when ``normalize`` is on."""
     raw, spectrum, normalize = _light_inputs(ctx, prim)
+    if has_shaping(prim):
+        ctx.warn(f"{prim.GetPath()}: UsdLuxShapingAPI on a mesh light ignored")
     value = raw
     if normalize:
         area = float(0.5 * _parallelogram_areas(world, tris).sum())

@@ -2,22 +2,36 @@
 
 A gprim's bound ``UsdPreviewSurface`` gives its Lambertian albedo
 (``diffuseColor``), its front-face emitted radiance (``emissiveColor``) and
-whether it is there at all (``opacity`` 0 removes it). Inputs are followed
-through connections to authored constants; with no usable material,
-``primvars:displayColor`` or the UsdPreviewSurface default is the albedo.
-Colours become luminance greys (BT.709 Y), and one summary warning names
-the prims whose colour was not grey.
+whether it is there at all (``opacity`` 0 removes it). The binding is the
+one ``UsdShadeMaterialBindingAPI.ComputeBoundMaterial`` resolves for the
+``full`` purpose (a final render), which falls back to the all-purpose
+binding and honours collection bindings (``material:binding:collection:*``)
+and ``bindMaterialAs`` strength; a ``GeomSubset`` of the ``materialBind``
+family resolves its own binding the same way (see
+:func:`simulator.scene.usd.geometry._face_surfaces`).
+
+Inputs are followed through connections to authored constants; an input
+connected to a ``UsdUVTexture`` reads the texture's mean value
+(:mod:`.textures`). With no usable material, ``primvars:displayColor`` or
+the UsdPreviewSurface default is the albedo. Colours become luminance greys
+(BT.709 Y). Summary warnings, one line each, name the prims whose colour was
+not grey, the inputs read as a texture mean, the albedo-1 surfaces, and the
+inputs that would change the reading but are ignored (``roughness``,
+``metallic``, ``specularColor``, ... authored away from the UsdPreviewSurface
+fallback, counted by name).
 """
 
 from __future__ import annotations
 
 import math
+import os
 
 import numpy as np
 from pxr import Usd, UsdGeom, UsdShade
 
 from simulator.units import luminance_grey
 from simulator.scene.usd.context import _Context, _get, _name_list, _not_uniform
+from simulator.scene.usd.textures import _texture_mean
 
 #: UsdPreviewSurface's fallback diffuseColor (0.18, 0.18, 0.18), used when nothing is authored
 DEFAULT_ALBEDO = 0.18
@@ -29,20 +43,41 @@ _PREVIEW_DEFAULTS = {
     "opacity": 1.0,
 }
 
+# UsdPreviewSurface inputs probesim does not model, with their fallbacks: an
+# input authored (or connected) away from its fallback is counted as ignored.
+_IGNORED_DEFAULTS = {
+    "useSpecularWorkflow": 0,
+    "specularColor": (0.0, 0.0, 0.0),
+    "metallic": 0.0,
+    "roughness": 0.5,
+    "clearcoat": 0.0,
+    "clearcoatRoughness": 0.01,
+    "ior": 1.5,
+    "normal": (0.0, 0.0, 1.0),
+    "displacement": 0.0,
+    "occlusion": 1.0,
+}
 
-def _surface(ctx: _Context, prim: Usd.Prim) -> tuple[float, tuple[float, float]] | None:
-    """``(albedo, emission pair)`` of a gprim, or None when opacity 0 removes it."""
-    inputs = _material_inputs(ctx, prim)
+
+def _surface(ctx: _Context, prim: Usd.Prim,
+             bind_prim: Usd.Prim | None = None) -> tuple[float, tuple[float, float]] | None:
+    """``(albedo, emission pair)`` of a gprim, or None when opacity 0 removes it.
+
+    ``bind_prim`` (default ``prim``) is where the material binding is
+    resolved: a GeomSubset of ``prim`` for the subset's faces.
+    """
+    inputs = _material_inputs(ctx, prim if bind_prim is None else bind_prim)
     if inputs is None:
         rgb, source = _display_color(ctx, prim)
         inputs = {"diffuseColor": (rgb, source), "emissiveColor": (_PREVIEW_DEFAULTS["emissiveColor"], ""),
                   "opacity": (1.0, "")}
     opacity = float(inputs["opacity"][0])
+    where = prim.GetPath() if bind_prim is None else bind_prim.GetPath()
     if opacity <= 0.0:
-        ctx.warn(f"{prim.GetPath()}: opacity 0; left out (it blocks no light)")
+        ctx.warn(f"{where}: opacity 0; left out (it blocks no light)")
         return None
     if opacity < 1.0:
-        ctx.warn(f"{prim.GetPath()}: partial opacity {opacity:g} treated as opaque")
+        ctx.ignored["inputs:opacity between 0 and 1 (read as opaque)"] += 1
     albedo = _albedo(ctx, prim, inputs)
     rgb, source = inputs["emissiveColor"]
     radiance = _grey(ctx, prim, rgb)
@@ -52,11 +87,20 @@ def _surface(ctx: _Context, prim: Usd.Prim) -> tuple[float, tuple[float, float]]
 
 
 def _albedo(ctx: _Context, prim: Usd.Prim, inputs: dict) -> float:
-    """Grey ``diffuseColor`` of material inputs, which must lie in [0, 1) (energy conservation)."""
+    """Grey ``diffuseColor`` of material inputs, which must lie in [0, 1] (energy conservation).
+
+    An albedo of 1 (to 1e-9: ``(1, 1, 1)``'s BT.709 grey rounds to
+    1 + 2e-16) is read as exactly 1 and named in a summary warning: such a
+    surface absorbs nothing, so a path ends only when it escapes the scene
+    (see :func:`_finish_warnings`).
+    """
     rgb, source = inputs["diffuseColor"]
     albedo = _grey(ctx, prim, rgb)
+    if math.isfinite(albedo) and 1.0 <= albedo <= 1.0 + 1e-9:
+        ctx.white[str(prim.GetPath())] = None
+        return 1.0
     if not (math.isfinite(albedo) and 0.0 <= albedo < 1.0):
-        raise ctx.error(prim, f"albedo {albedo:g} from {source} must be in [0, 1) (energy conservation)")
+        raise ctx.error(prim, f"albedo {albedo:g} from {source} must be in [0, 1] (energy conservation)")
     return albedo
 
 
@@ -71,9 +115,42 @@ def _grey(ctx: _Context, prim: Usd.Prim, rgb) -> float:
 
 
 def _finish_warnings(ctx: _Context) -> None:
-    """One summary warning for every colour that was reduced to grey."""
+    """The summary warnings, one line each: greys, texture means, albedo 1, subdivision, what was not read.
+
+    Notes
+    -----
+    Albedo 1: the kernels multiply a path's throughput by the albedo at each
+    bounce and play Russian roulette only once it falls below 0.1, so on an
+    albedo-1 surface nothing ends a path but escaping the scene. In an open
+    scene that is the right reading (E/pi off a white floor); in an
+    enclosure no light escapes from, the true reading is infinite and the
+    estimate is cut at ``max_depth`` bounces (65,536 vertices when
+    unlimited), finite but meaningless and slow (measured: a closed 4 m
+    albedo-1 cube around a sphere light read 26,964 lx where albedo 0.99
+    reads 44 lx, at 65,536 rays per sample). Light sealed in a watertight
+    albedo-1 surface is refused (:mod:`.enclosures`); the warning covers
+    the enclosures that check cannot see.
+    """
     if ctx.coloured:
         ctx.warn(f"coloured albedo/emission/light colour reduced to luminance grey: {_name_list(list(ctx.coloured))}")
+    if ctx.textured:
+        inputs = ", ".join(f"{n} x inputs:{name}" for name, n in sorted(ctx.textured.items()))
+        ctx.warn(f"textured inputs read as their texture's mean value (a uniform surface): {inputs} "
+                 f"({len(ctx.textures)} texture file(s))")
+    if ctx.white:
+        ctx.warn(f"albedo 1 (no absorption) on {_name_list(list(ctx.white))}: paths end there only by escaping "
+                 "the scene; in an enclosure no light leaves the reading diverges, and unless the enclosure is "
+                 "watertight (then the stage is refused) it is cut at max_depth (65536 bounces when unlimited)")
+    if ctx.subdivided:
+        meshes = ", ".join(f"{n} {scheme}" for scheme, n in sorted(ctx.subdivided.items()))
+        ctx.warn(f"subdivision surfaces read as their control cage (not refined): {meshes} mesh(es)")
+    parts = []
+    if ctx.not_read:
+        parts.append("not read: " + ", ".join(f"{n} {what}" for what, n in sorted(ctx.not_read.items())))
+    if ctx.ignored:
+        parts.append("ignored: " + ", ".join(f"{n} x {what}" for what, n in sorted(ctx.ignored.items())))
+    if parts:
+        ctx.warn(f"{os.path.basename(ctx.path)}: " + "; ".join(parts))
 
 
 def _material_inputs(ctx: _Context, prim: Usd.Prim) -> dict | None:
@@ -91,17 +168,40 @@ def _preview_surface_inputs(ctx: _Context, material: UsdShade.Material) -> dict 
     """Read diffuseColor/emissiveColor/opacity off a material's UsdPreviewSurface."""
     shader, _, _ = material.ComputeSurfaceSource()
     if not shader or shader.GetShaderId() != "UsdPreviewSurface":
-        ctx.warn(f"{material.GetPath()}: surface is not a UsdPreviewSurface; using displayColor or the default albedo")
+        ident = shader.GetShaderId() if shader else None
+        if not ident:  # e.g. only an outputs:mdl:surface or outputs:mtlx:surface
+            contexts = sorted({o.GetBaseName().rpartition(":")[0] or "universal" for o in material.GetSurfaceOutputs()
+                               if o.HasConnectedSource()})
+            ident = "/".join(contexts) or "no"
+        ctx.not_read[f"material(s) with a {ident} surface, not UsdPreviewSurface (displayColor or 0.18 used)"] += 1
         return None
+    _count_ignored_inputs(ctx, shader)
     return {name: _input_value(ctx, shader, name, default) for name, default in _PREVIEW_DEFAULTS.items()}
+
+
+def _count_ignored_inputs(ctx: _Context, shader: UsdShade.Shader) -> None:
+    """Count the UsdPreviewSurface inputs that would change the reading but are not modelled."""
+    for name, default in _IGNORED_DEFAULTS.items():
+        inp = shader.GetInput(name)
+        if not inp:
+            continue
+        if inp.HasConnectedSource():
+            ctx.ignored[f"inputs:{name} (connected)"] += 1
+            continue
+        value = _get(ctx, inp.GetAttr())
+        if value is not None and not np.allclose(np.asarray(value, float), np.asarray(default, float),
+                                                 rtol=0, atol=1e-6):
+            ctx.ignored[f"inputs:{name}"] += 1
 
 
 def _input_value(ctx: _Context, shader: UsdShade.Shader, name: str, default):
     """Value of a shader input, through connections to an authored constant; else the default.
 
     ``GetValueProducingAttributes`` follows connections through NodeGraph and
-    Material interface inputs. A shader output at the end (e.g. a texture)
-    is not a constant: warn and use the UsdPreviewSurface default.
+    Material interface inputs. A UsdUVTexture output at the end gives the
+    texture's mean value (:func:`.textures._texture_mean`, counted for the
+    summary warning); any other shader output is not a constant: the
+    UsdPreviewSurface default is used and the input counted as ignored.
     """
     inp = shader.GetInput(name)
     where = f"{shader.GetPath()}.inputs:{name}"
@@ -109,8 +209,12 @@ def _input_value(ctx: _Context, shader: UsdShade.Shader, name: str, default):
         return default, f"{where} (default)"
     for attr in inp.GetValueProducingAttributes():
         if UsdShade.Output.IsOutput(attr):
-            ctx.warn(f"{where}: connected to {attr.GetPath()}, which is not a constant; using the default")
-            return default, f"{where} (default)"
+            value, why = _texture_mean(ctx, attr)
+            if value is None:
+                ctx.ignored[f"inputs:{name} {why} (default used)"] += 1
+                return default, f"{where} (default)"
+            ctx.textured[name] += 1
+            return (value if len(value) > 1 else float(value[0])), f"{where} (mean of the texture at {attr.GetPath()})"
         value = _get(ctx, attr)
         if value is not None:
             return value if isinstance(value, tuple) else float(value), str(attr.GetPath())
@@ -124,6 +228,6 @@ def _display_color(ctx: _Context, prim: Usd.Prim):
         values = np.asarray(pv.ComputeFlattened(ctx.time) or [], float).reshape(-1, 3)
         if len(values):
             if len(values) > 1 and np.ptp(values, axis=0).max() > 0:
-                ctx.warn(f"{prim.GetPath()}: varying displayColor averaged to one albedo")
+                ctx.ignored["varying primvars:displayColor (averaged to one albedo)"] += 1
             return tuple(values.mean(axis=0)), f"{prim.GetPath()}.primvars:displayColor"
     return _PREVIEW_DEFAULTS["diffuseColor"], "the default albedo"

@@ -150,13 +150,36 @@ def _collect_composition_errors(stage: Usd.Stage, ctx: _Context) -> None:
         ctx.warn(f"composition error: {' '.join(str(err).split())}")
 
 
-def _traverse(stage: Usd.Stage) -> Iterator[Usd.Prim]:
-    """Every active prim of the stage, instance proxies included (the pseudo-root is not a prim)."""
-    # The default predicate already drops inactive, undefined, unloaded and
-    # abstract (class) prims; TraverseInstanceProxies walks into instances.
-    for prim in Usd.PrimRange(stage.GetPseudoRoot(), Usd.TraverseInstanceProxies()):
-        if not prim.IsPseudoRoot():
-            yield prim
+class _Walk:
+    """Every active prim of the stage, instance proxies included (the pseudo-root is not a prim).
+
+    Iterate it; ``PruneChildren()`` skips the subtree of the prim just yielded.
+    """
+
+    def __init__(self, stage: Usd.Stage) -> None:
+        # The default predicate already drops inactive, undefined, unloaded and
+        # abstract (class) prims; TraverseInstanceProxies walks into instances.
+        self._it = iter(Usd.PrimRange(stage.GetPseudoRoot(), Usd.TraverseInstanceProxies()))
+
+    def __iter__(self) -> Iterator[Usd.Prim]:
+        for prim in self._it:
+            if not prim.IsPseudoRoot():
+                yield prim
+
+    def PruneChildren(self) -> None:  # noqa: N802  (the pxr name)
+        self._it.PruneChildren()
+
+
+def _traverse(stage: Usd.Stage) -> _Walk:
+    """A :class:`_Walk` over the stage."""
+    return _Walk(stage)
+
+
+def _warn_unauthored_units(stage: Usd.Stage, ctx: _Context) -> None:
+    """A stage that does not author ``metersPerUnit`` is read in centimetres (UsdGeom's fallback 0.01): say so."""
+    if not UsdGeom.StageHasAuthoredMetersPerUnit(stage):
+        ctx.warn(f"{ctx.path}: metersPerUnit not authored; read as centimetres (UsdGeom's fallback, 0.01 m "
+                 "per unit): author metersPerUnit in the root layer if the stage is in other units")
 
 
 def _is_rendered(ctx: _Context, prim: Usd.Prim) -> bool:

@@ -1,4 +1,4 @@
-"""Polygons and triangles in plain numpy: Cube and UV-sphere polygons, triangulation.
+"""Polygons and triangles in plain numpy: the implicit gprims as polygons, triangulation.
 
 Nothing here reads USD: the shapes come as ``(points, faceVertexCounts,
 faceVertexIndices)`` in the prim's local frame, as a ``UsdGeom.Mesh`` states
@@ -40,7 +40,111 @@ def _sphere_polygons(radius: float, n_lon: int, n_lat: int):
     return points, counts, np.concatenate(faces)
 
 
+#: a proper rotation taking local +Z to each UsdGeom ``axis`` (cyclic permutations: det +1)
+_AXIS_ROTATIONS = {
+    "Z": np.eye(3),
+    "X": np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]),  # (a, b, c) -> (c, a, b)
+    "Y": np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]]),  # (a, b, c) -> (b, c, a)
+}
+
+
+def _revolution_polygons(radii: np.ndarray, heights: np.ndarray, n_lon: int, axis: str = "Z"):
+    """A closed surface of revolution about ``axis`` from a profile, faces outward.
+
+    Parameters
+    ----------
+    radii, heights : ndarray, shape (K,)
+        The profile from the top pole to the bottom pole: ``(radii[k],
+        heights[k])`` is a ring of radius ``radii[k]`` at height ``heights[k]``
+        along the axis; the first and the last entries are the poles (their
+        radius is ignored: one vertex each). Heights must not increase.
+    n_lon : int
+        Segments around the axis (>= 3).
+    axis : {"X", "Y", "Z"}
+        The axis of revolution (UsdGeom ``axis``).
+
+    Returns
+    -------
+    points, counts, indices
+        ``(P, 3)`` points and ``faceVertexCounts``/``faceVertexIndices`` as a
+        Mesh states them: triangle fans at the poles, quads between rings.
+
+    Notes
+    -----
+    Vertices lie on the surface, so each ring is an inscribed regular
+    polygon: a side area short by a factor ``sin(2 pi/n)/(2 pi/n)`` (0.16% at
+    n = 64). Rings of radius 0 (a cone's apex) give zero-area faces, which
+    :func:`_drop_zero_area` removes after triangulation.
+    """
+    phi = 2 * np.pi * np.arange(n_lon) / n_lon
+    r, z = np.asarray(radii[1:-1], float)[:, None], np.asarray(heights[1:-1], float)[:, None]
+    n_ring = len(r)
+    ring = np.stack([r * np.cos(phi), r * np.sin(phi), np.broadcast_to(z, (n_ring, n_lon))], axis=-1)
+    points = np.concatenate([[[0.0, 0.0, heights[0]]], ring.reshape(-1, 3), [[0.0, 0.0, heights[-1]]]])
+    north, south = 0, len(points) - 1
+    j = np.arange(n_lon)
+    jn = (j + 1) % n_lon
+    v = lambda k, jj: 1 + k * n_lon + jj  # noqa: E731  vertex of ring k (0-based), column jj
+    faces = [np.stack([np.full(n_lon, north), v(0, j), v(0, jn)], 1).ravel()]
+    for k in range(n_ring - 1):
+        faces.append(np.stack([v(k, j), v(k + 1, j), v(k + 1, jn), v(k, jn)], 1).ravel())
+    faces.append(np.stack([v(n_ring - 1, j), np.full(n_lon, south), v(n_ring - 1, jn)], 1).ravel())
+    counts = np.array([3] * n_lon + [4] * (n_lon * (n_ring - 1)) + [3] * n_lon, np.int64)
+    return points @ _AXIS_ROTATIONS[axis].T, counts, np.concatenate(faces)
+
+
+def _cylinder_polygons(radius_top: float, radius_bottom: float, height: float, n_lon: int, axis: str = "Z"):
+    """UsdGeom.Cylinder (and Cylinder_1's two radii): capped, centred, ``height`` along ``axis``."""
+    h = 0.5 * height
+    return _revolution_polygons(np.array([0.0, radius_top, radius_bottom, 0.0]), np.array([h, h, -h, -h]),
+                                n_lon, axis)
+
+
+def _cone_polygons(radius: float, height: float, n_lon: int, axis: str = "Z"):
+    """UsdGeom.Cone: apex at ``+height/2`` along ``axis``, a capped base of ``radius`` at ``-height/2``."""
+    h = 0.5 * height
+    return _revolution_polygons(np.array([0.0, radius, 0.0]), np.array([h, -h, -h]), n_lon, axis)
+
+
+def _capsule_polygons(radius: float, height: float, n_lon: int, n_lat: int, axis: str = "Z"):
+    """UsdGeom.Capsule: a cylinder of ``height`` along ``axis`` with hemispherical caps of ``radius``.
+
+    The capsule's full length is ``height + 2 radius``. Each cap has
+    ``ceil(n_lat / 2)`` latitude bands (``n_lat`` is the whole sphere's, as
+    for a Sphere's tessellation).
+    """
+    n_half = max(1, (n_lat + 1) // 2)
+    theta = 0.5 * np.pi * np.arange(n_half + 1) / n_half  # pole (0) to equator (pi/2)
+    h = 0.5 * height
+    r_top, z_top = radius * np.sin(theta), h + radius * np.cos(theta)
+    radii = np.concatenate([r_top, r_top[::-1]])
+    heights = np.concatenate([z_top, -z_top[::-1]])
+    return _revolution_polygons(radii, heights, n_lon, axis)
+
+
+def _plane_polygons(width: float, length: float, axis: str = "Z"):
+    """UsdGeom.Plane: one ``width`` x ``length`` quad centred at the origin, front face along +``axis``.
+
+    Width lies along X (axis Z or Y) or Z (axis X); length along Y (axis Z
+    or X) or Z (axis Y), as the schema states.
+    """
+    u_axis = {"Z": 0, "Y": 0, "X": 2}[axis]
+    v_axis = {"Z": 1, "Y": 2, "X": 1}[axis]
+    normal = np.eye(3)["XYZ".index(axis)]
+    u, v = 0.5 * width * np.eye(3)[u_axis], 0.5 * length * np.eye(3)[v_axis]
+    points = np.array([-u - v, u - v, u + v, -u + v])
+    quad = [0, 1, 2, 3] if np.dot(np.cross(u, v), normal) > 0 else [0, 3, 2, 1]
+    return points, np.array([4], np.int64), np.array(quad, np.int64)
+
+
 def _triangulate(points: np.ndarray, counts: np.ndarray, indices: np.ndarray) -> tuple[np.ndarray, int]:
+    """Split polygons into triangles that keep each face's winding (see :func:`_triangulate_faces`)."""
+    tris, fanned, _ = _triangulate_faces(points, counts, indices)
+    return tris, fanned
+
+
+def _triangulate_faces(points: np.ndarray, counts: np.ndarray,
+                       indices: np.ndarray) -> tuple[np.ndarray, int, np.ndarray]:
     """Split polygons into triangles that keep each face's winding.
 
     Faces are grouped by vertex count and handled in bulk: triangles as they
@@ -55,28 +159,35 @@ def _triangulate(points: np.ndarray, counts: np.ndarray, indices: np.ndarray) ->
     fanned : int
         Faces that could not be ear-clipped (self-intersecting or
         non-planar) and were fan-triangulated instead.
+    face_of : ndarray, shape (T,), int64
+        The face (index into ``counts``) each triangle came from.
     """
     starts = np.cumsum(counts) - counts
     out = [np.zeros((0, 3), np.int64)]
+    face_out = [np.zeros(0, np.int64)]
     concave_fallback = 0
     for n in np.unique(counts):
         n = int(n)
         if n < 3:
             continue
-        idx = indices[starts[counts == n][:, None] + np.arange(n)]  # (F, n)
+        faces = np.flatnonzero(counts == n)
+        idx = indices[starts[faces][:, None] + np.arange(n)]  # (F, n)
         if n == 3:
             out.append(idx)
+            face_out.append(faces)
             continue
         convex = _convex_faces(points[idx])
         hub = idx[convex]  # fan (v0, vk, vk+1), k = 1 .. n-2
         k = np.arange(1, n - 1)
         fan = np.stack([np.broadcast_to(hub[:, :1], (len(hub), n - 2)), hub[:, k], hub[:, k + 1]], -1)
         out.append(fan.reshape(-1, 3))
-        for face in idx[~convex]:
+        face_out.append(np.repeat(faces[convex], n - 2))
+        for f, face in zip(faces[~convex], idx[~convex]):
             local, ok = _ear_clip(points[face])
             concave_fallback += not ok
             out.append(face[local])
-    return np.concatenate(out), concave_fallback
+            face_out.append(np.full(len(local), f))
+    return np.concatenate(out), concave_fallback, np.concatenate(face_out)
 
 
 def _newell_normal(poly: np.ndarray) -> np.ndarray:
@@ -146,4 +257,9 @@ def _drop_zero_area(points: np.ndarray, tris: np.ndarray) -> np.ndarray:
     """Remove triangles of exactly zero area (collinear fan slivers): nothing can hit them."""
     if len(tris) == 0:
         return tris
-    return tris[_parallelogram_areas(points, tris) > 0]
+    return tris[_nonzero_area(points, tris)]
+
+
+def _nonzero_area(points: np.ndarray, tris: np.ndarray) -> np.ndarray:
+    """True (T,) for triangles of non-zero area."""
+    return _parallelogram_areas(points, tris) > 0

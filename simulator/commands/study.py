@@ -1,0 +1,123 @@
+"""``probesim study STUDY.toml``: run or resume a placement study and print its closing note."""
+
+from __future__ import annotations
+
+import os
+import sys
+import time
+from pathlib import Path
+
+from simulator.errors import UserError
+
+__all__ = ["main_study", "ChunkProgress", "closing_note"]
+
+
+class ChunkProgress:
+    """Chunks done and time left, one redrawn line on a terminal; silent otherwise."""
+
+    def __init__(self, stream=None):
+        self.stream = stream or sys.stderr
+        self.enabled = hasattr(self.stream, "isatty") and self.stream.isatty()
+        self._drawn = False
+
+    def __call__(self, done: int, total: int, elapsed_s: float) -> None:
+        if not self.enabled:
+            return
+        if not hasattr(self, "_start"):
+            self._start = done
+        new = done - self._start
+        left = (total - done) * elapsed_s / new if new > 0 else None
+        bar = "#" * int(round(24 * done / max(total, 1)))
+        eta = f", ~{left:.0f} s left" if left is not None and done < total else ""
+        self.stream.write(f"\rchunks [{bar:<24}] {done}/{total}, {elapsed_s:.1f} s{eta}   ")
+        self.stream.flush()
+        self._drawn = True
+
+    def close(self) -> None:
+        if self._drawn:
+            self.stream.write("\n")
+            self.stream.flush()
+
+
+def _out_dir(study, path: Path, out: str | None) -> Path:
+    if out:
+        d = Path(out).expanduser().resolve()
+    elif study.output.dir:
+        d = (path.parent / study.output.dir).resolve()
+    else:
+        d = path.parent / f"{path.stem}.out"
+    if d.exists() and not d.is_dir():
+        raise UserError(f"{out or d}: not a folder")
+    probe = d
+    while not probe.exists():
+        probe = probe.parent
+    if not os.access(probe, os.W_OK):
+        raise UserError(f"{out or d}: cannot write there")
+    return d
+
+
+def closing_note(res) -> list[str]:
+    """The lines printed after a study: sizes, time, cost against a run, the chosen sensors."""
+    t = res.timings_s
+    ncand = len(res.candidates)
+    lines = [
+        f"{ncand} candidates ({', '.join(f'{s.name} {len(s.candidates)}' for s in res.sets)}), {len(res.scenarios)} scenarios "
+        f"in {len(res.trace_groups)} trace group{'s' if len(res.trace_groups) != 1 else ''}, {res.chunks_total} chunks ({res.chunks_computed} computed, "
+        f"{res.chunks_loaded} resumed) {'in this process' if res.mode == 'inprocess' else f'on {res.mode} dask ({res.workers} workers)'}",
+    ]
+    per = t["trace_in_chunks"] / max(len(res.scenarios), 1)
+    ref = res.reference
+    cost = f"tracing {t['trace_in_chunks']:.2f} s, {per:.3f} s per scenario"
+    if ref:
+        cost += (f" against {ref['wall_s']:.2f} s for a single run of {ref['scenario']!r} ({per / ref['wall_s']:.2f}x per scenario); "
+                 f"recombined vs that run: {ref['sensors_within_4_sigma']}/{ref['sensors']} sensors within 4 sigma")
+    lines.append(f"wall time {t['total']:.1f} s (setup {t['setup']:.1f} s, chunks {t['chunks']:.1f} s); {cost}")
+    pl = res.placement
+    if pl is not None:
+        lines.append(f"placement ({pl.objective}, target {', '.join(pl.zones)}; greedy with lazy evaluation, "
+                     f"{pl.evaluations} evaluations for {pl.candidates} candidates; score with no sensor {pl.baseline:.4f}):")  # fmt: skip
+        pos = {c.sensor.name: c.position for c in res.candidates}
+        for s in pl.steps:
+            sep = "" if s.separable else f"  (not separable from {s.runner_up}: lead {s.lead:.4f} ± {s.lead_se:.4f})"
+            at = "({:.2f}, {:.2f}, {:.2f})".format(*pos[s.sensor])
+            lines.append(f"  k={s.k}  {s.sensor:<16} at {at}  gain {s.gain:.4f} ± {s.gain_se:.4f}  score {s.score:.4f} ± {s.score_se:.4f}{sep}")
+        lines.append("  zone -> sensor: " + ", ".join(f"{z} -> {sn}" for z, sn in pl.assignment.items()))
+    tally: dict[tuple[str, str], list[int]] = {}
+    for (z, _), chk in res.checks.items():
+        for k, v in chk.items():
+            t3 = tally.setdefault((z, k), [0, 0, 0])
+            t3[("pass", "fail", "unsure").index(v)] += 1
+    if tally:
+        lines.append("compliance (pass/fail/unsure over scenarios): " + "; ".join(
+            f"{z} {k} {p}/{f}/{u}" for (z, k), (p, f, u) in tally.items()))  # fmt: skip
+    return lines
+
+
+def main_study(path: str, out: str | None, scheduler: str | None) -> int:
+    from simulator.pipeline import _versions
+    from simulator.study.report import write_outputs
+    from simulator.study.runner import run_study
+    from simulator.study.schema import load_study
+
+    if scheduler is not None and "://" not in scheduler:
+        raise UserError(f"--scheduler: expected an address such as tcp://host:8786, got {scheduler!r}")
+    study, p = load_study(path)
+    out_dir = _out_dir(study, p, out)
+    bar = ChunkProgress()
+    t0 = time.perf_counter()
+    try:
+        res = run_study(study, p, out_dir, scheduler=scheduler, on_chunk=bar, log=lambda m: print(m, file=sys.stderr))
+    except KeyboardInterrupt:
+        bar.close()
+        print(f"probesim: interrupted; finished chunks are kept in {out_dir}: run the same command again to resume", file=sys.stderr)
+        return 130
+    finally:
+        bar.close()
+    for w in res.warnings:
+        print(f"warning: {w}", file=sys.stderr)
+    res.timings_s["total"] = time.perf_counter() - t0
+    files = write_outputs(res, _versions())
+    for line in closing_note(res):
+        print(line)
+    print(f"wrote {', '.join(f.name for f in files)} in {out_dir} ({time.perf_counter() - t0:.1f} s in all)")
+    return 0

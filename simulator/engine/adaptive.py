@@ -1,0 +1,131 @@
+"""Batches until done: the stopping rule and the loop every reading runs.
+
+A *unit* is what one stopping decision covers: a sensor, or a whole probe
+(its pixels all draw the same passes). Each batch draws up to ``want``
+more samples of every active unit. A unit stops when it has ``cap``
+samples or, in adaptive mode, when the half-width of its confidence
+interval is under the target in every channel,
+
+    z·stderr ≤ max(rel_error·|value|, abs_error),
+
+z the two-sided normal quantile of ``confidence`` (0.95 → 1.96). Every
+unit stops at ``time_limit_s``. The next batch is what would reach the
+target if the variance holds (stderr² ∝ 1/n), with 10% to spare, at least
+one block and at most doubling the samples so far.
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Callable
+
+import numpy as np
+
+from simulator.engine.stats import z_for_confidence
+
+__all__ = ["StoppingRule", "run_batches"]
+
+
+class StoppingRule:
+    """The adaptive error target.
+
+    Parameters
+    ----------
+    rel_error : float
+        Relative half-width target.
+    abs_error : float
+        Absolute half-width target (in the reading's units), for readings near 0.
+    confidence : float
+        Two-sided confidence of the interval.
+    """
+
+    def __init__(self, rel_error: float, abs_error: float = 0.0, confidence: float = 0.95):
+        self.rel_error = rel_error
+        self.abs_error = abs_error
+        self.z = z_for_confidence(confidence)  # half-width of the confidence interval, in standard errors
+
+    def check(self, value: np.ndarray, stderr: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(met, target): per unit whether z·stderr ≤ target in every channel,
+        and the target, shape (U, C), for ``value`` and ``stderr`` of shape (U, C)."""
+        target = np.maximum(self.rel_error * np.abs(value), self.abs_error)
+        return np.all(self.z * stderr <= target, axis=1), target
+
+    def next_batch(self, count: np.ndarray, stderr: np.ndarray, target: np.ndarray, block: int) -> np.ndarray:
+        """Samples to draw next per unit: enough to reach the target if the
+        variance holds (×1.1), at least ``block``, at most doubling ``count``."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ratio = np.max((self.z * stderr / np.maximum(target, 1e-300)) ** 2, axis=1)
+        need = np.ceil(count * np.nan_to_num(ratio, nan=2.0, posinf=2.0) * 1.1) - count
+        return np.clip(need, block, np.maximum(count, block)).astype(np.int64)
+
+
+def run_batches(
+    step: Callable[[np.ndarray, np.ndarray, np.ndarray], None],
+    active: np.ndarray,
+    want: np.ndarray,
+    cap: int,
+    *,
+    block: int,
+    rule: StoppingRule | None = None,
+    measure: Callable[[], tuple[np.ndarray, np.ndarray]] | None = None,
+    time_limit_s: float | None = None,
+    t_start: float | None = None,
+    report: Callable[[np.ndarray, np.ndarray, float], None] | None = None,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Draw batches until every unit has stopped.
+
+    Parameters
+    ----------
+    step : callable
+        ``step(ids, first, count)`` draws samples ``[first[i], first[i] +
+        count[i])`` of unit ``ids[i]`` and merges them into the caller's statistics.
+    active : ndarray of bool, shape (U,)
+        Units to read (changed in place: False once stopped).
+    want : ndarray of int, shape (U,)
+        First batch per unit; the rule replaces it after each batch.
+    cap : int
+        Most samples per unit.
+    block : int
+        Smallest batch the rule asks for.
+    rule : StoppingRule, optional
+        Adaptive stopping; None draws ``cap`` samples.
+    measure : callable, optional
+        With a rule: ``measure() -> (value, stderr)``, each shape (U, C),
+        from the caller's statistics after the batch.
+    time_limit_s : float, optional
+        Stop everything once this long has passed since ``t_start``.
+    t_start : float, optional
+        ``time.perf_counter()`` the time limit counts from; default now.
+    report : callable, optional
+        ``report(count, active, elapsed_s)`` after each batch.
+
+    Returns
+    -------
+    count : ndarray of int, shape (U,)
+        Samples drawn per unit.
+    met : ndarray of bool, shape (U,)
+        Whether the rule's target was reached (all False without a rule).
+    """
+    t0 = time.perf_counter() if t_start is None else t_start
+    count = np.zeros(len(active), np.int64)
+    met = np.zeros(len(active), bool)
+    while active.any():
+        ids = np.flatnonzero(active)
+        first = count[ids]
+        n = np.minimum(want[ids], cap - first)
+        step(ids, first, n)
+        count[ids] += n
+        done = count >= cap
+        if rule is not None:
+            value, se = measure()
+            ok, target = rule.check(value, se)
+            met |= ok & active
+            done |= ok
+            want = rule.next_batch(count, se, target, block)
+        active &= ~done
+        elapsed = time.perf_counter() - t0
+        if time_limit_s is not None and elapsed >= time_limit_s:
+            active[:] = False
+        if report is not None:
+            report(count, active, elapsed)
+    return count, met

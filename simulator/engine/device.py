@@ -1,0 +1,181 @@
+"""Warp on one device: import it once, name the device, upload a scene.
+
+Only this package and :mod:`simulator.kernels` import ``warp``, and only
+when a run starts (:func:`warp`).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import sys
+
+import numpy as np
+
+from simulator.errors import UserError
+from simulator.scene.model import Scene, Sensor
+
+__all__ = ["warp", "warp_version", "cuda_available", "resolve_device", "DeviceScene"]
+
+_wp = None
+
+
+@contextlib.contextmanager
+def _stderr_silenced():
+    """Silence native writes to fd 2 (Warp's loader notes that no CUDA driver
+    exists are noise on a CPU machine; real failures still raise)."""
+    sys.stderr.flush()
+    saved = os.dup(2)
+    try:
+        with open(os.devnull, "wb") as null:
+            os.dup2(null.fileno(), 2)
+        yield
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+
+
+def warp():
+    """The ``warp`` module, imported and initialised once, quietly."""
+    global _wp
+    if _wp is None:
+        import warp as wp
+
+        wp.config.quiet = True
+        wp.config.log_level = 30  # warnings and errors only: no banner, no per-module load lines
+        with _stderr_silenced():
+            wp.init()
+        _wp = wp
+    return _wp
+
+
+def warp_version() -> str:
+    """The Warp version in use (for run records)."""
+    return warp().config.version
+
+
+def cuda_available() -> bool:
+    """Whether Warp finds a CUDA device on this machine."""
+    return warp().get_cuda_device_count() > 0
+
+
+def resolve_device(requested: str) -> str:
+    """Warp device name for ``cpu``, ``cuda`` or ``auto`` (CUDA when present)."""
+    wp = warp()
+    has_cuda = wp.get_cuda_device_count() > 0
+    if requested == "auto":
+        return "cuda:0" if has_cuda else "cpu"
+    if requested == "cuda":
+        if not has_cuda:
+            raise UserError("--device cuda: no CUDA device is available on this machine (use cpu or auto)")
+        return "cuda:0"
+    if requested == "cpu":
+        return "cpu"
+    raise UserError(f"--device: unknown device {requested!r} (expected cpu, cuda or auto)")
+
+
+class DeviceScene:
+    """A scene's geometry, lights and sensors as device records.
+
+    Parameters
+    ----------
+    scene : Scene
+    sensors : list of Sensor
+        Sensors read by the estimator kernel (one :class:`SensorRec` each).
+    device : str
+        A Warp device name (see :func:`resolve_device`).
+
+    Attributes
+    ----------
+    rec : SceneRec
+        What every kernel takes; the arrays it points to are kept alive here.
+    sensors : wp.array of SensorRec
+    emissive_light : int
+        Index of the record standing for all emissive triangles, −1 if none.
+    """
+
+    def __init__(self, scene: Scene, sensors: list[Sensor], device: str):
+        wp = warp()
+        from simulator.kernels import estimators as K
+        from simulator.kernels import lights as L
+
+        self.device = device
+        self._n_sensors = len(sensors)
+        self._light_mask = None
+        self._keep: list = []  # device arrays referenced only by pointer from the records
+        with wp.ScopedDevice(device):
+            self.rec = self._upload_scene(wp, K, L, scene, len(sensors))
+            recs = [K.sensor_record(s) for s in sensors]
+            self.sensors = wp.array(recs, dtype=K.SensorRec) if recs else wp.zeros(1, dtype=K.SensorRec)
+
+    def _upload_scene(self, wp, K, L, scene: Scene, n_sensors: int):
+        g = scene.geometry
+        rec = K.SceneRec()
+        # Ray origins are pushed off surfaces by 1e-5 × max(1 m, |p|∞) (see
+        # kernels.estimators.offset_length): 170× float32 resolution, 10 µm at
+        # room scale.
+        rec.eps = 1.0e-5
+        rec.ray_counts = wp.zeros(1, dtype=wp.int32)
+        rec.light_mask = wp.ones(max(1, n_sensors * (len(scene.lights) + 1)), dtype=wp.int32)
+        n_tri = g.n_triangles
+        pts = g.points.astype(np.float32) if n_tri else np.zeros((3, 3), np.float32)
+        tris = g.triangles.astype(np.int32) if n_tri else np.array([[0, 1, 2]], np.int32)
+        points = wp.array(pts, dtype=wp.vec3)
+        tri_ids = wp.array(tris.reshape(-1), dtype=wp.int32)
+        mesh = wp.Mesh(points=points, indices=tri_ids) if n_tri else None
+        rec.mesh = mesh.id if n_tri else wp.uint64(0)
+        rec.has_mesh = 1 if n_tri else 0
+        rec.points = points
+        rec.tris = tri_ids
+
+        def arr(a, dtype):
+            return wp.array(a, dtype=dtype) if len(a) else wp.zeros(1, dtype=dtype)
+
+        albedo = g.albedo.astype(np.float32) if n_tri else np.zeros(1, np.float32)
+        emission = g.emission.astype(np.float32) if n_tri else np.zeros((1, 2), np.float32)
+        two_sided = g.two_sided.astype(np.int32) if n_tri else np.zeros(1, np.int32)
+        rec.albedo = arr(albedo, float)
+        rec.emission = arr(emission, wp.vec2)
+        rec.two_sided = arr(two_sided, wp.int32)
+
+        # Emissive triangles: picked with probability ∝ emitted power
+        # (radiance × area × sides), the best choice when all are visible.
+        emit_ids = np.flatnonzero(np.any(emission > 0, axis=1)) if n_tri else np.zeros(0, np.int64)
+        prob = np.zeros(max(n_tri, 1), np.float64)
+        lights = [L.light_record(l, self._keep) for l in scene.lights]
+        self.emissive_light = -1
+        if len(emit_ids):
+            p = g.points[g.triangles[emit_ids]]
+            area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+            power = area * g.emission[emit_ids, 0] * np.where(g.two_sided[emit_ids], 2.0, 1.0)
+            if power.sum() <= 0:
+                power = area * g.emission[emit_ids, 1]
+            prob[emit_ids] = power / power.sum()
+            cdf = np.cumsum(prob[emit_ids])
+            cdf /= cdf[-1]
+            rec.emit_tris = wp.array(emit_ids.astype(np.int32), dtype=wp.int32)
+            rec.emit_cdf = wp.array(cdf.astype(np.float32), dtype=float)
+            lights.append(L.emissive_record())
+            self.emissive_light = len(lights) - 1
+        else:
+            rec.emit_tris = wp.zeros(0, dtype=wp.int32)
+            rec.emit_cdf = wp.zeros(1, dtype=float)
+        rec.emit_prob = wp.array(prob.astype(np.float32), dtype=float)
+        rec.lights = wp.array(lights, dtype=K.LightRec) if lights else wp.zeros(1, dtype=K.LightRec)
+        rec.n_lights = len(lights)
+        self._keep += [mesh, points, tri_ids, rec.albedo, rec.emission, rec.two_sided, rec.emit_tris, rec.emit_cdf,
+                       rec.emit_prob, rec.lights]  # fmt: skip
+        return rec
+
+    def set_light_mask(self, mask: np.ndarray) -> None:
+        """Lights to skip per sensor at its first vertex: ``mask`` (S, L) over
+        the scene's lights, 0 = wholly behind the sensor (see plan.lights_behind)."""
+        wp = warp()
+        n_l = int(self.rec.n_lights)
+        full = np.ones((self._n_sensors, n_l), np.int32)
+        full[:, : mask.shape[1]] = mask
+        if self._light_mask is not None and np.array_equal(self._light_mask, full):
+            return  # already on the device: a plan run again (adaptive runs, charts) uploads nothing
+        self._light_mask = full
+        with wp.ScopedDevice(self.device):
+            self.rec.light_mask = wp.array(full.reshape(-1) if full.size else np.ones(1, np.int32), dtype=wp.int32)

@@ -1,0 +1,41 @@
+"""One kernel launch spread over CPU worker threads.
+
+Warp's CPU launches release the GIL, so ``threads`` Python threads each
+launching a slice of the kernel threads run in parallel. Every kernel
+thread's result depends only on its global index (``offset + tid``), never
+on how the launch was cut.
+"""
+
+from __future__ import annotations
+
+import threading
+from typing import Callable
+
+import numpy as np
+
+__all__ = ["fan_out"]
+
+
+def fan_out(threads: int, run: Callable[[int, int], None], n: int) -> None:
+    """Run ``run(offset, dim)`` over n kernel threads, cut into at most
+    ``threads`` contiguous slices, one CPU worker each (1 on a GPU: one launch).
+
+    Parameters
+    ----------
+    threads : int
+        CPU workers.
+    run : callable
+        ``run(offset, dim)`` launches kernel threads ``[offset, offset + dim)``.
+    n : int
+        Kernel threads in all.
+    """
+    parts = min(threads, n)
+    if parts <= 1:
+        run(0, n)
+        return
+    cuts = np.linspace(0, n, parts + 1).astype(int)
+    workers = [threading.Thread(target=run, args=(int(a), int(b - a))) for a, b in zip(cuts[:-1], cuts[1:])]
+    for w in workers:
+        w.start()
+    for w in workers:
+        w.join()

@@ -1,0 +1,210 @@
+"""What every light kind shares: the device records, the sample record and
+the declaration a kind file fills in.
+
+A light on the device is one :class:`LightRec`: the common fields (kind,
+position, frame, emission) and a few *shape slots* (width, height, radius,
+length, cone, area, a lat-long map) that each kind reads as it needs. A new
+kind uses these slots; a new slot is added here.
+
+A kind file (``point.py``, ``sphere.py``, ...) writes its ``@wp.func``s with
+the signatures below and declares them in one :class:`LightKernel`; the
+package (:mod:`simulator.kernels.lights`) generates the dispatch from those
+declarations. A hook a kind leaves ``None`` gets the neutral answer: pdf 0
+(a delta light), never hit, nothing escaped, not near, no closed form.
+
+=================  ================================================================  ===========
+hook               signature                                                         default
+=================  ================================================================  ===========
+``sample``         ``(scene, l, p, n, u: vec3) -> LightSample``                      (required)
+``pdf``            ``(scene, l, p, n, wi, t, tri) -> float``: solid-angle pdf        0
+``hit``            ``(l, o, d, t_max) -> float``: distance to the emitting side      −1
+``escaped``        ``(l, d) -> vec2``: radiance along a ray that left the scene      0
+``near``           ``(l, d = p − position, reach) -> bool``: surface within reach    False
+``analytic``       ``(scene, l, p, n) -> vec2``: unoccluded irradiance, closed form  0
+``analytic_patch`` ``(l, c, n, right, up, w, h) -> vec2``: mean over a patch         0
+``upload``         host: ``(rec, light, keep)`` fills the kind's slots               none
+=================  ================================================================  ===========
+"""
+
+from dataclasses import dataclass
+from typing import Any, Callable
+
+import warp as wp
+
+from simulator.scene.model import LightKind
+
+#: length of a ray that leaves the scene, metres
+RAY_INF = wp.constant(1.0e30)
+
+
+@wp.struct
+class LightRec:
+    """One light on the device (see :class:`simulator.scene.model.Light`)."""
+
+    kind: int
+    position: wp.vec3
+    ex: wp.vec3
+    ey: wp.vec3
+    ez: wp.vec3  # rect/disk emit toward −ez; a distant light lies toward +ez
+    emission: wp.vec2  # (radiometric, photometric)
+    width: float
+    height: float
+    radius: float
+    one_minus_cos: float  # distant light: 1 − cos(half-angle); 0 = delta
+    area: float
+    length: float  # cylinder length along ex (its axis)
+    # textured dome: lat-long map in the frame (ex, ey = pole, ez = lat 0, lon 0)
+    has_map: int  # 1: radiance = emission × map[texel]; 0: uniform
+    map_w: int
+    map_h: int
+    map: wp.array(dtype=float)  # map_h × map_w values, row 0 at the pole ey
+    map_marg: wp.array(dtype=float)  # map_h + 1: marginal CDF over rows
+    map_cond: wp.array(dtype=float)  # map_h × (map_w + 1): conditional CDFs over columns
+    # UsdLuxShapingAPI (estimators.shaping_factor): shaped = 1 multiplies emission toward ω by the factor
+    shaped: int
+    shaping: wp.vec4  # (cone half-angle rad, cone softness, focus, focus tint)
+    ies_scale: float  # > 0: × ies_scale·I(θ, φ), I bilinear in map (map_h rows θ 0…180°, map_w columns φ 0…360°)
+
+
+@wp.struct
+class SceneRec:
+    """Geometry, materials and lights on the device."""
+
+    mesh: wp.uint64
+    has_mesh: int
+    points: wp.array(dtype=wp.vec3)
+    tris: wp.array(dtype=wp.int32)  # 3 per triangle
+    albedo: wp.array(dtype=float)
+    emission: wp.array(dtype=wp.vec2)  # front-face radiance per triangle
+    two_sided: wp.array(dtype=wp.int32)
+    emit_tris: wp.array(dtype=wp.int32)  # emissive triangle ids
+    emit_cdf: wp.array(dtype=float)  # inclusive CDF over emit_tris, last = 1
+    emit_prob: wp.array(dtype=float)  # per triangle: probability of being picked (0 if not emissive)
+    lights: wp.array(dtype=LightRec)
+    n_lights: int
+    eps: float  # ray-origin offset relative to max(1 m, |p|∞)
+    ray_counts: wp.array(dtype=wp.int32)  # per kernel thread, when TraceParams.count_rays
+    light_mask: wp.array(dtype=wp.int32)  # (sensors × n_lights): 0 = light culled for that sensor
+
+
+@wp.struct
+class LightSample:
+    wi: wp.vec3  # unit direction from the receiver toward the light
+    dist: float  # shadow-ray length
+    value: wp.vec2  # unshadowed L·cosθ/pdf (W/m², lx)
+    pdf: float  # solid-angle pdf; 0 for delta lights
+    tri: int  # sampled emissive triangle, −1 otherwise
+
+
+@dataclass(frozen=True)
+class LightKernel:
+    """One light kind's device code and upload: ``kind`` is the integer the
+    kernels switch on; ``sample`` … ``analytic_patch`` are ``@wp.func`` hooks
+    (None: the neutral answer, see the module docstring); ``upload(rec,
+    light, keep)`` fills the kind's slots of the :class:`LightRec` from the
+    :class:`~simulator.scene.model.Light` (device arrays the record points to
+    go on the list ``keep``)."""
+
+    kind: LightKind
+    sample: Any
+    pdf: Any = None
+    hit: Any = None
+    escaped: Any = None
+    near: Any = None
+    analytic: Any = None
+    analytic_patch: Any = None
+    upload: Callable | None = None
+
+
+@wp.func
+def empty_sample() -> LightSample:
+    s = LightSample()
+    s.wi = wp.vec3(0.0, 0.0, 1.0)
+    s.dist = 0.0
+    s.value = wp.vec2(0.0, 0.0)
+    s.pdf = 0.0
+    s.tri = -1
+    return s
+
+
+@wp.func
+def tri_vertex(scene: SceneRec, tri: int, k: int) -> wp.vec3:
+    return scene.points[scene.tris[3 * tri + k]]
+
+
+@wp.func
+def tri_emitted(scene: SceneRec, tri: int, wo_dot_ng: float) -> wp.vec2:
+    """Radiance a triangle emits toward a viewer on the side where
+    dot(toward viewer, geometric normal) = ``wo_dot_ng``."""
+    if wo_dot_ng > 0.0 or scene.two_sided[tri] != 0:
+        return scene.emission[tri]
+    return wp.vec2(0.0, 0.0)
+
+
+@wp.func
+def area_sample(l: LightRec, p: wp.vec3, n: wp.vec3, q: wp.vec3, nl: wp.vec3) -> LightSample:
+    """A point q drawn uniformly on the light's area A (pdf 1/A), whose
+    emitting normal there is nl, as a direction sample from p: solid-angle
+    pdf d²/(A·cosθl); nothing when q faces away from p."""
+    s = empty_sample()
+    d = q - p
+    dist = wp.length(d)
+    if dist <= 0.0:
+        return s
+    wi = d / dist
+    cos_l = -wp.dot(wi, nl)
+    if cos_l <= 0.0:
+        return s
+    s.wi = wi
+    s.dist = dist
+    s.pdf = dist * dist / (l.area * cos_l)
+    cos_r = wp.dot(wi, n)
+    if cos_r > 0.0:
+        s.value = l.emission * (cos_r / s.pdf)
+    return s
+
+
+@wp.func
+def area_pdf(l: LightRec, cos_l: float, t: float) -> float:
+    """Solid-angle pdf of :func:`area_sample` for a hit at distance t whose
+    emitting side makes cosine ``cos_l`` with the ray: t²/(A·cosθl), 0 from behind."""
+    return wp.where(cos_l > 0.0, t * t / (l.area * cos_l), 0.0)
+
+
+@wp.func
+def near_box(l: LightRec, d: wp.vec3, reach: float, thickness: float) -> bool:
+    """True if d (from the light's centre) lies within ``reach`` of the
+    light's bounding box: half-extent the largest of its shape slots across
+    ex and ey, ``thickness`` along ez (cheap and sufficient)."""
+    ext = wp.max(wp.max(0.5 * l.width, 0.5 * l.height), wp.max(l.radius, 0.5 * l.length))
+    if wp.abs(wp.dot(d, l.ex)) <= ext + reach and wp.abs(wp.dot(d, l.ey)) <= ext + reach:
+        if wp.abs(wp.dot(d, l.ez)) <= thickness + reach:
+            return True
+    return False
+
+
+@wp.func
+def near_planar(l: LightRec, d: wp.vec3, reach: float) -> bool:
+    """``near`` of a flat light (rect, disk): :func:`near_box` of no thickness."""
+    return near_box(l, d, reach, 0.0)
+
+
+@wp.func
+def behind(l: LightRec, p: wp.vec3) -> bool:
+    """Whether p lies on the dark side of a one-sided planar light (or in its plane)."""
+    return wp.dot(p - l.position, l.ez) >= 0.0
+
+
+@wp.func
+def plane_hit(l: LightRec, o: wp.vec3, d: wp.vec3, t_max: float) -> wp.vec3:
+    """Where the ray (o, d) crosses the plane of a one-sided planar light
+    from its emitting side: (t, x, y) with (x, y) in the light's frame, or
+    t = −1 when it does not before ``t_max``."""
+    denom = wp.dot(d, l.ez)
+    if denom <= 0.0:
+        return wp.vec3(-1.0, 0.0, 0.0)  # seen from behind: one-sided
+    t = wp.dot(l.position - o, l.ez) / denom
+    if t <= 0.0 or t >= t_max:
+        return wp.vec3(-1.0, 0.0, 0.0)
+    q = o + t * d - l.position
+    return wp.vec3(t, wp.dot(q, l.ex), wp.dot(q, l.ey))

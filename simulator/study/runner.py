@@ -1,0 +1,232 @@
+"""A study end to end: stage → candidates → scenarios → chunks (resumed, distributed) → figures → placement → outputs."""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+from simulator.errors import UserError
+from simulator.study.candidates import build_candidates
+from simulator.study.chunks import ChunkStore, StudyInterrupted, chunk_scene, make_chunks, readings_of
+from simulator.study.distributed import choose_mode, run_chunks
+from simulator.study.groups import derive_seed, group_scene
+from simulator.study.objectives import compliance, zone_figures
+from simulator.study.placement import place_sensors
+from simulator.study.scenarios import expand_scenarios, resolve_groups, trace_groups_of
+from simulator.study.schema import Study
+
+__all__ = ["StudyResult", "run_study", "zone_members"]
+
+
+@dataclass
+class StudyResult:
+    study: Study
+    path: Path
+    out_dir: Path
+    candidates: list  #: Candidate, study order
+    sets: list  #: CandidateSet
+    scenarios: list  #: Scenario
+    trace_groups: list
+    mean: np.ndarray  #: (J, S, 2) readings per scenario and sensor
+    stderr: np.ndarray  #: (J, S, 2)
+    zones: dict  #: zone name -> indices into candidates
+    figures: dict  #: (zone, scenario) -> ZoneFigures
+    checks: dict  #: (zone, scenario) -> {target: pass|fail|unsure}
+    placement: object | None
+    chunks_total: int = 0
+    chunks_computed: int = 0
+    chunks_loaded: int = 0
+    mode: str = "inprocess"
+    workers: int = 1
+    timings_s: dict = field(default_factory=dict)
+    chunk_wall_s: dict = field(default_factory=dict)
+    chunk_trace_s: dict = field(default_factory=dict)  #: (trace key, block) -> seconds tracing
+    reference: dict | None = None
+    warnings: list = field(default_factory=list)
+    files: list = field(default_factory=list)
+
+
+def zone_members(study: Study, sets, candidates, label: str = "") -> dict[str, np.ndarray]:
+    """Candidate indices per zone (its set, inside its region)."""
+    index = {c.sensor.name: i for i, c in enumerate(candidates)}
+    out = {}
+    for k, z in enumerate(study.zone):
+        cs = next(s for s in sets if s.name == z.candidates)
+        ids = []
+        for c in cs.candidates:
+            x, y = c.position[0], c.position[1]
+            if z.region is None or (z.region[0] <= x <= z.region[2] and z.region[1] <= y <= z.region[3]):
+                ids.append(index[c.sensor.name])
+        if not ids:
+            raise UserError(f"{label}: zone[{k}].region: no {z.candidates!r} candidate lies inside it")
+        out[z.name] = np.asarray(ids)
+    return out
+
+
+def _sim_dict(study: Study) -> dict:
+    d = study.simulation.model_dump()
+    d.pop("threads")
+    d["seed"] = 0  # replaced per group
+    return d
+
+
+def _reference_run(study: Study, scene, candidates, groups, scenario, seed: int, threads: int) -> dict:
+    """One ordinary run of ``scenario`` (all its lights at their levels in one trace) for the cost and agreement check."""
+    from simulator.config.loader import SimulationConfig
+    from simulator.engine.driver import Engine
+    from simulator.pipeline import run_plan
+    from simulator.plan.planner import make_plan
+
+    lights = []
+    for l in scene.lights:
+        g = next((g for g, ls in groups.items() if l.name in ls), None)
+        lv = scenario.levels.get(g, 0.0) if g else 0.0
+        if lv > 0:
+            lights.append(replace(l, emission=(l.emission[0] * lv, l.emission[1] * lv)))
+    sc = replace(group_scene(scene, []), lights=lights)
+    sensors = [c.sensor for c in candidates]
+    sim = SimulationConfig(**{**_sim_dict(study), "seed": seed})
+    t0 = time.perf_counter()
+    eng = Engine(sc, sensors, device=sim.device, threads=threads)
+    res = run_plan(eng, make_plan(sc, sensors, sim.method, sim.component), sim)
+    return {"scenario": scenario.name, "wall_s": time.perf_counter() - t0, "mean": res.mean, "stderr": res.stderr}
+
+
+def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None = None, log: Callable[[str], None] = print,
+              on_chunk: Callable[[int, int, float], None] | None = None, stop_after: int | None = None,
+              mode: str | None = None, workers: int | None = None, reference_run: bool = True) -> StudyResult:  # fmt: skip
+    """Run (or resume) a validated study and return its numbers (outputs are written by :mod:`simulator.study.report`).
+
+    Parameters
+    ----------
+    on_chunk : callable, optional
+        ``on_chunk(done, total, elapsed_s)`` after each chunk, for a progress display.
+    stop_after : int, optional
+        Test hook: raise :class:`StudyInterrupted` after this many chunks were computed and stored.
+    mode, workers : optional
+        Override ``[compute] mode`` and ``workers``.
+    reference_run : bool
+        Also trace one scenario as an ordinary run, all its lights in one
+        trace (the first trace group's scenario with the most light groups
+        lit); its time and its agreement with the recombination go to the
+        closing note and the JSON record, not the CSVs.
+    """
+    label = str(path)
+    t0 = time.perf_counter()
+    stage = (path.parent / study.stage).resolve() if not Path(study.stage).is_absolute() else Path(study.stage)
+    from simulator.scene.usd import load_stage
+
+    base = load_stage(stage, light_units=study.light_units, radiometric_spectrum="E")
+    warnings = list(base.warnings)
+    sets = build_candidates(base, study.candidates, label)
+    candidates = [c for s in sets for c in s.candidates]
+    sensors = [c.sensor for c in candidates]
+    groups, unassigned = resolve_groups(base, study.group, label)
+    if unassigned:
+        warnings.append(f"lights in no [[group]] stay off in every scenario: {', '.join(unassigned)}")
+    if (base.geometry.emission > 0).any():
+        warnings.append("emissive surfaces are in no light group and are left out of every scenario")
+    scenarios = expand_scenarios(study.scenario, list(groups), label)
+    tgs = trace_groups_of(scenarios, base, groups, label)
+    for tg in tgs:  # variant names are checked by the reader: fail before any chunk runs
+        if tg.variants:
+            try:
+                load_stage(stage, light_units=study.light_units, radiometric_spectrum="E", variants=tg.variants)
+            except UserError as exc:
+                raise UserError(f"{label}: scenario {tg.scenarios[0].name!r}: variants: {exc}") from None
+    zones = zone_members(study, sets, candidates, label)
+    t_setup = time.perf_counter()
+
+    specs = make_chunks(tgs, sensors, groups, stage, study.light_units, _sim_dict(study), study.seed, study.compute.sensor_block)
+    store = ChunkStore(out_dir)
+    results: dict[str, dict] = {}
+    for s in specs:
+        r = store.load(s.id)
+        if r is not None:
+            results[s.id] = r
+    loaded = len(results)
+    todo = [s for s in specs if s.id not in results]
+    if study.simulation.threads:
+        todo = [replace(s, threads=study.simulation.threads) for s in todo]
+    sched = scheduler or study.compute.scheduler
+    used_mode, n_workers = choose_mode(mode or study.compute.mode, sched, len(todo), workers if workers is not None else study.compute.workers)
+    done = loaded
+    computed = 0
+    t_chunks = time.perf_counter()
+    if on_chunk:
+        on_chunk(done, len(specs), 0.0)
+    for res in run_chunks(todo, used_mode, n_workers, sched, study.compute.retries, log=log):
+        store.save(res)
+        results[res["id"]] = res
+        done += 1
+        computed += 1
+        if on_chunk:
+            on_chunk(done, len(specs), time.perf_counter() - t_chunks)
+        if stop_after is not None and computed >= stop_after:
+            raise StudyInterrupted(f"stopped after {computed} chunks")
+    t_traced = time.perf_counter()
+
+    # recombine: scenario j reads sensor s from the chunk of its trace group and block
+    n_j, n_s = len(scenarios), len(sensors)
+    mean = np.zeros((n_j, n_s, 2))
+    stderr = np.zeros((n_j, n_s, 2))
+    by_tg: dict[str, list] = {}
+    for s in specs:
+        by_tg.setdefault(s.trace_key, []).append(s)
+    for j, sc in enumerate(scenarios):
+        for s in by_tg.get(sc.trace_key, []):
+            gr = readings_of(results[s.id])
+            m, e = gr.combine(sc.levels)
+            ids = np.asarray(s.sensor_ids)
+            mean[j, ids], stderr[j, ids] = m, e
+
+    ch = 1 if study.light_units == "photometric" else 0
+    figures, checks = {}, {}
+    for z in study.zone:
+        ids = zones[z.name]
+        for j, sc in enumerate(scenarios):
+            f = zone_figures(mean[j, ids, ch], stderr[j, ids, ch])
+            figures[(z.name, sc.name)] = f
+            checks[(z.name, sc.name)] = compliance(f, dict(z.targets))
+
+    placement = None
+    if study.placement is not None:
+        pl = study.placement
+        pool = [i for i, c in enumerate(candidates) if c.set_name in pl.candidates]
+        znames = [z.name for z in study.zone] if pl.target == "each_zone" else [pl.target]
+        t = np.array([[figures[(z, sc.name)].mean for sc in scenarios] for z in znames])
+        t_se = np.array([[figures[(z, sc.name)].mean_se for sc in scenarios] for z in znames])
+        r = mean[:, pool, ch].T
+        r_se = stderr[:, pool, ch].T
+        placement = place_sensors([candidates[i].sensor.name for i in pool], r, r_se, t, t_se, znames,
+                                  min(pl.k, len(pool)), pl.objective, pl.replicates, derive_seed(study.seed, "placement"))  # fmt: skip
+    t_analysis = time.perf_counter()
+
+    reference = None
+    if reference_run and scenarios:
+        # the first trace group's scenario with the most groups lit: what one recombination replaces
+        first = tgs[0].scenarios
+        sc0 = max(first, key=lambda sc: (sum(v > 0 for v in sc.levels.values()), -first.index(sc)))
+        j0 = scenarios.index(sc0)
+        spec0 = next(s for s in specs if s.trace_key == sc0.trace_key)
+        ref = _reference_run(study, chunk_scene(spec0), candidates, groups, sc0, derive_seed(study.seed, "reference"), study.simulation.threads)
+        sig = np.sqrt(ref["stderr"][:, ch] ** 2 + stderr[j0, :, ch] ** 2)
+        dev = np.abs(ref["mean"][:, ch] - mean[j0, :, ch])
+        ok = dev <= 4 * sig + 1e-9 * np.abs(ref["mean"][:, ch])
+        reference = {"scenario": sc0.name, "wall_s": ref["wall_s"], "sensors_within_4_sigma": int(ok.sum()), "sensors": n_s,
+                     "largest_deviation_sigma": float(np.max(np.where(sig > 0, dev / np.where(sig > 0, sig, 1), 0.0)))}  # fmt: skip
+    t_end = time.perf_counter()
+    trace_s = sum(float(np.sum(results[s.id]["trace_s"])) for s in specs)
+    return StudyResult(
+        study=study, path=path, out_dir=out_dir, candidates=candidates, sets=sets, scenarios=scenarios, trace_groups=tgs,
+        mean=mean, stderr=stderr, zones=zones, figures=figures, checks=checks, placement=placement, chunks_total=len(specs),
+        chunks_computed=computed, chunks_loaded=loaded, mode=used_mode, workers=n_workers,
+        timings_s={"setup": t_setup - t0, "chunks": t_traced - t_chunks, "trace_in_chunks": trace_s,
+                   "analysis": t_analysis - t_traced, "reference_run": t_end - t_analysis, "total": t_end - t0},
+        chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings,
+        chunk_trace_s={(s.trace_key, s.block): float(np.sum(results[s.id]["trace_s"])) for s in specs},
+    )  # fmt: skip

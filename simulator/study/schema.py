@@ -1,0 +1,391 @@
+"""The study file: a TOML placement study read into a validated :class:`Study`.
+
+Checked here, before any stage is read: unknown keys, wrong types and values
+out of range are one-line :class:`~simulator.errors.UserError` messages that
+name the file and the key, in the style of ``probesim run``, e.g.
+``office_study.toml: scenario[2].levels.sky: Input should be greater than or equal to 0``.
+Cross-references (a zone naming a candidate set, a scenario naming a group)
+are checked here too; what needs the stage (prim paths, light patterns,
+variant names) is checked when the stage is read (see
+:mod:`simulator.study.scenarios` and :mod:`simulator.study.candidates`).
+
+Schema
+------
+::
+
+    stage = "../stages/office.usda"    # required
+    light_units = "photometric"        # or "radiometric"
+    seed = 1                           # study seed: chunk seeds derive from it
+
+    [simulation]                       # as a run config's, minus time_limit_s
+    samples = 256                      # (a wall-clock stop is not reproducible)
+    rel_error = 0.05
+    max_samples = 8192
+
+    [compute]
+    mode = "auto"                      # auto | inprocess | local
+    workers = 0                        # LocalCluster workers; 0 = one per core
+    scheduler = "tcp://host:8786"      # a running dask scheduler (optional)
+    retries = 2                        # re-runs of a failed chunk
+    sensor_block = 64                  # sensors per chunk
+
+    [[candidates]]                     # a grid on prims ...
+    name = "workplane"
+    kind = "irradiance"                # irradiance (cosine) | photosensor (cone)
+    on = ["/Office/Room/Floor"]        # flat prims; the grid lies on their plane
+    height_m = 0.8                     # along each prim's front normal
+    spacing_m = "en12464"              # or a number, metres
+    wall_band_m = 0.5                  # band along the prim's edges left out
+    drop_inside = ["/Office/Furniture/*"]  # points inside these prims' boxes dropped
+
+    [[candidates]]                     # ... or an explicit list
+    name = "manual"
+    kind = "photosensor"
+    half_angle_deg = 30                # photosensor cone
+    points = [[1.5, 2.0, 2.98]]
+    normal = [0, 0, -1]
+
+    [[group]]                          # a light group: paths or fnmatch patterns
+    name = "window_row"
+    lights = ["/Office/Lights/WindowRow/*"]
+
+    [[scenario]]                       # levels: group -> dimming (lists: a product)
+    name = "evening"
+    levels = { window_row = [0.5, 1.0], corridor_row = 1.0 }
+    sun = { azimuth_deg = 250, elevation_deg = 30 }   # or latitude_deg,
+                                       # longitude_deg, time (ISO 8601 with offset)
+    variants = { reflectance = "light" }
+
+    [[zone]]
+    name = "window_zone"
+    candidates = "workplane"
+    region = [0, 0, 3, 4]              # x0, y0, x1, y1 in metres (optional)
+    targets = { mean = 500, u0 = 0.6 } # mean, min, max (reading units), u0, min_max
+
+    [placement]
+    k = 2
+    candidates = ["ceiling"]           # candidate sets to choose from
+    target = "each_zone"               # or one zone's name
+    objective = "correlation"          # correlation | max_rel_error | p95_rel_error
+    replicates = 200                   # parametric bootstrap for score errors
+
+    [output]
+    dir = "../out/office_study"        # default: "<study stem>.out/" beside the file
+"""
+
+from __future__ import annotations
+
+import difflib
+import os
+import tomllib
+from pathlib import Path
+from typing import Annotated, Literal, Union
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
+
+from simulator.errors import UserError
+
+__all__ = ["Study", "load_study", "CandidateSpec", "GroupSpec", "ScenarioSpec", "ZoneSpec", "PlacementSpec", "SunSpec"]
+
+_SEED_LIMIT = 2**31
+Level = Annotated[float, Field(ge=0.0, le=1e6, allow_inf_nan=False)]
+Vec3 = tuple[float, float, float]
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True, strict=False)
+
+
+class SimulationSpec(_Model):
+    """Trace settings; as a run config's ``[simulation]`` without ``seed``
+    (the study's seed drives per-chunk seeds) and ``time_limit_s`` (a
+    wall-clock stop would make results depend on the machine)."""
+
+    samples: int = Field(256, ge=1)
+    method: Literal["auto", "light", "bsdf", "mis", "path"] = "auto"
+    device: Literal["cpu", "cuda", "auto"] = "cpu"
+    rel_error: float | None = Field(None, gt=0.0, lt=1.0)
+    abs_error: float = Field(0.0, ge=0.0)
+    max_samples: int | None = Field(None, ge=1)
+    max_depth: int = Field(-1, ge=-1)
+    threads: int = Field(0, ge=0)
+    component: Literal["total", "direct", "indirect"] = "total"
+    confidence: float = Field(0.95, gt=0.5, lt=1.0)
+
+
+class ComputeSpec(_Model):
+    mode: Literal["auto", "inprocess", "local"] = "auto"
+    workers: int = Field(0, ge=0)
+    scheduler: str | None = None
+    retries: int = Field(2, ge=0, le=20)
+    sensor_block: int = Field(64, ge=1)
+
+    @field_validator("scheduler")
+    @classmethod
+    def _address(cls, v):
+        if v is not None and "://" not in v:
+            raise ValueError(f"expected an address such as tcp://host:8786, got {v!r}")
+        return v
+
+
+class CandidateSpec(_Model):
+    name: str = Field(min_length=1)
+    kind: Literal["irradiance", "photosensor"] = "irradiance"
+    half_angle_deg: float = Field(30.0, gt=0.0, lt=90.0)
+    on: list[str] | None = None
+    height_m: float = 0.0
+    spacing_m: Union[float, str] = "en12464"
+    wall_band_m: float = Field(0.5, ge=0.0)
+    drop_inside: list[str] = []
+    points: list[Vec3] | None = None
+    normal: Vec3 | None = None
+
+    @field_validator("spacing_m")
+    @classmethod
+    def _spacing(cls, v):
+        if isinstance(v, str) and v != "en12464":
+            raise ValueError(f"expected a spacing in metres or \"en12464\", got {v!r}")
+        if not isinstance(v, str) and not v > 0.0:
+            raise ValueError(f"must be > 0, got {v:g}")
+        return v
+
+    @model_validator(mode="after")
+    def _one_source(self):
+        if (self.on is None) == (self.points is None):
+            raise ValueError("give either 'on' (prims to grid) or 'points' (an explicit list), not both or neither")
+        if self.points is not None:
+            if not self.points:
+                raise ValueError("points: empty list")
+            if self.normal is None:
+                raise ValueError("points need 'normal' (the direction the sensors face)")
+            if sum(c * c for c in self.normal) == 0.0:
+                raise ValueError("normal: zero-length vector")
+        else:
+            if not self.on:
+                raise ValueError("on: empty list")
+            if self.normal is not None:
+                raise ValueError("normal is for explicit points; a grid's sensors face its prim's front normal")
+        return self
+
+
+class GroupSpec(_Model):
+    name: str = Field(min_length=1)
+    lights: list[str] = Field(min_length=1)
+
+
+class SunSpec(_Model):
+    azimuth_deg: float | None = Field(None, ge=-360.0, le=360.0)
+    elevation_deg: float | None = Field(None, ge=-90.0, le=90.0)
+    latitude_deg: float | None = Field(None, ge=-90.0, le=90.0)
+    longitude_deg: float | None = Field(None, ge=-180.0, le=180.0)
+    time: str | None = None
+
+    @model_validator(mode="after")
+    def _one_way(self):
+        angles = self.azimuth_deg is not None or self.elevation_deg is not None
+        place = any(v is not None for v in (self.latitude_deg, self.longitude_deg, self.time))
+        if angles == place:
+            raise ValueError("give azimuth_deg and elevation_deg, or latitude_deg, longitude_deg and time")
+        if angles and (self.azimuth_deg is None or self.elevation_deg is None):
+            raise ValueError("give both azimuth_deg and elevation_deg")
+        if place and None in (self.latitude_deg, self.longitude_deg, self.time):
+            raise ValueError("give latitude_deg, longitude_deg and time together")
+        return self
+
+
+class ScenarioSpec(_Model):
+    name: str = Field(min_length=1)
+    levels: dict[str, Union[Level, list[Level]]]
+    sun: SunSpec | None = None
+    variants: dict[str, str] = {}
+
+    @field_validator("levels")
+    @classmethod
+    def _non_empty(cls, v):
+        if not v:
+            raise ValueError("no group is named: give at least one group's level")
+        for g, lv in v.items():
+            if isinstance(lv, list) and not lv:
+                raise ValueError(f"{g}: empty list of levels")
+        return v
+
+
+class ZoneSpec(_Model):
+    name: str = Field(min_length=1)
+    candidates: str
+    region: tuple[float, float, float, float] | None = None
+    targets: dict[Literal["mean", "min", "max", "u0", "min_max"], float] = {}
+
+    @field_validator("region")
+    @classmethod
+    def _box(cls, v):
+        if v is not None and not (v[0] < v[2] and v[1] < v[3]):
+            raise ValueError("expected [x0, y0, x1, y1] with x0 < x1 and y0 < y1")
+        return v
+
+
+class PlacementSpec(_Model):
+    k: int = Field(1, ge=1, le=64)
+    candidates: list[str] = Field(min_length=1)
+    target: str = "each_zone"
+    objective: Literal["correlation", "max_rel_error", "p95_rel_error"] = "correlation"
+    replicates: int = Field(200, ge=20, le=10000)
+
+
+class OutputSpec(_Model):
+    dir: str | None = None
+
+
+class Study(_Model):
+    """A whole study file; see the module docstring for the schema."""
+
+    stage: str
+    light_units: Literal["photometric", "radiometric"] = "photometric"
+    seed: int = Field(1, ge=0, lt=_SEED_LIMIT)
+    simulation: SimulationSpec = SimulationSpec()
+    compute: ComputeSpec = ComputeSpec()
+    candidates: list[CandidateSpec] = Field(min_length=1)
+    group: list[GroupSpec] = Field(min_length=1)
+    scenario: list[ScenarioSpec] = Field(min_length=1)
+    zone: list[ZoneSpec] = []
+    placement: PlacementSpec | None = None
+    output: OutputSpec = OutputSpec()
+
+    @model_validator(mode="after")
+    def _references(self):
+        def unique(items, what):
+            seen = set()
+            for i, it in enumerate(items):
+                if it.name in seen:
+                    raise _RefError(f"{what}[{i}].name", f"duplicate name {it.name!r}")
+                seen.add(it.name)
+            return seen
+
+        cands = unique(self.candidates, "candidates")
+        groups = unique(self.group, "group")
+        unique(self.scenario, "scenario")
+        zones = unique(self.zone, "zone")
+        for i, sc in enumerate(self.scenario):
+            for g in sc.levels:
+                if g not in groups:
+                    raise _RefError(f"scenario[{i}].levels.{g}", f"no [[group]] of that name{_hint(g, groups)}")
+        for i, z in enumerate(self.zone):
+            if z.candidates not in cands:
+                raise _RefError(f"zone[{i}].candidates", f"no [[candidates]] named {z.candidates!r}{_hint(z.candidates, cands)}")
+        if self.placement is not None:
+            for j, c in enumerate(self.placement.candidates):
+                if c not in cands:
+                    raise _RefError(f"placement.candidates[{j}]", f"no [[candidates]] named {c!r}{_hint(c, cands)}")
+            t = self.placement.target
+            if t != "each_zone" and t not in zones:
+                raise _RefError("placement.target", f"expected 'each_zone' or a zone name, got {t!r}{_hint(t, zones)}")
+            if not self.zone:
+                raise _RefError("placement", "needs at least one [[zone]] to predict")
+        return self
+
+
+class _RefError(ValueError):
+    """A cross-reference problem, raised with its own key path."""
+
+    def __init__(self, key: str, message: str):
+        super().__init__(message)
+        self.key = key
+
+
+def _hint(name: str, known) -> str:
+    m = difflib.get_close_matches(name, sorted(known), n=1)
+    return f" (did you mean {m[0]!r}?)" if m else ""
+
+
+def _key_path(loc: tuple) -> str:
+    out = ""
+    for part in loc:
+        if isinstance(part, int):
+            out += f"[{part}]"
+        elif str(part).startswith(("constrained-", "function-", "list[", "literal[", "tuple[", "float", "int", "str")):
+            continue  # pydantic's union-branch labels are not keys
+        else:
+            out += f".{part}" if out else str(part)
+    return out
+
+
+def _message(err: dict) -> str:
+    msg = err["msg"]
+    for prefix in ("Value error, ", "Assertion failed, "):
+        if msg.startswith(prefix):
+            msg = msg[len(prefix):]
+    if err["type"] == "extra_forbidden":
+        return "unknown key"
+    if err["type"] == "missing":
+        return "required key is missing"
+    return " ".join(msg.split())
+
+
+def load_study(path: str | os.PathLike) -> tuple[Study, Path]:
+    """Read and validate a study file.
+
+    Returns
+    -------
+    (Study, Path)
+        The model and the file's absolute path (relative paths in it are
+        relative to its folder).
+
+    Raises
+    ------
+    UserError
+        ``"<file>: <key path>: <what is wrong>"`` for the first problem.
+    """
+    label = os.fspath(path)
+    p = Path(label).expanduser().resolve()
+    try:
+        with open(p, "rb") as fh:
+            raw = tomllib.load(fh)
+    except FileNotFoundError:
+        raise UserError(f"{label}: study file not found") from None
+    except IsADirectoryError:
+        raise UserError(f"{label}: is a directory, not a study file") from None
+    except OSError as exc:
+        raise UserError(f"{label}: cannot read study file: {exc.strerror or exc}") from None
+    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+        raise UserError(f"{label}: invalid TOML: {exc}") from None
+    try:
+        study = Study.model_validate(raw)
+    except ValidationError as exc:
+        err = exc.errors()[0]
+        ctx_err = (err.get("ctx") or {}).get("error")
+        if isinstance(ctx_err, _RefError):
+            raise UserError(f"{label}: {ctx_err.key}: {ctx_err}") from None
+        key = _key_path(err["loc"])
+        if err["type"] == "extra_forbidden" and err["loc"]:
+            hint = _allowed_hint(err["loc"])
+            raise UserError(f"{label}: {key}: unknown key{hint}") from None
+        raise UserError(f"{label}: {key + ': ' if key else ''}{_message(err)}") from None
+    stage = (p.parent / study.stage).resolve() if not Path(study.stage).is_absolute() else Path(study.stage)
+    if not stage.is_file():
+        raise UserError(f"{label}: stage: stage file not found: {stage}")
+    return study, p
+
+
+def _allowed_hint(loc: tuple) -> str:
+    """``(did you mean 'x'?)`` for an unknown key, from the model at that place."""
+    model: type[BaseModel] = Study
+    for part in loc[:-1]:
+        if isinstance(part, int):
+            continue
+        field = model.model_fields.get(part)
+        if field is None:
+            return ""
+        ann = field.annotation
+        inner = getattr(ann, "__args__", (ann,))
+        nxt = next((a for a in inner if isinstance(a, type) and issubclass(a, BaseModel)), None)
+        if nxt is None:
+            inner2 = [getattr(a, "__args__", ()) for a in inner]
+            nxt = next((b for args in inner2 for b in args if isinstance(b, type) and issubclass(b, BaseModel)), None)
+        if nxt is None:
+            return ""
+        model = nxt
+    name = str(loc[-1])
+    allowed = list(model.model_fields)
+    m = difflib.get_close_matches(name, allowed, n=1)
+    did = f"did you mean {m[0]!r}? " if m else ""
+    return f" ({did}expected one of: {', '.join(allowed)})"
