@@ -81,28 +81,50 @@ def test_closed_form_when_nothing_blocks_and_exact(tmp_path):
 
 def test_occluder_between_refuses_the_closed_form(tmp_path):
     """The twin: a black 0.4 m square at z = 1 between sensor and light. The
-    closed form would ignore it, so the plan samples the light instead, and
-    the reading falls below the unoccluded value."""
+    unoccluded closed form would ignore it, so the plan reads the lamp's
+    visible part instead (``exact``: a RectLight and one blocker), and the
+    reading falls below the unoccluded value with no samples; light
+    sampling of the same stage agrees within 4σ."""
     _, scene0, sensors0 = _setup(tmp_path, _light())
     free = Engine(scene0, sensors0).run("analytic", samples=1, seed=1).mean[0, 1]
     cfg, scene, sensors = _setup(tmp_path, _light() + _quad("Blocker", 1.0, 0.2, 0.0))
     plan = make_plan(scene, sensors)
     sp = plan.sensors[0]
-    assert sp.method == "light" and "Blocker may block" in sp.reason and sp.geometry == "black occluders"
+    assert sp.method == "exact" and "Blocker may block" in sp.reason and sp.geometry == "black occluders"
     res = run_plan(Engine(scene, sensors), plan, cfg.simulation)
-    assert res.mean[0, 1] + 4 * res.stderr[0, 1] < free
+    assert res.mean[0, 1] < free and res.stderr[0, 1] == 0.0 and res.samples[0] == 0
+    mc = Engine(scene, sensors).run("light", samples=1 << 14, seed=3)
+    assert abs(mc.mean[0, 1] - res.mean[0, 1]) <= 4 * mc.stderr[0, 1] + 1e-6 * free
+
+
+def test_exact_rule_needs_rect_lights(tmp_path):
+    """No-fire twin of the ``exact`` rule: the same blocker under a SphereLight
+    (no polygon to clip) is read by light sampling."""
+    sphere = """
+def SphereLight "Bulb"
+{
+    float inputs:intensity = 1000
+    float inputs:radius = 0.2
+    double3 xformOp:translate = (0, 0, 2)
+    uniform token[] xformOpOrder = ["xformOp:translate"]
+}
+"""
+    _, scene, sensors = _setup(tmp_path, sphere + _quad("Blocker", 1.0, 0.2, 0.0))
+    sp = make_plan(scene, sensors).sensors[0]
+    assert sp.method == "light" and "Blocker may block" in sp.reason
 
 
 def test_direct_only_where_nothing_seen_reflects(tmp_path):
     """A black blocker between lamp and sensor casts a shadow but reflects
-    nothing: direct light is the whole reading, so no bounces (`light`). A
+    nothing: direct light is the whole reading, so no bounces (`exact`, the
+lamp being a RectLight). A
     black ceiling wholly behind a downward-facing lamp can neither block nor
     light anything: that stage keeps the closed form. The grey twin of the
     blocker is a reflecting surface the sensor sees; the planner does not try
     to prove that no light reaches its underside (none does here), so it
     conservatively follows paths, which then find that out."""
     _, scene, sensors = _setup(tmp_path, _light() + _quad("Blocker", 1.0, 0.2, 0.0) + _quad("Ceiling", 3.0, 5.0, 0.0))
-    assert make_plan(scene, sensors).sensors[0].method == "light"
+    assert make_plan(scene, sensors).sensors[0].method == "exact"
     _, scene, sensors = _setup(tmp_path, _light() + _quad("Ceiling", 3.0, 5.0, 0.0))
     assert make_plan(scene, sensors).sensors[0].method == "analytic"
     _, scene, sensors = _setup(tmp_path, _light() + _quad("Blocker", 1.0, 0.2, 0.5))
@@ -142,7 +164,7 @@ def test_auto_never_picks_a_blind_or_biased_method():
         scene = load_scene(cfg)
         sensors = [s for s in collect_sensors(cfg, scene) if s.kind.name != "PROBE"]
         for sp in make_plan(scene, sensors, "auto", cfg.simulation.component).sensors:
-            assert sp.method in ("analytic", "light", "mis", "path"), (path.name, sp)
+            assert sp.method in ("analytic", "exact", "light", "mis", "path"), (path.name, sp)
             if sp.method != "path" and cfg.simulation.component != "direct":
                 assert sp.geometry != "reflecting surfaces", (path.name, sp)
 
@@ -157,11 +179,13 @@ def test_one_spectral_channel_for_grey_scenes():
 def test_mis_for_a_large_source_light_for_a_small_one(tmp_path):
     """Direct light from a sky covering the whole hemisphere (2π sr) behind a
     black blocker: the plan adds cosine-weighted directions (`mis`). The twin
-    under a 1 m² lamp 2 m away (0.25 sr) keeps plain light sampling, whose
-    single shadow ray per sample is the cheaper way there."""
+    under a 1 m² sphere light 2 m away (0.25 sr) keeps plain light sampling,
+    whose single shadow ray per sample is the cheaper way there (a RectLight
+    there would be read ``exact``)."""
     dome = 'def DomeLight "Sky"\n{\n    float inputs:intensity = 1\n}\n'
     _, scene, sensors = _setup(tmp_path, dome + _quad("Blocker", 1.0, 0.2, 0.0))
     sp = make_plan(scene, sensors).sensors[0]
     assert sp.method == "mis" and "6.3 sr" in sp.reason
-    _, scene, sensors = _setup(tmp_path, _light() + _quad("Blocker", 1.0, 0.2, 0.0))
+    bulb = 'def SphereLight "Bulb"\n{\n    float inputs:intensity = 1000\n    float inputs:radius = 0.564\n    double3 xformOp:translate = (0, 0, 2)\n    uniform token[] xformOpOrder = ["xformOp:translate"]\n}\n'
+    _, scene, sensors = _setup(tmp_path, bulb + _quad("Blocker", 1.0, 0.2, 0.0))
     assert make_plan(scene, sensors).sensors[0].method == "light"

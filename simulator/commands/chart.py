@@ -254,11 +254,13 @@ def _skip_reason(method: str, scene, sensors, component: str) -> str:
     from simulator.engine.driver import METHOD_FLAGS
     from simulator.plan.planner import analytic_refusal
 
-    if method == "analytic":
+    if method in ("analytic", "exact"):
+        from simulator.plan.exact_rule import closed_form_refusal
+
         if component != "total":
             return f"closed forms give the total, not the {component} component"
         for s in sensors:
-            why = analytic_refusal(scene, s)
+            why = closed_form_refusal(method, scene, s)
             if why is not None:
                 return f"no closed form: {why}"
         return ""
@@ -350,11 +352,16 @@ def chart_config(
         if curve.skipped:
             log(f"  {m:<9} skipped: {curve.skipped}")
             continue
-        if m == "analytic":
-            engine.run("analytic", samples=1, seed=1)  # warm-up
+        if m in ("analytic", "exact"):
+            if m == "exact":  # lights behind a sensor are culled for it, as a run's plan does
+                from simulator.plan.planner import lights_behind
+
+                names = [l.name for l in scene.lights]
+                engine.set_light_mask(np.array([[n not in lights_behind(scene, s) for n in names] for s in sensors], np.int32))
+            engine.run(m, samples=1, seed=1)  # warm-up
             times = []
             for seed in range(1, seeds + 1):
-                res = engine.run("analytic", samples=1, seed=seed)
+                res = engine.run(m, samples=1, seed=seed)
                 times.append(res.wall_s)
                 for i, s in enumerate(sensors):
                     chart.rows.append((name, m, 0, seed, s.name, res.mean[i, 0], ref[i], 0.0, res.wall_s, engine.device))

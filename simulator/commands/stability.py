@@ -358,15 +358,20 @@ def run_cell(
     with seeds ``seed, seed+1, …`` (independent streams), pooled, until the
     next batch would overrun the budget.
     """
-    from simulator.plan.planner import analytic_refusal
+    from simulator.plan.exact_rule import closed_form_refusal
 
     sensors = engine.sensors
-    if method == "analytic":
-        ok = [i for i, s in enumerate(sensors) if analytic_refusal(engine.scene, s) is None]
+    if method in ("analytic", "exact"):
+        ok = [i for i, s in enumerate(sensors) if closed_form_refusal(method, engine.scene, s) is None]
         if not ok:
-            why = analytic_refusal(engine.scene, sensors[0])
+            why = closed_form_refusal(method, engine.scene, sensors[0])
             return Cell(case, method, "n/a", note=f"no closed form: {why}")
-        res = engine.run("analytic", samples=1, seed=seed)
+        if method == "exact":  # lights behind a sensor are culled for it, as a run's plan does
+            from simulator.plan.planner import lights_behind
+
+            names = [l.name for l in engine.scene.lights]
+            engine.set_light_mask(np.array([[n not in lights_behind(engine.scene, s) for n in names] for s in sensors], np.int32))
+        res = engine.run(method, samples=1, seed=seed, sensor_ids=np.array(ok))
         sub = np.array(ok)
         note = "" if len(ok) == len(sensors) else f"{len(ok)} of {len(sensors)} sensors (the rest: no closed form)"
         return _cell_from(case, method, [sensors[i] for i in ok], truth[sub], scale[sub], res.mean[sub, 0],

@@ -50,8 +50,14 @@ def warp():
 
 
 def warp_version() -> str:
-    """The Warp version in use (for run records)."""
-    return warp().config.version
+    """The Warp version in use (for run records), read from the installed
+    package's metadata so that a run that never traces does not import Warp."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("warp-lang")
+    except PackageNotFoundError:
+        return warp().config.version
 
 
 def cuda_available() -> bool:
@@ -61,6 +67,8 @@ def cuda_available() -> bool:
 
 def resolve_device(requested: str) -> str:
     """Warp device name for ``cpu``, ``cuda`` or ``auto`` (CUDA when present)."""
+    if requested == "cpu":
+        return "cpu"  # without importing Warp: a run read wholly in closed form never needs it
     wp = warp()
     has_cuda = wp.get_cuda_device_count() > 0
     if requested == "auto":

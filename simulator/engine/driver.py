@@ -107,12 +107,6 @@ class Engine:
     """
 
     def __init__(self, scene: Scene, sensors: list[Sensor], device: str = "cpu", threads: int = 0):
-
-        wp = warp()
-        from simulator.kernels import estimators as K
-        from simulator.kernels import probe as KP
-
-        self._K, self._KP = K, KP
         self.device = resolve_device(device)
         self.scene = scene
         self.sensors = sensors
@@ -121,9 +115,38 @@ class Engine:
             self.threads = 1
         self.warnings: list[str] = []
         self.rays_traced = 0
-        # compile (or load from the kernel cache) before worker threads launch
-        wp.load_module(K, device=self.device)
-        self._dev = DeviceScene(scene, sensors, self.device)
+        self._light_mask: np.ndarray | None = None
+        self._device_scene: DeviceScene | None = None
+
+    def _upload(self) -> DeviceScene:
+        """Import Warp, load the kernels and upload the scene, on first need: a
+        run read wholly on the host (``exact``) never pays for it."""
+        if self._device_scene is None:
+            wp = warp()
+            from simulator.kernels import estimators as K
+            from simulator.kernels import probe as KP
+
+            self._kernels = (K, KP)
+            # compile (or load from the kernel cache) before worker threads launch
+            wp.load_module(K, device=self.device)
+            self._device_scene = DeviceScene(self.scene, self.sensors, self.device)
+            if self._light_mask is not None:
+                self._device_scene.set_light_mask(self._light_mask)
+        return self._device_scene
+
+    @property
+    def _dev(self) -> DeviceScene:
+        return self._upload()
+
+    @property
+    def _K(self):
+        self._upload()
+        return self._kernels[0]
+
+    @property
+    def _KP(self):
+        self._upload()
+        return self._kernels[1]
 
     @property
     def scene_rec(self):
@@ -138,7 +161,9 @@ class Engine:
     def set_light_mask(self, mask: np.ndarray) -> None:
         """Lights to skip per sensor at its first vertex: ``mask`` (S, L) over
         the scene's lights, 0 = wholly behind the sensor (see plan.lights_behind)."""
-        self._dev.set_light_mask(mask)
+        self._light_mask = np.asarray(mask)
+        if self._device_scene is not None:
+            self._device_scene.set_light_mask(mask)
 
     def trace_params(self, method: str, seed: int, max_depth: int = -1, component: str = "total"):
         """The kernels' ``TraceParams`` for ``method`` (light, bsdf, mis or path)."""
@@ -223,6 +248,29 @@ class Engine:
             warnings=list(self.warnings),
         )
 
+    def _run_exact(self, sensor_ids: np.ndarray) -> EngineResult:
+        """Direct light from RectLights by Lambert's formula on their visible
+        parts (:mod:`.exact`; the planner has checked it applies): no samples,
+        standard error 0, on the host in float64."""
+        from simulator.engine.exact import exact_direct
+
+        n_s = len(self.sensors)
+        t0 = time.perf_counter()
+        mean = exact_direct(self.scene, self.sensors, sensor_ids, self._light_mask)
+        wall = time.perf_counter() - t0
+        return EngineResult(
+            method="exact",
+            device="cpu",
+            mean=mean,
+            stderr=np.zeros((n_s, 2)),
+            samples=np.zeros(n_s, np.int64),
+            seconds=np.full(n_s, wall / max(len(sensor_ids), 1)),
+            target_met=None,
+            non_finite=np.zeros(n_s, np.int64),
+            wall_s=wall,
+            warnings=list(self.warnings),
+        )
+
     def run(
         self,
         method: str,
@@ -240,7 +288,7 @@ class Engine:
         sensor_ids: np.ndarray | None = None,
         confidence: float = 0.95,
     ) -> EngineResult:
-        """Estimate every sensor with ``method`` (analytic, light, bsdf, mis or path).
+        """Estimate every sensor with ``method`` (analytic, exact, light, bsdf, mis or path).
 
         Fixed budget (``rel_error`` None): ``samples`` per sensor. Adaptive:
         ``samples`` is the first batch; a sensor stops when
@@ -261,6 +309,8 @@ class Engine:
         ids_all = np.arange(len(self.sensors)) if sensor_ids is None else np.asarray(sensor_ids, np.int64)
         if method == "analytic":
             return self._run_analytic(ids_all)
+        if method == "exact":
+            return self._run_exact(ids_all)
         if method not in METHOD_FLAGS:
             raise UserError(f"method {method!r} has no Monte Carlo kernel (expected one of {sorted(METHOD_FLAGS)})")
         n_s = len(self.sensors)

@@ -4,8 +4,10 @@ planner and the commands import this cheaply).
 A Monte Carlo method is a set of estimator strategies (see
 :mod:`simulator.kernels.estimators`): next-event estimation, cosine-weighted
 directions, both combined by multiple importance sampling, and
-interreflection. ``analytic`` is the closed form; ``auto`` lets the planner
-choose per sensor.
+interreflection. ``analytic`` is the closed form where nothing occludes;
+``exact`` the closed form of each RectLight's visible part past a few
+occluders (:mod:`simulator.engine.exact`); ``auto`` lets the planner choose
+per sensor.
 """
 
 from __future__ import annotations
@@ -22,7 +24,7 @@ METHOD_FLAGS = {
 #: methods with a Monte Carlo kernel
 MC_METHODS = tuple(METHOD_FLAGS)
 #: methods that read a sensor: the closed form and the Monte Carlo ones
-READ_METHODS = ("analytic", *MC_METHODS)
+READ_METHODS = ("analytic", "exact", *MC_METHODS)
 #: what ``simulation.method`` may ask for
 METHODS = ("auto", *READ_METHODS)
 #: which light a reading counts

@@ -12,7 +12,10 @@ sensor, in order:
    samples each light once, and is cheapest for small and delta lights;
    ``mis`` adds a cosine-weighted direction, worth its extra ray when a light
    covers a large part of the sensor's sky (a dome, a near panel):
-   ``LARGE_SOURCE_SR`` decides (measured with ``probesim chart``);
+   ``LARGE_SOURCE_SR`` decides (measured with ``probesim chart``). Before
+   either, ``exact`` — each RectLight's visible part in closed form, so
+   penumbrae carry no noise — when every light it sees is a RectLight and
+   few triangles stand in the way (:mod:`simulator.plan.exact_rule`);
 3. **paths** (``path``) otherwise: interreflection is part of the reading.
 
 Lights wholly behind a sensor's plane contribute nothing to it and are not
@@ -28,6 +31,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from simulator.errors import UserError
+from simulator.plan.exact_rule import exact_plan_refusal
 from simulator.engine.methods import MC_METHODS
 from simulator.scene.model import LightKind, Scene, Sensor, SensorKind, patch_width_axis
 
@@ -47,7 +51,7 @@ def probe_method(scene: Scene, requested: str, component: str = "total") -> tupl
     indirect component), else direct light sampling; an explicit Monte Carlo
     method as asked (``analytic`` falls back to this choice)."""
     reflects = scene.geometry.n_triangles > 0 and bool(np.any(scene.geometry.albedo > 0))
-    if requested in ("auto", "analytic"):
+    if requested in ("auto", "analytic", "exact"):
         if component == "indirect":
             return "path", "the indirect component is light reflected on the way: paths"
         if reflects:
@@ -294,6 +298,8 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
         if requested != "auto":
             if requested == "analytic" and (why := analytic_refusal(scene, s)) is not None:
                 raise UserError(f"method analytic cannot read sensor {s.name!r}: {why} (use light, mis, path or auto)")
+            if requested == "exact" and (why := exact_plan_refusal(scene, s, culled)) is not None:
+                raise UserError(f"method exact cannot read sensor {s.name!r}: {why} (use light, mis, path or auto)")
             bounces = requested == "path"
             reason = "as requested" + ("" if bounces or not reflects else f"; {requested} ignores the interreflection this sensor sees")
             plans.append(SensorPlan(s.name, kind, requested, bounces, reason, lights, culled, geometry))
@@ -303,6 +309,9 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
             method, reason = "path", "indirect light has been reflected on the way: paths"
         elif refusal is None and (not reflects or component == "direct"):
             method, reason = "analytic", "nothing can block its lights" + ("" if component == "direct" else " and nothing in front of it reflects: closed form")
+        elif (not reflects or component == "direct") and (no_exact := exact_plan_refusal(scene, s, culled)) is None:
+            method = "exact"
+            reason = f"no surface it sees reflects ({refusal}): each RectLight's visible part in closed form, penumbrae exact"
         elif not reflects or component == "direct":
             why = refusal or "no closed form"
             big = _largest_solid_angle(scene, s, culled)

@@ -19,7 +19,8 @@ the visible part V = light − H (a set of polygons with holes) reads
     E = Σ_rings ± L·∫_ring cos θ dω
 
 (exterior rings count +, holes −), each ring clipped to the receiver's
-hemisphere first (:func:`simulator.reference.closed_forms.polygon_irradiance`).
+hemisphere first. The code shares nothing with
+:mod:`simulator.reference.closed_forms`, which the tests check it against.
 Computing V itself, rather than E(light) − E(H), keeps deep penumbrae free of
 cancellation and makes a wholly hidden lamp read exactly 0.
 The 2-D union and intersection are computed with Shapely (GEOS) in float64.
@@ -42,9 +43,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from simulator.reference.closed_forms import polygon_irradiance
 
-__all__ = ["visible_polygon_irradiance", "lambert_rings", "clip_polygons"]
+__all__ = ["visible_polygon_irradiance", "lambert_rings", "clip_polygons", "exact_direct", "exact_refusal", "rect_vertices"]
 
 #: relative slack, × the scene's coordinate magnitude, within which a surface
 #: counts as lying *in* the light's plane or the receiver's (and so hides
@@ -69,6 +69,38 @@ def _plane_frame(light: np.ndarray):
     e1 = e1 / np.linalg.norm(e1)
     e2 = np.cross(m, e1)
     return c, m, e1, e2
+
+
+def _clip_convex_or_not(v: np.ndarray, s: np.ndarray) -> np.ndarray:
+    """Sutherland–Hodgman of one polygon ``v`` (any simple polygon) to ``s ≥ 0``.
+
+    For a non-convex polygon the result may carry zero-width bridges along
+    the cut; they add nothing to a contour integral."""
+    out = []
+    for i in range(len(v)):
+        a, b, sa, sb = v[i - 1], v[i], s[i - 1], s[i]
+        if (sa >= 0.0) != (sb >= 0.0):
+            out.append(a + (b - a) * (sa / (sa - sb)))
+        if sb >= 0.0:
+            out.append(b)
+    return np.asarray(out).reshape(-1, 3)
+
+
+def _lambert_one(v: np.ndarray, n: np.ndarray) -> float:
+    """∫ cos θ dω of one polygon ``v`` (receiver at the origin, above its horizon)."""
+    if len(v) < 3:
+        return 0.0
+    r = np.linalg.norm(v, axis=1)
+    v = v[r > 0.0]
+    if len(v) < 3:
+        return 0.0
+    u = v / np.linalg.norm(v, axis=1)[:, None]
+    w = np.roll(u, -1, axis=0)
+    c = np.cross(u, w)
+    sin_g = np.linalg.norm(c, axis=1)
+    gamma = np.arctan2(sin_g, np.sum(u * w, axis=1))
+    proj = np.where(sin_g > 0.0, (c @ n) / np.where(sin_g > 0.0, sin_g, 1.0), 0.0)
+    return 0.5 * abs(float(np.sum(gamma * proj)))
 
 
 def clip_polygons(V: np.ndarray, count: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -145,7 +177,7 @@ def lambert_rings(rings: list[np.ndarray], receivers: np.ndarray, P: np.ndarray,
     """Cosine-weighted solid angle ∫ cos θ dω of each ring (a simple planar polygon).
 
     Vectorised Lambert contour sums; rings that dip below a receiver's horizon
-    are clipped to its hemisphere one by one (the closed form's own path).
+    are clipped to its hemisphere one by one.
 
     Parameters
     ----------
@@ -192,9 +224,10 @@ def lambert_rings(rings: list[np.ndarray], receivers: np.ndarray, P: np.ndarray,
     proj = np.einsum("ij,ij->i", c, N[rec]) / np.where(sin_g > 0.0, sin_g, 1.0)
     term = np.where((sin_g > 0.0) & (r > 0.0) & (r[nxt] > 0.0), gamma * proj, 0.0)
     out = 0.5 * np.abs(np.add.reduceat(term, start))
-    for i in np.nonzero(bad)[0]:  # crosses the horizon: clip (rare for ceiling lights)
+    for i in np.nonzero(bad)[0]:  # crosses the horizon: clip to the hemisphere (rare for ceiling lights)
         k = receivers[i]
-        out[i] = float(polygon_irradiance(1.0, rings[i], P[k], N[k]))
+        v = rings[i] - P[k]
+        out[i] = _lambert_one(_clip_convex_or_not(v, v @ N[k]), N[k])
     return out
 
 
@@ -304,3 +337,74 @@ def visible_polygon_irradiance(radiance, light, tris, P, N, one_sided_normal=Non
 def _finish(e: np.ndarray, radiance, single: bool):
     e = np.maximum(e, 0.0) * float(radiance)
     return float(e[0]) if single else e
+
+
+#: receivers × occluder triangles evaluated at once (memory: ~40 bytes each, per side plane)
+_CHUNK_PAIRS = 1 << 21
+
+
+def rect_vertices(light) -> np.ndarray:
+    """Corners of a RectLight, shape (4, 3), metres, wound counter-clockwise about +Z."""
+    ex, ey = light.frame[:, 0], light.frame[:, 1]
+    hx, hy = 0.5 * light.width * ex, 0.5 * light.height * ey
+    c = np.asarray(light.position, float)
+    return np.array([c - hx - hy, c + hx - hy, c + hx + hy, c - hx + hy])
+
+
+def exact_refusal(light) -> str | None:
+    """Why this light's direct light cannot be read exactly, or None."""
+    if light.kind.name != "RECT":
+        return f"{light.name} is not a RectLight"
+    if light.shaping is not None:
+        return f"{light.name} is shaped (UsdLuxShapingAPI)"
+    return None
+
+
+def exact_direct(scene, sensors, sensor_ids: np.ndarray, light_mask: np.ndarray | None = None) -> np.ndarray:
+    """Direct irradiance of irradiance sensors from every RectLight, exactly.
+
+    Parameters
+    ----------
+    scene : simulator.scene.model.Scene
+        Its lights must all be unshaped RectLights where ``light_mask`` is 1
+        (the planner checks, :func:`exact_refusal`); emissive triangles are
+        not counted.
+    sensors : list of Sensor
+    sensor_ids : ndarray of int
+        The sensors to read.
+    light_mask : ndarray, shape (S, L), optional
+        1 where light l can reach sensor s (0: culled, wholly behind it).
+
+    Returns
+    -------
+    ndarray, shape (S, 2)
+        ``(radiometric, photometric)`` irradiance (W/m², lx); rows outside
+        ``sensor_ids`` are 0.
+    """
+    out = np.zeros((len(sensors), 2))
+    ids = np.asarray(sensor_ids, np.int64)
+    if not len(ids):
+        return out
+    P = np.array([sensors[i].position for i in ids], float)
+    N = np.array([sensors[i].normal for i in ids], float)
+    g = scene.geometry
+    tris_all = g.points[g.triangles] if g.n_triangles else np.zeros((0, 3, 3))
+    scale = max(1.0, float(np.abs(tris_all).max()) if len(tris_all) else 1.0)
+    for j, light in enumerate(scene.lights):
+        on = np.ones(len(ids), bool) if light_mask is None else light_mask[ids, j] != 0
+        if not on.any():
+            continue
+        why = exact_refusal(light)
+        if why is not None:
+            raise ValueError(f"exact direct light: {why}")
+        V = rect_vertices(light)
+        ez = light.frame[:, 2]
+        # only what reaches in front of the emitting side (−ez) can stand between it and a receiver
+        tris = tris_all[np.any((tris_all - light.position) @ -ez > 0.0, axis=1)] if len(tris_all) else tris_all
+        k = np.flatnonzero(on)
+        step = max(1, _CHUNK_PAIRS // max(len(tris), 1))
+        for a in range(0, len(k), step):
+            sel = k[a : a + step]
+            e = visible_polygon_irradiance(1.0, V, tris, P[sel], N[sel], one_sided_normal=-ez, length_scale_m=scale)
+            out[ids[sel]] += e[:, None] * np.asarray(light.emission, float)[None, :]
+    return out

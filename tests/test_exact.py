@@ -1,4 +1,4 @@
-"""Exact direct light through occluders: :mod:`simulator.reference.visible_polygon`.
+"""Exact direct light through occluders: :mod:`simulator.engine.exact`.
 
 Every expected value here is an independent closed form: the visible part of
 the light is a rectangle (or a rectangle with a rectangular hole) in a
@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from simulator.reference.closed_forms import polygon_irradiance, rect_irradiance_parallel, rect_light_vertices
-from simulator.reference.visible_polygon import clip_polygons, lambert_rings, visible_polygon_irradiance
+from simulator.engine.exact import clip_polygons, lambert_rings, visible_polygon_irradiance
 
 L = 1000.0  # cd/m²
 H = 2.0  # light height, m
