@@ -354,10 +354,9 @@ def chart_config(
             continue
         if m in ("analytic", "exact"):
             if m == "exact":  # lights behind a sensor are culled for it, as a run's plan does
-                from simulator.plan.planner import lights_behind
+                from simulator.plan.planner import cull_mask
 
-                names = [l.name for l in scene.lights]
-                engine.set_light_mask(np.array([[n not in lights_behind(scene, s) for n in names] for s in sensors], np.int32))
+                engine.set_light_mask(cull_mask(scene, sensors))
             engine.run(m, samples=1, seed=1)  # warm-up
             times = []
             for seed in range(1, seeds + 1):

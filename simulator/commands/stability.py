@@ -367,10 +367,9 @@ def run_cell(
             why = closed_form_refusal(method, engine.scene, sensors[0])
             return Cell(case, method, "n/a", note=f"no closed form: {why}")
         if method == "exact":  # lights behind a sensor are culled for it, as a run's plan does
-            from simulator.plan.planner import lights_behind
+            from simulator.plan.planner import cull_mask
 
-            names = [l.name for l in engine.scene.lights]
-            engine.set_light_mask(np.array([[n not in lights_behind(engine.scene, s) for n in names] for s in sensors], np.int32))
+            engine.set_light_mask(cull_mask(engine.scene, sensors))
         res = engine.run(method, samples=1, seed=seed, sensor_ids=np.array(ok))
         sub = np.array(ok)
         note = "" if len(ok) == len(sensors) else f"{len(ok)} of {len(sensors)} sensors (the rest: no closed form)"

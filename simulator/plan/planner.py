@@ -35,7 +35,7 @@ from simulator.plan.exact_rule import exact_plan_refusal
 from simulator.engine.methods import MC_METHODS
 from simulator.scene.model import LightKind, Scene, Sensor, SensorKind, patch_width_axis
 
-__all__ = ["MC_METHODS", "SensorPlan", "Plan", "make_plan", "probe_method", "analytic_refusal", "lights_behind", "format_plan"]
+__all__ = ["MC_METHODS", "SensorPlan", "Plan", "make_plan", "probe_method", "analytic_refusal", "lights_behind", "cull_mask", "format_plan"]
 
 #: a light subtending more than this solid angle (sr) from a direct-lit
 #: sensor makes `mis` the plan: its cosine-weighted direction then lands on
@@ -227,6 +227,13 @@ def lights_behind(scene: Scene, sensor: Sensor) -> list[str]:
         if behind:
             out.append(l.name)
     return out
+
+
+def cull_mask(scene: Scene, sensors: list[Sensor]) -> np.ndarray:
+    """(S, L) int32: 1 where a light can reach the sensor (see :func:`lights_behind`),
+    the mask a run's plan gives the engine."""
+    names = [l.name for l in scene.lights]
+    return np.array([[n not in lights_behind(scene, s) for n in names] for s in sensors], np.int32).reshape(len(sensors), len(names))
 
 
 def _largest_solid_angle(scene: Scene, sensor: Sensor, culled: list[str]) -> float:
