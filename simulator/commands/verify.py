@@ -35,7 +35,6 @@ stage's numbers are W m⁻² sr⁻¹ (W/sr, W/m²), and those rows compare the
 radiometric (W) channel.
 """
 
-
 from __future__ import annotations
 
 import csv
