@@ -208,8 +208,11 @@ def _message(err: dict) -> str:
     if kind in _EXPECTED:
         return expected(_EXPECTED[kind], value)
     if kind in _BOUNDS:
-        op, bound = _BOUNDS[kind]
-        return f"must be {op} {_num(ctx[bound])}, got {_num(value)}"
+        op, key = _BOUNDS[kind]
+        bound = ctx[key]
+        if isinstance(bound, float) and isinstance(value, int):
+            value = float(value)  # an integer given for a number
+        return f"must be {op} {_num(bound)}, got {_num(value)}"
     if kind == "finite_number":
         return f"must be a finite number, got {value}"
     if kind == "missing":
