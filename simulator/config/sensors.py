@@ -21,7 +21,7 @@ import math
 from typing import Annotated, Any, ClassVar, Literal, Union, get_args
 
 import numpy as np
-from pydantic import BeforeValidator, Field, ValidationInfo, field_validator
+from pydantic import BeforeValidator, ConfigDict, Field, ValidationInfo, field_validator
 from pydantic_core import PydanticCustomError
 
 from simulator.config.errors import expected, rule, unknown_key
@@ -55,6 +55,9 @@ class SensorFields(Table):
     position : ndarray, shape (3,)
         Metres (the centre, for a patch).
     """
+
+    # validated only inside RunFile: no validator of their own to compile
+    model_config = ConfigDict(defer_build=True)
 
     #: the sensor kind built
     KIND: ClassVar[SensorKind]
