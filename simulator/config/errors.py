@@ -26,10 +26,12 @@ from pydantic_core import PydanticCustomError, ValidationError
 
 from simulator.errors import UserError
 
-__all__ = ["RULE", "rule", "expected", "unknown_key", "toml_type", "user_error", "translate"]
+__all__ = ["RULE", "MISSING", "rule", "expected", "unknown_key", "toml_type", "user_error", "translate"]
 
 #: pydantic error type of every :func:`rule` error
 RULE = "probesim"
+#: the message of a required key that is absent
+MISSING = "required key is missing"
 
 #: what a type error expected, by pydantic error type
 _EXPECTED = {
@@ -216,7 +218,7 @@ def _message(err: dict) -> str:
     if kind == "finite_number":
         return f"must be a finite number, got {value}"
     if kind == "missing":
-        return "required key is missing"
+        return MISSING
     if kind == "extra_forbidden":
         return "unknown key"
     return str(err["msg"])

@@ -24,7 +24,7 @@ import numpy as np
 from pydantic import BeforeValidator, ConfigDict, Field, ValidationInfo, field_validator
 from pydantic_core import PydanticCustomError
 
-from simulator.config.errors import expected, rule, unknown_key
+from simulator.config.errors import MISSING, expected, rule, unknown_key
 from simulator.config.fields import (
     Direction, Number, Point, Resolution, Size, Text, interval, nonblank, one_of, orthogonal_up,
 )  # fmt: skip
@@ -160,7 +160,7 @@ def _kind_first(value: Any) -> Any:
         if key not in SENSOR_KEYS:
             raise unknown_key(key, SENSOR_KEYS)
     if "kind" not in value:
-        raise rule("required key is missing", key="kind")
+        raise rule(MISSING, key="kind")
     kind = value["kind"]
     if not isinstance(kind, str):
         raise rule(expected("a string", kind), key="kind")
