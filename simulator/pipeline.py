@@ -123,6 +123,7 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     probes = [s for s in sensors if s.kind == SensorKind.PROBE]
     plain = [s for s in sensors if s.kind != SensorKind.PROBE]
     sim = cfg.simulation
+    t_read = time.perf_counter()
     plan = make_plan(scene, plain, sim.method, sim.component)
     reason = "per-sensor plan (see plan)" if sim.method == "auto" else "as requested"
     probes_method = None
@@ -171,8 +172,9 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
         "threads": engine.threads,
         "host": {"platform": platform.platform(), "machine": platform.machine(), "processor": platform.processor(), "python": sys.version.split()[0]},
         "versions": _versions(),
-        "timings_s": {"load": t_load - t0, "setup": t_setup - t_load, "trace": res.wall_s + sum(p.seconds for p in probe_res), "total": t_end - t0},
+        "timings_s": {"load": t_read - t0, "plan": t_load - t_read, "setup": t_setup - t_load, "trace": res.wall_s + sum(p.seconds for p in probe_res), "total": t_end - t0},
         "sensors": len(sensors),
+        "triangles": scene.geometry.n_triangles,
         "warnings": list(scene.warnings) + list(res.warnings),
         "non_finite_samples": int(res.non_finite.sum()) + sum(p.non_finite for p in probe_res),
         "maps": sorted(p.name for p in extra),

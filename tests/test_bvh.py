@@ -23,6 +23,7 @@ import warp as wp
 from simulator.engine.driver import Engine
 from simulator.kernels.estimators import unoccluded
 from simulator.kernels.lights import SceneRec
+from simulator.reference.geometry import ray_triangles
 from simulator.scene.model import Geometry, Scene, Sensor, SensorKind
 
 wp.set_module_options({"enable_backward": False})
@@ -72,20 +73,10 @@ def brute_force(points: np.ndarray, tris: np.ndarray, o: np.ndarray, d: np.ndarr
 
 
 def _brute_force(points, tris, o, d):
-    p0, p1, p2 = (points[tris[:, k]] for k in range(3))
-    e1, e2 = p1 - p0, p2 - p0  # (T, 3)
-    pv = np.cross(d[:, None, :], e2[None, :, :])  # (R, T, 3)
-    det = np.einsum("tk,rtk->rt", e1, pv)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        inv = 1.0 / det
-        tv = o[:, None, :] - p0[None, :, :]
-        u = np.einsum("rtk,rtk->rt", tv, pv) * inv
-        qv = np.cross(tv, e1[None, :, :])
-        v = np.einsum("rtk,rk->rt", qv, d) * inv
-        t = np.einsum("tk,rtk->rt", e2, qv) * inv
+    t, u, v, ok = ray_triangles(o[:, None, :], d[:, None, :], points[tris][None], det_min=1e-14)
     margin = np.minimum(np.minimum(u, v), 1.0 - u - v)
-    ok = np.isfinite(t) & (np.abs(det) > 1e-14) & (margin >= 0) & (t > 0)
-    return np.where(ok, t, np.inf), np.where(np.abs(det) > 1e-14, margin, -np.inf), t
+    hit = ok & (margin >= 0) & (t > 0)
+    return np.where(hit, t, np.inf), np.where(ok, margin, -np.inf), t
 
 
 def random_soup(rng, n_tri: int, size: float) -> tuple[np.ndarray, np.ndarray]:

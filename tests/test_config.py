@@ -899,3 +899,141 @@ def test_confidence_key_and_flag(write):
     assert "simulation.confidence: must be between 0.5 and 1" in msg
     with pytest.raises(UserError, match="--confidence"):
         apply_overrides(cfg, confidence=1.0)
+
+
+# --------------------------------------------------------------------------- schema
+
+
+def test_sensor_kind_models_cover_the_kinds():
+    """Each sensor kind has one schema model, keyed and tagged by its config name, building that kind."""
+    from simulator.config.sensors import SENSOR_ENTRIES, SENSOR_KEYS
+    from simulator.scene.model import SENSOR_KINDS
+
+    assert list(SENSOR_ENTRIES) == list(SENSOR_KINDS)
+    for name, model in SENSOR_ENTRIES.items():
+        assert model.KIND == SENSOR_KINDS[name]
+        assert list(model.model_fields)[:3] == ["name", "kind", "position"]
+    assert SENSOR_KEYS == ("name", "kind", "position", "normal", "direction", "half_angle_deg", "size", "up", "resolution")
+
+
+@pytest.mark.parametrize(
+    "flag, kwargs, line",
+    [
+        ("--samples", {"samples": 0}, "samples = 0"),
+        ("--samples", {"samples": True}, "samples = true"),
+        ("--seed", {"seed": 2**31}, "seed = 2147483648"),
+        ("--method", {"method": "magic"}, "method = 'magic'"),
+        ("--device", {"device": "gpu"}, "device = 'gpu'"),
+        ("--rel-error", {"rel_error": 1.0}, "rel_error = 1.0"),
+        ("--rel-error", {"rel_error": math.nan}, "rel_error = nan"),
+        ("--confidence", {"confidence": 0.3}, "confidence = 0.3"),
+    ],
+)
+def test_flag_and_key_share_one_rule(write, flag, kwargs, line):
+    """A flag is checked by its [simulation] key's rule: the same value gives the same message, naming the flag instead of the key."""
+    key = "simulation." + next(iter(kwargs))
+    from_file = load_error(write(f"[simulation]\n{line}\n", name="bad.toml"))
+    with pytest.raises(UserError) as info:
+        apply_overrides(load_config(write("")), **kwargs)
+    assert from_file.split(f": {key}: ", 1)[1] == str(info.value).split(f"{flag}: ", 1)[1]
+
+
+def test_flags_recorded_in_flag_order(write):
+    """Valid flags replace their keys, leave the others as the file gave them, and are recorded as applied."""
+    cfg = load_config(write("[simulation]\nsamples = 8\nmax_depth = 3\n"))
+    new = apply_overrides(cfg, confidence=0.99, rel_error=0.25, seed=0)
+    sim = new.simulation
+    assert (sim.seed, sim.rel_error, sim.confidence) == (0, 0.25, 0.99) and sim.adaptive
+    assert (sim.samples, sim.max_depth) == (8, 3)
+    assert list(new.overrides.items()) == [("seed", 0), ("rel_error", 0.25), ("confidence", 0.99)]
+
+
+@pytest.mark.parametrize(
+    "item, words",
+    [("reflectance", "expected SET=VARIANT, got 'reflectance'"), ("=rho_0_9", "empty variant set name"),
+     ("reflectance= ", "empty variant name")],
+)  # fmt: skip
+def test_variant_flag_checked(write, item, words):
+    """--variant must be SET=VARIANT; blank names break the `variants` table's own rule, named as the flag."""
+    with pytest.raises(UserError) as info:
+        apply_overrides(load_config(write("")), variants=[item])
+    assert str(info.value) == f"--variant: {words}"
+
+
+def test_variant_flag_overrides_the_table(write):
+    """--variant adds to the config's variants and replaces the same set (names stripped)."""
+    cfg = load_config(write('variants = { reflectance = "rho_0_5", look = "dark" }\n'))
+    new = apply_overrides(cfg, variants=[" reflectance = rho_0_9"])
+    assert new.variants == {"reflectance": "rho_0_9", "look": "dark"}
+    assert new.overrides == {"variants": [" reflectance = rho_0_9"]}
+    assert cfg.variants["reflectance"] == "rho_0_5"
+
+
+def test_close_match_suggested_in_a_sensor(write):
+    """A misspelt sensor key names the key and suggests the near one among all sensor keys."""
+    msg = load_error(
+        write(
+            """
+            [[sensor]]
+            kind = "irradiance"
+            position = [0, 0, 0]
+            normall = [0, 0, 1]
+            """
+        )
+    )
+    assert ": sensor[0].normall: unknown key (did you mean 'normal'?" in msg
+
+
+def test_first_problem_in_file_order(write):
+    """Within a table the first bad value in file order is the one reported."""
+    msg = load_error(write("[simulation]\nseed = -1\nsamples = 0\n"))
+    assert msg.endswith(": simulation.seed: must be >= 0, got -1")
+
+
+def test_messages_name_units(write):
+    """A radiance cone's bound is stated in degrees."""
+    msg = load_error(
+        write(
+            """
+            [[sensor]]
+            kind = "radiance"
+            position = [0, 0, 0]
+            direction = [0, 0, -1]
+            half_angle_deg = 95
+            """
+        )
+    )
+    assert msg.endswith(": sensor[0].half_angle_deg: must be >= 0 and < 90 degrees, got 95")
+
+
+def test_integers_for_numbers_everywhere(write):
+    """Integers are taken for every number (vectors, sizes, angles, spacing) and come out as floats."""
+    cfg = load_config(
+        write(
+            """
+            [[sensor]]
+            kind = "radiance"
+            position = [1, 2, 3]
+            direction = [0, 0, -2]
+            half_angle_deg = 30
+            [[grid]]
+            name = "g"
+            position = [0, 0, 0]
+            normal = [0, 0, 1]
+            size = [2, 1]
+            up = [0, 1, 0]
+            spacing = 1
+            """
+        )
+    )
+    s = cfg.sensors[0]
+    assert s.position.dtype == np.float64 and s.half_angle == pytest.approx(math.pi / 6)
+    (g,) = cfg.grids
+    assert g.size == (2.0, 1.0) and g.spacing == (1.0, 1.0)
+    assert all(isinstance(x, float) for x in g.size + g.spacing)
+
+
+def test_error_naming_key_in_a_grid_array(write):
+    """A [[grid]] entry that is not a table is an error on grid[i]."""
+    msg = load_error(write("grid = [1]\n"))
+    assert msg.endswith(": grid[0]: expected a table ([[grid]]), got integer")

@@ -11,6 +11,8 @@ import numpy as np
 import pytest
 
 from simulator.reference import closed_forms as cf
+from simulator.reference import cases as C
+from simulator.reference.cases import direct as D
 from simulator.commands import verify as V
 from simulator.commands.cli import main
 
@@ -76,7 +78,7 @@ def test_disk_bracket_contains_the_on_axis_closed_form():
 
     light = Light("d", LightKind.DISK, np.array([0.0, 0.0, 2.0]), np.eye(3), (1.0, 1000.0), radius=0.5)
     s = Sensor("s", SensorKind.IRRADIANCE, np.zeros(3), np.array([0.0, 0.0, 1.0]))
-    lo, hi = V._disk_bracket(light, s, 1)
+    lo, hi = D.disk_bracket(light, s, 1)
     exact = float(cf.disk_irradiance_on_axis(1000.0, 0.5, 2.0))
     assert lo <= exact <= hi
     assert (hi - lo) / exact < 1e-6
@@ -111,7 +113,7 @@ def test_quick_subset_passes():
 
 def test_missing_optional_config_is_skipped_with_a_note(tmp_path):
     """An optional case whose config is absent is reported, not failed."""
-    case = V.Case("later", "not_yet.toml", "path", lambda ctx, s, ch: 0.0, optional=True)
+    case = V.Case("later", "not_yet.toml", "work in progress", lambda ctx, s, ch: 0.0, method="path", optional=True)
     notes = []
     result = V.run_suite(cases=(case,), on_skip=notes.append)
     assert result.rows == [] and result.passed and len(notes) == 1 and "not_yet.toml" in notes[0]
@@ -120,7 +122,7 @@ def test_missing_optional_config_is_skipped_with_a_note(tmp_path):
 def test_a_broken_case_fails_its_row_and_the_others_still_run():
     """A case whose config is missing (and not optional) is one failing row
     naming the file; the next case still runs and passes."""
-    broken = V.Case("broken", "missing.toml", "light", lambda ctx, s, ch: 0.0)
+    broken = V.Case("broken", "missing.toml", "a config that is not there", lambda ctx, s, ch: 0.0)
     result = V.run_suite(cases=(broken, _case("point_cm_yup")), quick=True)
     assert not result.passed
     assert result.rows[0].case == "broken" and not result.rows[0].passed and "missing.toml" in result.rows[0].note
@@ -148,6 +150,25 @@ def test_cli_exits_1_when_a_reading_fails(monkeypatch, capsys):
     assert main(["verify", "--quick"]) == 1
     text = capsys.readouterr().out
     assert "FAIL" in text
+
+
+def test_the_registry_declares_each_case_once_with_its_suites():
+    """One registry: names are unique, every case belongs to a known suite and
+    says what it measures; verify's cases are the registry's verify suite, in
+    order, stability's its hard cases, chart's default list its chart suite;
+    every photometric direct-light case has a radiometric twin."""
+    names = [c.name for c in C.CASES]
+    assert len(names) == len(set(names))
+    assert all(c.suites and set(c.suites) <= set(C.SUITES) and c.measures for c in C.CASES)
+    assert V.CASES == C.suite("verify")
+    from simulator.commands import chart, stability
+
+    assert stability.CASES == C.suite("stability")
+    assert all(c.config.startswith("stability/") for c in stability.CASES)
+    assert chart.DEFAULT_CONFIGS == tuple(c.config[: -len(".toml")] for c in C.suite("chart"))
+    assert [c.chart for c in C.suite("chart")] == list(range(len(chart.DEFAULT_CONFIGS)))
+    twins = {c.name[: -len(" [W]")] for c in C.CASES if c.name.endswith(" [W]")}
+    assert twins == {c.name for c in C.suite("verify") if c.method != "path" and c.light_units is None}
 
 
 def test_cli_unknown_case_filter_is_a_user_error(capsys):

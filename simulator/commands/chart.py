@@ -60,6 +60,7 @@ from simulator import __version__
 from simulator.bundled import bundled_configs
 from simulator.engine.methods import READ_METHODS
 from simulator.errors import UserError
+from simulator.reference.cases import suite
 
 __all__ = [
     "CSV_COLUMNS",
@@ -73,9 +74,9 @@ __all__ = [
     "run_chart",
 ]
 
-#: the bundled reference stages charted when no config is named
-DEFAULT_CONFIGS = ("point", "sphere", "rect", "disk", "polygon", "distant_occluder", "dome", "furnace",
-                   "cie171_5_2", "cie171_5_8")  # fmt: skip
+#: the bundled reference stages charted when no config is named: the chart
+#: suite of the reference registry (:mod:`simulator.reference.cases`), config stems
+DEFAULT_CONFIGS = tuple(Path(c.config).stem for c in suite("chart"))
 CSV_COLUMNS = ("config", "method", "budget", "seed", "sensor", "estimate", "reference", "stderr", "seconds", "device")
 METHODS = READ_METHODS
 #: first rung of the ladder, samples per sensor

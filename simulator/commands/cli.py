@@ -194,10 +194,11 @@ def _cmd_run(args) -> int:
     used = ", ".join(f"{m} ×{k}" for m, k in rec["method"]["used"].items())
     if rec["method"].get("probes"):
         used += f", probes by {rec['method']['probes']}"
+    t = rec["timings_s"]
     print(
-        f"{n} sensors, {total:,} samples, methods {used} on {rec['device']} "
-        f"({rec['threads']} threads): traced in {trace:.2f} s ({total / max(trace, 1e-9):,.0f} samples/s), "
-        f"{wall:.2f} s in all"
+        f"{n} sensors, {rec['triangles']:,} triangles, {total:,} samples, methods {used} on {rec['device']} "
+        f"({rec['threads']} threads): loaded in {t['load']:.2f} s, planned in {t['plan']:.2f} s, "
+        f"traced in {trace:.2f} s ({total / max(trace, 1e-9):,.0f} samples/s), {wall:.2f} s in all"
     )
     ad = rec.get("adaptive")
     if ad:

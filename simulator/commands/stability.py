@@ -3,7 +3,8 @@
 A matrix of estimators (``analytic``, ``light``, ``bsdf``, ``mis``, ``path``)
 × hard cases. Each case is a bundled stage in ``stages/stability/`` with its
 config in ``configs/stability/``, and a reference answer per sensor from the
-closed forms of :mod:`simulator.reference.closed_forms` (see :data:`CASES`):
+closed forms of :mod:`simulator.reference.closed_forms`: the stability suite of
+the reference registry, :mod:`simulator.reference.cases` (see :data:`CASES`):
 
 =================  ==========================================================
 case               what it stresses
@@ -38,14 +39,14 @@ import math
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable
 
 import numpy as np
 
-from simulator.reference import closed_forms as cf
 from simulator.bundled import configs_dir as bundled_configs_dir
 from simulator.engine.methods import READ_METHODS
-from simulator.scene.model import Light, LightKind, Scene, Sensor, SensorKind
+from simulator.reference.cases import Case, CaseContext, suite
+from simulator.reference.cases import case as find_case
+from simulator.scene.model import Scene, Sensor
 
 __all__ = [
     "BIAS_SIGMAS",
@@ -143,123 +144,8 @@ def worst(verdicts) -> str:
 
 # --------------------------------------------------------------------------- references
 
-
-def _light_irradiance(l: Light, p: np.ndarray, n: np.ndarray) -> float:
-    """Unoccluded irradiance (radiometric) on (p, n) from one UsdLux light."""
-    L = l.emission[0]
-    if l.kind == LightKind.POINT:
-        return float(cf.point_irradiance(L, l.position, p, n))
-    if l.kind == LightKind.SPHERE:
-        if np.linalg.norm(p - l.position) < l.radius:
-            return 0.0  # inside: a SphereLight emits outward only
-        return float(cf.sphere_irradiance(L, l.position, l.radius, p, n))
-    if l.kind == LightKind.RECT:
-        v = cf.rect_light_vertices(l.position, l.frame[:, 0], l.frame[:, 1], l.width, l.height)
-        return float(cf.polygon_irradiance(L, v, p, n, one_sided_normal=-l.frame[:, 2]))
-    if l.kind == LightKind.DISTANT:
-        toward = l.frame[:, 2]
-        if l.half_angle == 0.0:
-            return float(L * max(0.0, float(np.dot(toward, n))))
-        # a cone of half-angle σ at infinity is a unit sphere of radius sin σ at distance 1
-        return float(cf.sphere_irradiance(L, p + toward, math.sin(l.half_angle), p, n))
-    raise ValueError(f"no closed form here for a {l.kind.name} light")
-
-
-def _lights_irradiance(scene: Scene, p, n) -> float:
-    return sum(_light_irradiance(l, np.asarray(p, float), np.asarray(n, float)) for l in scene.lights)
-
-
-def _square(cx: float, cy: float, z: float, size: float) -> np.ndarray:
-    h = size / 2
-    return np.array([[cx - h, cy - h, z], [cx + h, cy - h, z], [cx + h, cy + h, z], [cx - h, cy + h, z]])
-
-
-def _truth_lights(scene: Scene, sensors: list[Sensor]):
-    """Sum of every light's closed form; nothing blocks (grazing, near field,
-    tiny source, delta lights, high dynamic range)."""
-    e = np.array([_lights_irradiance(scene, s.position, s.normal) for s in sensors])
-    return e, np.abs(e)
-
-
-def _truth_leak(scene: Scene, sensors: list[Sensor]):
-    """0 under both occluders; the scale is what both lamps would give unoccluded
-    (the rect light's closed form plus the emissive 1 m square at (1, 0, 1))."""
-    panel = _square(1.0, 0.0, 1.0, 1.0)
-    le = 1000.0  # emissiveColor of /World/Looks/Emitter, radiometric
-    scale = np.array([
-        _lights_irradiance(scene, s.position, s.normal)
-        + float(cf.polygon_irradiance(le, panel, s.position, s.normal, one_sided_normal=(0, 0, -1)))
-        for s in sensors
-    ])  # fmt: skip
-    return np.zeros(len(sensors)), scale
-
-
-def _truth_on_surface(scene: Scene, sensors: list[Sensor]):
-    """Unshadowed lamps for receivers on the plane; the meter looking straight
-    down at the origin reads L = ρ/π·E(origin) (ρ = 0.5; the plane is lit by
-    the lamps only: a plane cannot light itself)."""
-    e = []
-    for s in sensors:
-        if s.kind == SensorKind.RADIANCE:
-            origin = next(x for x in sensors if x.name == "origin")
-            e.append(0.5 / math.pi * _lights_irradiance(scene, origin.position, origin.normal))
-        else:
-            e.append(_lights_irradiance(scene, s.position, s.normal))
-    e = np.array(e)
-    return e, np.abs(e)
-
-
-def _truth_furnace99(scene: Scene, sensors: list[Sensor]):
-    """E = π·L_e/(1 − ρ) anywhere inside, any orientation (L_e = 1, ρ = 0.99)."""
-    e = np.full(len(sensors), float(cf.furnace_irradiance(1.0, 0.99)))
-    return e, e.copy()
-
-
-def _truth_degenerate(scene: Scene, sensors: list[Sensor]):
-    """One 1 m emissive square at z = 2 (L = 100, facing down): a surface
-    modelled twice emits as one; receivers under the blocker (x > 1.5) read 0."""
-    lamp = _square(0.0, 0.0, 2.0, 1.0)
-    unoccluded = np.array([float(cf.polygon_irradiance(100.0, lamp, s.position, s.normal, one_sided_normal=(0, 0, -1)))
-                           for s in sensors])  # fmt: skip
-    blocked = np.array([s.position[0] > 1.5 for s in sensors])
-    return np.where(blocked, 0.0, unoccluded), unoccluded
-
-
-@dataclass(frozen=True)
-class Case:
-    """One column-group of the matrix: a bundled stage and its reference.
-
-    Attributes
-    ----------
-    name : str
-        Config stem in ``configs/stability/``.
-    what : str
-        One line for the matrix legend.
-    truth : callable
-        ``truth(scene, sensors) -> (truth, scale)``, arrays of shape (S,):
-        reference readings and the magnitudes error floors are relative to
-        (the unoccluded reading where the truth is a shadow's 0).
-    """
-
-    name: str
-    what: str
-    truth: Callable = field(repr=False)
-
-
-CASES = (
-    Case("grazing", "receivers 89 and 89.5 deg from a 1 cm sphere light", _truth_lights),
-    Case("near_rect", "receivers 1 mm under a 2 m rect light", _truth_lights),
-    Case("near_sphere", "receivers 1 mm / 1 um off a sphere light, one inside", _truth_lights),
-    Case("tiny_source", "a sphere light of radius 1 mm", _truth_lights),
-    Case("delta_point", "a point light", _truth_lights),
-    Case("delta_distant", "an angle-0 distant light", _truth_lights),
-    Case("leak", "occluders 1e-4 m below a rect light and an emissive quad", _truth_leak),
-    Case("on_surface", "receivers lying on a tilted 10 km plane", _truth_on_surface),
-    Case("furnace99", "a closed box of albedo 0.99", _truth_furnace99),
-    Case("hdr", "a 1e5 W/m2 sun and a 1 W/m2 lamp", _truth_lights),
-    Case("degenerate", "zero-area, sliver and duplicate faces", _truth_degenerate),
-)
-_CASES = {c.name: c for c in CASES}
+#: the stability suite of the reference registry (:mod:`simulator.reference.cases`)
+CASES: tuple[Case, ...] = suite("stability")
 
 
 def configs_dir() -> Path:
@@ -267,9 +153,14 @@ def configs_dir() -> Path:
     return bundled_configs_dir("stability", command="stability")
 
 
-def truth_for(case: str, scene: Scene, sensors: list[Sensor]) -> tuple[np.ndarray, np.ndarray]:
-    """Reference readings and scales (W/m², radiometric) of a case's sensors."""
-    return _CASES[case].truth(scene, sensors)
+def truth_for(case_name: str, scene: Scene, sensors: list[Sensor], cfg=None) -> tuple[np.ndarray, np.ndarray]:
+    """Reference readings and scales (W/m², radiometric) of a case's sensors:
+    the registry case's expected value and its scale (|expected| where it has none)."""
+    c = find_case(case_name)
+    ctx = CaseContext(cfg, scene, configs_dir().parent, sensors)
+    truth = np.array([float(c.expected(ctx, s, 0)) for s in sensors])
+    scale = np.abs(truth) if c.scale is None else np.array([float(c.scale(ctx, s, 0)) for s in sensors])
+    return truth, scale
 
 
 # --------------------------------------------------------------------------- cells
@@ -405,10 +296,10 @@ def load_case(name: str, device: str = "cpu"):
     from simulator.engine.driver import Engine
     from simulator.pipeline import collect_sensors, load_scene
 
-    cfg = load_config(configs_dir() / f"{name}.toml")
+    cfg = load_config(configs_dir().parent / find_case(name).config)
     scene = load_scene(cfg)
     sensors = collect_sensors(cfg, scene)
-    truth, scale = truth_for(name, scene, sensors)
+    truth, scale = truth_for(name, scene, sensors, cfg)
     return Engine(scene, sensors, device=device), truth, scale
 
 

@@ -27,6 +27,10 @@ __all__ = ["EXACT_MAX_OCCLUDERS", "exact_plan_refusal", "closed_form_refusal"]
 #: ~0.4 ms per sensor and light with a dozen candidate triangles)
 EXACT_MAX_OCCLUDERS = 256
 
+#: stages with more triangles than this are not scanned per sensor for the
+#: count above (a scan costs ~25 ns per triangle and sensor): shadow rays read them
+EXACT_MAX_SCENE_TRIANGLES = 20_000
+
 
 def exact_plan_refusal(scene: Scene, sensor: Sensor, culled: list[str]) -> str | None:
     """Why ``exact`` cannot read this sensor, or None if it can."""
@@ -43,6 +47,8 @@ def exact_plan_refusal(scene: Scene, sensor: Sensor, culled: list[str]) -> str |
             return why
     if g.n_triangles == 0:
         return None
+    if g.n_triangles > EXACT_MAX_SCENE_TRIANGLES:
+        return f"a large stage ({g.n_triangles} triangles): shadow rays"
     pts = g.points[g.triangles]
     tol = 1e-9 * max(1.0, float(np.abs(pts).max()))
     front = np.any((pts - sensor.position) @ sensor.normal > tol, axis=1)

@@ -33,9 +33,11 @@ import numpy as np
 from simulator.errors import UserError
 from simulator.plan.exact_rule import exact_plan_refusal
 from simulator.engine.methods import MC_METHODS
+from simulator.plan.bounds import FrontIndex
 from simulator.scene.model import LightKind, Scene, Sensor, SensorKind, patch_width_axis
 
-__all__ = ["MC_METHODS", "SensorPlan", "Plan", "make_plan", "probe_method", "analytic_refusal", "lights_behind", "cull_mask", "format_plan"]
+__all__ = ["MC_METHODS", "SensorPlan", "Plan", "SceneBounds", "make_plan", "probe_method", "analytic_refusal", "scene_bounds",
+           "lights_behind", "cull_mask", "format_plan"]
 
 #: a light subtending more than this solid angle (sr) from a direct-lit
 #: sensor makes `mis` the plan: its cosine-weighted direction then lands on
@@ -64,20 +66,75 @@ def probe_method(scene: Scene, requested: str, component: str = "total") -> tupl
     raise UserError(f"simulation.method: {requested!r} is not a method (use auto, analytic, light, bsdf, mis or path)")
 
 
-def _front_of_plane(points: np.ndarray, origin: np.ndarray, normal: np.ndarray, tol: float) -> np.ndarray:
-    """Per triangle: does any vertex lie strictly in front of the plane?"""
-    h = (points - origin) @ normal  # (T, 3)
-    return np.any(h > tol, axis=1)
+@dataclass
+class SceneBounds:
+    """What the planner's geometric tests need of a scene, computed once.
+
+    Attributes
+    ----------
+    index : FrontIndex or None
+        The triangles (None without geometry), with the subsets ``all``,
+        ``suspect`` (those that may block a light: all, or, when every light
+        is a one-sided rect or disk and nothing emits, those not wholly behind
+        every light's emitting plane), ``opaque`` (not emissive) and
+        ``reflecting`` (albedo > 0).
+    emissive : bool
+        Some triangle emits.
+    coplanar_emitters : bool
+        Every emissive triangle lies in one plane (emitters cannot shadow one another).
+    """
+
+    index: FrontIndex | None
+    emissive: bool = False
+    coplanar_emitters: bool = False
+    _last: tuple = (None, None)
+
+    def first_in_front(self, sensor: Sensor) -> dict[str, int]:
+        """:meth:`FrontIndex.first_in_front` for the sensor's plane (the last answer is kept:
+        the refusal and the reflection test ask about the same sensor in turn)."""
+        key = (sensor.position.tobytes(), sensor.normal.tobytes())
+        if self._last[0] != key:
+            self._last = (key, self.index.first_in_front(sensor.position, sensor.normal))
+        return self._last[1]
 
 
-def analytic_refusal(scene: Scene, sensor: Sensor) -> str | None:
+def scene_bounds(scene: Scene) -> SceneBounds:
+    """Build the :class:`SceneBounds` of a scene (O(T log T), once per plan)."""
+    g = scene.geometry
+    if g.n_triangles == 0:
+        return SceneBounds(None)
+    pts = g.points[g.triangles]  # (T, 3, 3)
+    # vertices within float64 rounding of the sensor's plane (a floor under a
+    # sensor lying on it) count as behind it, not in front
+    tol = 1e-9 * max(1.0, float(pts.max()), -float(pts.min()))
+    emissive = np.any(g.emission > 0, axis=1)
+    suspect = np.ones(len(pts), bool)
+    planar = [l for l in scene.lights if l.kind in (LightKind.RECT, LightKind.DISK)]
+    if len(planar) == len(scene.lights) and not emissive.any():
+        behind_all = np.ones(len(pts), bool)
+        for l in planar:  # wholly on the non-emitting side of the light's plane
+            behind_all &= np.all((pts - l.position) @ l.frame[:, 2] >= -tol, axis=1)
+        suspect = ~behind_all
+    coplanar = False
+    if emissive.any():
+        e = pts[emissive]
+        with np.errstate(invalid="ignore", divide="ignore"):  # a degenerate first emitter: not coplanar
+            n0 = np.cross(e[0, 1] - e[0, 0], e[0, 2] - e[0, 0])
+            n0 /= np.linalg.norm(n0)
+            coplanar = bool(np.all(np.abs((e - e[0, 0]) @ n0) <= tol))
+    subsets = {"all": np.ones(len(pts), bool), "suspect": suspect, "opaque": ~emissive, "reflecting": g.albedo > 0}
+    return SceneBounds(FrontIndex(pts, subsets, tol), bool(emissive.any()), coplanar)
+
+
+def analytic_refusal(scene: Scene, sensor: Sensor, bounds: SceneBounds | None = None) -> str | None:
     """Why the closed form cannot give this sensor's reading, or None if it can.
 
     Conservative: a triangle that is not wholly behind the sensor's plane may
     block a light unless it is wholly behind that light's emitting plane (rect
     and disk lights, which emit to one side only); any such triangle refuses
     the closed form. Patches have a closed form for point lights only, radiance
-    meters and probes none.
+    meters and probes none. ``bounds``: the scene's :func:`scene_bounds`
+    (built here when not given).
     """
     if sensor.kind == SensorKind.PATCH:
         if any(l.kind != LightKind.POINT for l in scene.lights):
@@ -85,7 +142,6 @@ def analytic_refusal(scene: Scene, sensor: Sensor) -> str | None:
     elif sensor.kind != SensorKind.IRRADIANCE:
         return f"no closed form for a {sensor.kind.name.lower()} sensor"
     g = scene.geometry
-    emissive = np.any(g.emission > 0, axis=1) if g.n_triangles else np.zeros(0, bool)
     for l in scene.lights:
         if l.kind == LightKind.CYLINDER:
             return f"no closed form for the CylinderLight {l.name}"
@@ -100,28 +156,14 @@ def analytic_refusal(scene: Scene, sensor: Sensor) -> str | None:
                 return f"the DiskLight {l.name} straddles the sensor's horizon"
     if g.n_triangles == 0:
         return None
-    pts = g.points[g.triangles]  # (T, 3, 3)
-    # vertices within float64 rounding of the sensor's plane (a floor under a
-    # sensor lying on it) count as behind it, not in front
-    tol = 1e-9 * max(1.0, float(np.abs(pts).max()))
-    suspects = _front_of_plane(pts, sensor.position, sensor.normal, tol)  # a patch is planar too
-    if not suspects.any():
+    bounds = bounds or scene_bounds(scene)
+    first = bounds.first_in_front(sensor)  # a patch is planar too
+    if first["all"] < 0:
         return None
-    planar = [l for l in scene.lights if l.kind in (LightKind.RECT, LightKind.DISK)]
-    if len(planar) == len(scene.lights) and not emissive.any():
-        behind_all = np.ones(len(pts), bool)
-        for l in planar:  # wholly on the non-emitting side of the light's plane
-            behind_all &= np.all((pts - l.position) @ l.frame[:, 2] >= -tol, axis=1)
-        suspects &= ~behind_all
-    if emissive.any() and not (suspects & ~emissive).any():
-        # only emitters in front: they cannot shadow one another if they are coplanar
-        e = pts[emissive]
-        n0 = np.cross(e[0, 1] - e[0, 0], e[0, 2] - e[0, 0])
-        n0 /= np.linalg.norm(n0)
-        if np.all(np.abs((e - e[0, 0]) @ n0) <= tol) and len(scene.lights) == 0:
-            return None
-    if suspects.any():
-        name = g.prim_names[g.prim[np.flatnonzero(suspects)[0]]] if g.prim_names else "a surface"
+    if bounds.emissive and first["opaque"] < 0 and bounds.coplanar_emitters and len(scene.lights) == 0:
+        return None  # only emitters in front: coplanar ones cannot shadow one another
+    if first["suspect"] >= 0:
+        name = g.prim_names[g.prim[first["suspect"]]] if g.prim_names else "a surface"
         return f"{name} may block a light"
     return None
 
@@ -268,22 +310,18 @@ def _patch_corners(s: Sensor) -> list[np.ndarray]:
     return [s.position + a * hx + b * hy for a in (-1, 1) for b in (-1, 1)]
 
 
-def _reflecting_in_front(scene: Scene, sensor: Sensor) -> tuple[str, bool]:
+def _reflecting_in_front(scene: Scene, sensor: Sensor, bounds: SceneBounds) -> tuple[str, bool]:
     """(geometry label, whether any surface the sensor can see reflects)."""
     g = scene.geometry
     if g.n_triangles == 0:
         return "none", False
     if sensor.kind in (SensorKind.IRRADIANCE, SensorKind.PATCH):
-        pts = g.points[g.triangles]
-        # vertices within float64 rounding of the sensor's plane (a floor under a
-        # sensor lying on it) count as behind it, not in front
-        tol = 1e-9 * max(1.0, float(np.abs(pts).max()))
-        front = _front_of_plane(pts, sensor.position, sensor.normal, tol)
+        first = bounds.first_in_front(sensor)
+        if first["all"] < 0:
+            return "none", False
+        reflects = first["reflecting"] >= 0
     else:  # meters and probes look everywhere
-        front = np.ones(g.n_triangles, bool)
-    if not front.any():
-        return "none", False
-    reflects = bool(np.any(g.albedo[front] > 0))
+        reflects = bool(np.any(g.albedo > 0))
     return ("reflecting surfaces" if reflects else "black occluders"), reflects
 
 
@@ -294,16 +332,17 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
     raises :class:`UserError` naming a sensor it cannot read).
     """
     grey = "materials and lights are grey (colours reduced to luminance grey): one spectral channel"
+    bounds = scene_bounds(scene)
     plans = []
     for s in sensors:
         culled = lights_behind(scene, s)
         lights = [l.name for l in scene.lights if l.name not in culled]
-        if scene.geometry.n_triangles and np.any(scene.geometry.emission > 0):
+        if bounds.emissive:
             lights.append("emissive surfaces")
-        geometry, reflects = _reflecting_in_front(scene, s)
+        geometry, reflects = _reflecting_in_front(scene, s, bounds)
         kind = s.kind.name.lower()
         if requested != "auto":
-            if requested == "analytic" and (why := analytic_refusal(scene, s)) is not None:
+            if requested == "analytic" and (why := analytic_refusal(scene, s, bounds)) is not None:
                 raise UserError(f"method analytic cannot read sensor {s.name!r}: {why} (use light, mis, path or auto)")
             if requested == "exact" and (why := exact_plan_refusal(scene, s, culled)) is not None:
                 raise UserError(f"method exact cannot read sensor {s.name!r}: {why} (use light, mis, path or auto)")
@@ -311,7 +350,7 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
             reason = "as requested" + ("" if bounces or not reflects else f"; {requested} ignores the interreflection this sensor sees")
             plans.append(SensorPlan(s.name, kind, requested, bounces, reason, lights, culled, geometry))
             continue
-        refusal = analytic_refusal(scene, s)
+        refusal = analytic_refusal(scene, s, bounds)
         if component == "indirect":
             method, reason = "path", "indirect light has been reflected on the way: paths"
         elif refusal is None and (not reflects or component == "direct"):

@@ -1,0 +1,165 @@
+"""The run config file as pydantic models: what each table may say.
+
+One model per TOML table, its fields in the order messages list them; the
+rules of each value are in its type (:mod:`simulator.config.fields`). The
+sensor kinds are in :mod:`simulator.config.sensors`. Paths are checked as
+text here and resolved by :mod:`simulator.config.loader`; command-line
+flags are checked by these same models (:mod:`simulator.config.overrides`).
+
+::
+
+    stage = "../stages/quickstart.usda"   # required, must exist
+    light_units = "photometric"           # or "radiometric"
+    radiometric_spectrum = "E"            # or "D65"
+    variants = { reflectance = "rho_0_9" } # optional: variant set -> variant,
+                                          # selected on every prim with that set
+
+    [simulation]
+    samples = 1024        # int > 0 (first-batch size when adaptive)
+    seed = 1              # 0 <= int < 2**31
+    method = "auto"       # auto | analytic | light | bsdf | mis | path
+    device = "cpu"        # cpu | cuda | auto
+    rel_error = 0.01      # optional, 0 < x < 1: adaptive stopping target
+    abs_error = 0.0       # >= 0, absolute floor near zero
+    max_samples = 1048576 # optional int > 0, per-sensor cap when adaptive
+    time_limit_s = 60.0   # optional float > 0, seconds
+    max_depth = -1        # int >= -1; -1 = unlimited (Russian roulette)
+    threads = 0           # int >= 0; 0 = all cores
+    component = "total"   # total | direct | indirect
+    confidence = 0.95     # 0.5 < x < 1: confidence of the adaptive stop
+
+    [[sensor]]            # irradiance | radiance | patch | probe
+    name = "desk"
+    kind = "irradiance"
+    position = [0, 0, 0.75]
+    normal = [0, 0, 1]
+
+    [[sensor]]            # full-sphere light probe
+    name = "centre"
+    kind = "probe"
+    position = [0, 0, 1.5]
+    resolution = [64, 32] # lat-long map (width, height) in pixels, optional
+
+    [[grid]]              # expanded into IRRADIANCE sensors "floor[i,j]"
+    name = "floor"
+    position = [0, 0, 0]
+    normal = [0, 0, 1]
+    size = [4, 3]         # metres
+    up = [0, 1, 0]
+    spacing = 0.5         # or [sx, sy], metres
+
+    [output]
+    csv = "out.csv"       # default: "<config stem>.csv" beside the config
+
+Vectors are in the probesim world frame (metres, right-handed, Z up).
+"""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import numpy as np
+from pydantic import Field, ValidationInfo, field_validator
+
+from simulator.config.fields import (
+    Count, Direction, Integer, Number, Point, Positive, Size, Spacing, Text, choice, interval, nonblank,
+    orthogonal_up, tables,
+)  # fmt: skip
+from simulator.config.records import (
+    COMPONENTS, DEVICES, LIGHT_UNITS, METHODS, SEED_LIMIT, GridConfig, SimulationConfig,
+)  # fmt: skip
+from simulator.config.sensors import SensorEntry
+from simulator.config.table import Table
+from simulator.scene.model import Sensor, SensorKind, patch_width_axis
+from simulator.units import SPECTRA
+
+__all__ = ["Simulation", "Grid", "Output", "RunFile", "Variants"]
+
+_D = SimulationConfig()  # the defaults
+
+
+class Simulation(Table):
+    """``[simulation]``; see :class:`~simulator.config.records.SimulationConfig` for the meaning of each key."""
+
+    samples: Count = _D.samples
+    seed: Annotated[Integer, Field(ge=0, lt=SEED_LIMIT)] = _D.seed
+    method: Annotated[Text, choice(METHODS, "method")] = _D.method
+    device: Annotated[Text, choice(DEVICES, "device")] = _D.device
+    rel_error: Annotated[Number, interval(0.0, 1.0)] | None = _D.rel_error
+    abs_error: Annotated[Number, Field(ge=0.0)] = _D.abs_error
+    max_samples: Count | None = _D.max_samples
+    time_limit_s: Positive | None = _D.time_limit_s
+    max_depth: Annotated[Integer, Field(ge=-1)] = _D.max_depth
+    threads: Annotated[Integer, Field(ge=0)] = _D.threads
+    component: Annotated[Text, choice(COMPONENTS, "component")] = _D.component
+    confidence: Annotated[Number, interval(0.5, 1.0)] = _D.confidence
+
+    def to_record(self) -> SimulationConfig:
+        return SimulationConfig(**dict(self))
+
+
+class Grid(Table):
+    """``[[grid]]``: a rectangle of irradiance sensors at the centres of its cells.
+
+    ``size`` (metres) is split into ``max(1, round(width / sx))`` ×
+    ``max(1, round(height / sy))`` cells for ``spacing`` ``(sx, sy)``.
+    """
+
+    name: Annotated[Text, nonblank("empty name")]
+    position: Point
+    normal: Direction
+    size: Size
+    up: Direction
+    spacing: Spacing
+
+    @field_validator("up")
+    @classmethod
+    def _up_orthogonal(cls, up: np.ndarray, info: ValidationInfo) -> np.ndarray:
+        return orthogonal_up(up, info.data.get("normal"))
+
+    def to_grid(self, source: str) -> tuple[GridConfig, list[Sensor]]:
+        """The grid record and its cell sensors (``j`` outer, ``i`` inner), defined at config key ``source``."""
+        (w, h), (sx, sy) = self.size, self.spacing
+        right = patch_width_axis(self.up, self.normal)
+        nx = max(1, round(w / sx))
+        ny = max(1, round(h / sy))
+        grid = GridConfig(
+            name=self.name, source=source, nx=nx, ny=ny, centre=self.position, normal=self.normal, right=right,
+            up=self.up, size=(w, h), spacing=(sx, sy),
+            sensor_names=tuple(f"{self.name}[{i},{j}]" for j in range(ny) for i in range(nx)),
+        )  # fmt: skip
+        cells = [
+            Sensor(
+                name=grid.cell_name(i, j), kind=SensorKind.IRRADIANCE, position=grid.cell_centre(i, j),
+                normal=self.normal.copy(), grid=self.name, source=source,
+            )  # fmt: skip
+            for j in range(ny)
+            for i in range(nx)
+        ]
+        return grid, cells
+
+
+class Output(Table):
+    """``[output]``: ``csv`` is resolved against the config's folder (default ``<config stem>.csv`` there)."""
+
+    csv: Annotated[Text, nonblank("empty path")] | None = None
+
+
+#: ``variants``: variant-set name -> variant name
+Variants = dict[
+    Annotated[Text, nonblank("empty variant set name")],
+    Annotated[Text, nonblank("empty variant name")],
+]
+
+
+class RunFile(Table):
+    """A whole run config file."""
+
+    stage: Annotated[Text, nonblank("empty path")]
+    light_units: Annotated[Text, choice(LIGHT_UNITS, "light units")] = "photometric"
+    radiometric_spectrum: Annotated[Text, choice(tuple(SPECTRA), "spectrum")] = "E"
+    variants: Variants = {}
+    simulation: Simulation = Simulation()
+    sensor: Annotated[list[SensorEntry], tables("sensor")] = []
+    grid: Annotated[list[Grid], tables("grid")] = []
+    output: Output = Output()

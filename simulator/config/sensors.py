@@ -1,0 +1,176 @@
+"""``[[sensor]]`` entries: one schema model per sensor kind, chosen by ``kind``.
+
+Each kind's model lists the keys that kind takes (beside ``name``, ``kind``
+and ``position``, which every kind has) and builds its
+:class:`~simulator.scene.model.Sensor`. :data:`SensorEntry` is the
+discriminated union of them on ``kind``; a new kind is one more model in
+:data:`SENSOR_ENTRIES`.
+
+::
+
+    [[sensor]]            # irradiance | radiance | patch | probe
+    name = "desk"         # default: "sensor[<index>]"
+    kind = "irradiance"
+    position = [0, 0, 0.75]   # metres
+    normal = [0, 0, 1]
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated, Any, ClassVar, Literal, Union, get_args
+
+import numpy as np
+from pydantic import BeforeValidator, ConfigDict, Field, ValidationInfo, field_validator
+from pydantic_core import PydanticCustomError
+
+from simulator.config.errors import MISSING, expected, rule, unknown_key
+from simulator.config.fields import (
+    Direction, Number, Point, Resolution, Size, Text, interval, nonblank, one_of, orthogonal_up,
+)  # fmt: skip
+from simulator.config.table import Table
+from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SensorKind, Sensor
+
+__all__ = [
+    "SensorFields",
+    "IrradianceEntry",
+    "RadianceEntry",
+    "PatchEntry",
+    "ProbeEntry",
+    "SENSOR_ENTRIES",
+    "SENSOR_KEYS",
+    "SensorEntry",
+]
+
+
+class SensorFields(Table):
+    """Keys every sensor kind has.
+
+    Attributes
+    ----------
+    name : str or None
+        None: the sensor is named after its config key, ``sensor[<index>]``.
+    kind : str
+        The kind's name (each kind narrows it to its own literal).
+    position : ndarray, shape (3,)
+        Metres (the centre, for a patch).
+    """
+
+    # validated only inside RunFile: no validator of their own to compile
+    model_config = ConfigDict(defer_build=True)
+
+    #: the sensor kind built
+    KIND: ClassVar[SensorKind]
+
+    name: Annotated[Text, nonblank("empty name")] | None = None
+    kind: str
+    position: Point
+
+    @classmethod
+    def key_not_allowed(cls, key: str) -> PydanticCustomError:
+        """A key of another kind: ``not valid for kind 'irradiance' (keys for irradiance: ...)``."""
+        (kind,) = get_args(cls.model_fields["kind"].annotation)
+        return rule(f"not valid for kind {kind!r} (keys for {kind}: {', '.join(cls.model_fields)})", key=key)
+
+    def to_sensor(self, name: str, source: str) -> Sensor:
+        """The :class:`Sensor` this entry describes, named ``name``, defined at config key ``source``."""
+        raise NotImplementedError
+
+
+class IrradianceEntry(SensorFields):
+    """A point receiver: irradiance on the side ``normal`` faces."""
+
+    KIND = SensorKind.IRRADIANCE
+    kind: Literal["irradiance"]
+    normal: Direction
+
+    def to_sensor(self, name: str, source: str) -> Sensor:
+        return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.normal, source=source)
+
+
+class RadianceEntry(SensorFields):
+    """A radiance meter: mean radiance from a cone of ``half_angle_deg`` about ``direction``."""
+
+    KIND = SensorKind.RADIANCE
+    kind: Literal["radiance"]
+    direction: Direction
+    half_angle_deg: Annotated[Number, interval(0.0, 90.0, closed_lo=True, unit="degrees")] = 0.0
+
+    def to_sensor(self, name: str, source: str) -> Sensor:
+        return Sensor(
+            name=name, kind=self.KIND, position=self.position, normal=self.direction,
+            half_angle=math.radians(self.half_angle_deg), source=source,
+        )  # fmt: skip
+
+
+class PatchEntry(SensorFields):
+    """A rectangle ``size`` (metres) facing ``normal``, its height side along ``up``."""
+
+    KIND = SensorKind.PATCH
+    kind: Literal["patch"]
+    normal: Direction
+    size: Size
+    up: Direction
+
+    @field_validator("up")
+    @classmethod
+    def _up_orthogonal(cls, up: np.ndarray, info: ValidationInfo) -> np.ndarray:
+        return orthogonal_up(up, info.data.get("normal"))
+
+    def to_sensor(self, name: str, source: str) -> Sensor:
+        return Sensor(
+            name=name, kind=self.KIND, position=self.position, normal=self.normal, up=self.up, size=self.size,
+            source=source,
+        )  # fmt: skip
+
+
+class ProbeEntry(SensorFields):
+    """A full-sphere light probe with a lat-long map of ``resolution`` (width, height) pixels."""
+
+    KIND = SensorKind.PROBE
+    kind: Literal["probe"]
+    resolution: Resolution = DEFAULT_PROBE_RESOLUTION
+
+    def to_sensor(self, name: str, source: str) -> Sensor:
+        # a probe has no facing; normal and up are placeholders (the map's
+        # frame is the world's, see simulator.engine.probes)
+        return Sensor(
+            name=name, kind=self.KIND, position=self.position, normal=np.array([0.0, 0.0, 1.0]),
+            up=np.array([0.0, 1.0, 0.0]), resolution=self.resolution, source=source,
+        )  # fmt: skip
+
+
+#: the model of each kind, by the name configs use (the order of
+#: :data:`simulator.scene.model.SENSOR_KINDS`)
+SENSOR_ENTRIES: dict[str, type[SensorFields]] = {
+    "irradiance": IrradianceEntry,
+    "radiance": RadianceEntry,
+    "patch": PatchEntry,
+    "probe": ProbeEntry,
+}
+#: every key some kind takes, in a stable order
+SENSOR_KEYS: tuple[str, ...] = tuple(dict.fromkeys(k for m in SENSOR_ENTRIES.values() for k in m.model_fields))
+
+
+def _kind_first(value: Any) -> Any:
+    """Before the union picks a model: keys no kind takes, then ``kind`` itself."""
+    if not isinstance(value, dict):
+        return value
+    for key in value:
+        if key not in SENSOR_KEYS:
+            raise unknown_key(key, SENSOR_KEYS)
+    if "kind" not in value:
+        raise rule(MISSING, key="kind")
+    kind = value["kind"]
+    if not isinstance(kind, str):
+        raise rule(expected("a string", kind), key="kind")
+    one_of(kind, tuple(SENSOR_ENTRIES), "sensor kind", key="kind")
+    return value
+
+
+#: one ``[[sensor]]`` table: the model of its kind
+SensorEntry = Annotated[
+    Union[tuple(SENSOR_ENTRIES.values())],
+    Field(discriminator="kind"),
+    BeforeValidator(_kind_first),
+]
