@@ -7,8 +7,10 @@ For each config and each estimator that applies it measures, after a warm-up
 - the time to reach 1%: an adaptive run with ``rel_error = 0.01`` until every
   sensor's 95% half-width is under 1% of its reading (or the cap).
 
-and finally the CPU speed-up of all cores over one thread on the quickstart
-stage. Figures are printed with the device and processor they came from.
+for a config with a stored reference (``configs/references/NAME.csv``), the
+time to 1% and 0.3% relative RMS error of the planned run against it
+(:mod:`simulator.commands.bench_reference`); and finally the CPU speed-up of
+all cores over one thread on the quickstart stage. Figures are printed with the device and processor they came from.
 """
 
 from __future__ import annotations
@@ -23,7 +25,7 @@ import numpy as np
 
 from simulator.bundled import bundled_configs
 from simulator.config.loader import load_config
-from simulator.plan.planner import MC_METHODS, analytic_refusal
+from simulator.plan.planner import MC_METHODS
 from simulator.pipeline import collect_sensors, load_scene
 
 __all__ = ["BenchRow", "default_configs", "run_bench", "format_bench", "processor_name"]
@@ -31,7 +33,7 @@ __all__ = ["BenchRow", "default_configs", "run_bench", "format_bench", "processo
 #: the bundled configs benchmarked by default (those present are used)
 DEFAULT_CONFIGS = (
     "point", "sphere", "rect", "disk", "distant_occluder", "dome", "quickstart",
-    "furnace", "integrating_sphere", "cie171_5_8",
+    "furnace", "integrating_sphere", "cie171_5_8", "occluded_floor_grid", "office_bench",
 )  # fmt: skip
 
 
@@ -82,7 +84,8 @@ def _bench_one(engine, scene, sensors, method: str, samples: int, cap: int) -> B
     return BenchRow(name, method, len(sensors), n / dt, n / dt * rays_per_sample, t1, reached)
 
 
-def run_bench(configs: list[Path], device: str = "cpu", samples: int = 4096, cap: int = 1 << 20, log=print) -> tuple[list[BenchRow], dict]:
+def run_bench(configs: list[Path], device: str = "cpu", samples: int = 4096, cap: int = 1 << 20, log=print,
+              reference_seconds: float = 60.0) -> tuple[list[BenchRow], dict]:
     """Benchmark each config with each applicable estimator.
 
     Returns the rows and a dict with the device, processor, threads and the
@@ -100,14 +103,24 @@ def run_bench(configs: list[Path], device: str = "cpu", samples: int = 4096, cap
         engine = Engine(scene, sensors, device=device)
         info["device"] = engine.device
         info["threads"] = engine.threads
+        from simulator.commands.bench_reference import reference_path
+        from simulator.plan.exact_rule import closed_form_refusal
+
+        if reference_path(path).is_file():
+            continue  # measured against its reference below
         reflects = scene.geometry.n_triangles > 0 and bool(np.any(scene.geometry.albedo > 0))
-        methods = (["analytic"] if all(analytic_refusal(scene, s) is None for s in sensors) else []) + list(MC_METHODS)
+        closed = [m for m in ("analytic", "exact") if all(closed_form_refusal(m, scene, s) is None for s in sensors)]
+        methods = closed[:1] + list(MC_METHODS)
+        if closed[:1] == ["exact"]:
+            from simulator.plan.planner import cull_mask
+
+            engine.set_light_mask(cull_mask(scene, sensors))
         for m in methods:
             if m != "path" and m != "analytic" and reflects:
                 row = BenchRow(path.stem, m, len(sensors), None, None, None, False, "biased: ignores interreflection")
-            elif m == "analytic":
+            elif m in ("analytic", "exact"):
                 t0 = time.perf_counter()
-                engine.run("analytic", samples=1, seed=1)
+                engine.run(m, samples=1, seed=1)
                 dt = time.perf_counter() - t0
                 row = BenchRow(path.stem, m, len(sensors), None, None, dt, True, "exact (closed form)")
             else:
@@ -115,6 +128,15 @@ def run_bench(configs: list[Path], device: str = "cpu", samples: int = 4096, cap
                 row.config = path.stem
             rows.append(row)
             log(format_bench([row], header=False))
+    # time to a relative RMS error against a stored reference, where there is one
+    from simulator.commands.bench_reference import format_reference_curve, reference_curve, reference_path
+
+    info["reference_curves"] = []
+    for path in configs:
+        if reference_path(path).is_file():
+            curve = reference_curve(path, device=device, max_seconds=reference_seconds, log=log)
+            info["reference_curves"].append(curve)
+            log(format_reference_curve(curve))
     # CPU scaling: the quickstart's path tracing on one thread and on all
     qs = [p for p in configs if p.stem == "quickstart"]
     if qs and info.get("device") == "cpu" and (os.cpu_count() or 1) > 1:

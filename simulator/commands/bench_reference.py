@@ -46,12 +46,12 @@ class ReferenceCurve:
         if not self.points:
             return None
         pts = [(t, e) for _, t, e in self.points if e > 0 and t > 0]
+        if not pts or self.points[0][2] <= target:  # met by the first budget (an exact method: error 0)
+            return self.points[0][1]
         for (t0, e0), (t1, e1) in zip(pts, pts[1:]):
             if e0 >= target >= e1:  # log-log interpolation between budgets
                 a = np.log(target / e0) / np.log(e1 / e0)
                 return float(np.exp(np.log(t0) + a * (np.log(t1) - np.log(t0))))
-        if pts[-1][1] <= target and pts[0][1] <= target:
-            return pts[0][0] * (pts[0][1] / target) ** 2
         t, e = pts[-1]
         return t * (e / target) ** 2
 

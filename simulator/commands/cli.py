@@ -27,7 +27,7 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("-o", "--output", metavar="OUT.csv", help="CSV path (default: the config's [output] csv)")
     r.add_argument("--seed", type=int, help="random seed (overrides [simulation] seed)")
     r.add_argument("--samples", type=int, help="samples per sensor (overrides [simulation] samples)")
-    r.add_argument("--method", help="estimator: auto, analytic, light, bsdf, mis or path")
+    r.add_argument("--method", help="estimator: auto, analytic, exact, light, bsdf, mis or path")
     r.add_argument("--rel-error", type=float, metavar="R", help="adaptive: stop each sensor when its confidence half-width is under R × its reading")
     r.add_argument("--variant", action="append", metavar="SET=VARIANT",
                    help="select a USD variant before reading (repeatable; overrides the config's variants)")
@@ -43,6 +43,8 @@ def _parser() -> argparse.ArgumentParser:
     b.add_argument("configs", nargs="*", help="configs to benchmark (default: the bundled ones)")
     b.add_argument("--device", choices=("cpu", "cuda", "auto"), default="cpu")
     b.add_argument("--samples", type=int, default=4096, help="fixed budget per sensor for samples/s (default 4096)")
+    b.add_argument("--reference-seconds", type=float, default=60.0, metavar="S",
+                   help="configs with a stored reference: double the budget until one run takes S/2 seconds (default 60)")
 
     c = sub.add_parser("compare", help="error of map A against reference map B (EXR): RMS, largest error, PSNR/SSIM")
     c.add_argument("a", metavar="A.exr", help="map to judge")
@@ -154,7 +156,9 @@ def _cmd_bench(args) -> int:
         if not c.is_file():
             raise UserError(f"{c}: config file not found")
     print(format_bench([], header=True))
-    rows, info = run_bench(configs, device=args.device, samples=args.samples)
+    if not args.reference_seconds > 0:
+        raise UserError(f"--reference-seconds: must be > 0, got {args.reference_seconds}")
+    rows, info = run_bench(configs, device=args.device, samples=args.samples, reference_seconds=args.reference_seconds)
     print(f"device {info['device']} ({info['processor']}, {info['threads']} threads); "
           "time to 1%: every sensor's 95% half-width under 1% of its reading (* = cap reached first)")
     sc = info.get("scaling")

@@ -63,7 +63,7 @@ def probe_method(scene: Scene, requested: str, component: str = "total") -> tupl
         if requested != "path" and reflects:
             return requested, f"as requested; direct light only: interreflection is ignored ({requested} does not bounce)"
         return requested, "as requested"
-    raise UserError(f"simulation.method: {requested!r} is not a method (use auto, analytic, light, bsdf, mis or path)")
+    raise UserError(f"simulation.method: {requested!r} is not a method (use auto, analytic, exact, light, bsdf, mis or path)")
 
 
 @dataclass
