@@ -27,7 +27,6 @@ nothing), other tilts are refused (one-line :class:`UserError`).
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import numpy as np
 

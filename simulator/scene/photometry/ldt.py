@@ -46,7 +46,6 @@ type C horizontal angles.
 
 from __future__ import annotations
 
-from pathlib import Path
 
 import numpy as np
 
