@@ -12,7 +12,14 @@ __all__ = ["ProgressBar"]
 
 
 class ProgressBar:
-    """Callable fed :class:`simulator.engine.driver.Progress` updates."""
+    """Callable fed :class:`simulator.engine.driver.Progress` updates.
+
+    Other progress lines (a study's chunks) subclass it and call :meth:`draw`
+    with their own counts and text.
+    """
+
+    #: characters in the bar
+    WIDTH = 24
 
     def __init__(self, label: str, stream=None, min_interval_s: float = 0.2):
         self.label = label
@@ -30,14 +37,16 @@ class ProgressBar:
         if not final and now - self._last < self.min_interval_s:
             return
         self._last = now
-        frac = p.sensors_done / max(p.sensors_total, 1)
-        width = 24
-        bar = "#" * int(round(frac * width))
         eta = "" if p.eta_s is None or final else f", ~{p.eta_s:.0f} s left"
-        self.stream.write(
-            f"\r{self.label} [{bar:<{width}}] {p.sensors_done}/{p.sensors_total} sensors done, "
-            f"{p.samples:,} samples, {p.elapsed_s:.1f} s{eta}   "
-        )
+        self.draw(
+            p.sensors_done, p.sensors_total,
+            f"{p.sensors_done}/{p.sensors_total} sensors done, {p.samples:,} samples, {p.elapsed_s:.1f} s{eta}",
+        )  # fmt: skip
+
+    def draw(self, done: int, total: int, text: str) -> None:
+        """Redraw the line: the label, a bar filled ``done / total``, then ``text``."""
+        bar = "#" * int(round(done / max(total, 1) * self.WIDTH))
+        self.stream.write(f"\r{self.label} [{bar:<{self.WIDTH}}] {text}   ")
         self.stream.flush()
         self._drawn = True
 

@@ -7,18 +7,17 @@ import sys
 import time
 from pathlib import Path
 
+from simulator.commands.progress import ProgressBar
 from simulator.errors import UserError
 
 __all__ = ["main_study", "ChunkProgress", "closing_note"]
 
 
-class ChunkProgress:
+class ChunkProgress(ProgressBar):
     """Chunks done and time left, one redrawn line on a terminal; silent otherwise."""
 
     def __init__(self, stream=None):
-        self.stream = stream or sys.stderr
-        self.enabled = hasattr(self.stream, "isatty") and self.stream.isatty()
-        self._drawn = False
+        super().__init__("chunks", stream)
 
     def __call__(self, done: int, total: int, elapsed_s: float) -> None:
         if not self.enabled:
@@ -27,16 +26,8 @@ class ChunkProgress:
             self._start = done
         new = done - self._start
         left = (total - done) * elapsed_s / new if new > 0 else None
-        bar = "#" * int(round(24 * done / max(total, 1)))
         eta = f", ~{left:.0f} s left" if left is not None and done < total else ""
-        self.stream.write(f"\rchunks [{bar:<24}] {done}/{total}, {elapsed_s:.1f} s{eta}   ")
-        self.stream.flush()
-        self._drawn = True
-
-    def close(self) -> None:
-        if self._drawn:
-            self.stream.write("\n")
-            self.stream.flush()
+        self.draw(done, total, f"{done}/{total}, {elapsed_s:.1f} s{eta}")
 
 
 def _out_dir(study, path: Path, out: str | None) -> Path:

@@ -52,21 +52,15 @@ _BOUNDS = {
     "less_than_equal": ("<=", "le"),
 }
 
+#: TOML's name of each parsed Python type, first match wins (bool before int: a bool is an int)
+_TOML_TYPES = ((bool, "boolean"), (int, "integer"), (float, "float"), (str, "string"), (list, "array"), (dict, "table"))
+
 
 def toml_type(value: Any) -> str:
     """TOML's name for the type of a parsed value (``"integer"``, ``"table"``, ...)."""
-    if isinstance(value, bool):
-        return "boolean"
-    if isinstance(value, int):
-        return "integer"
-    if isinstance(value, float):
-        return "float"
-    if isinstance(value, str):
-        return "string"
-    if isinstance(value, list):
-        return "array"
-    if isinstance(value, dict):
-        return "table"
+    for cls, name in _TOML_TYPES:
+        if isinstance(value, cls):
+            return name
     return "date/time" if value is not None else "nothing"
 
 

@@ -18,7 +18,7 @@ import math
 from typing import Annotated, Any, Union
 
 import numpy as np
-from pydantic import AfterValidator, BeforeValidator, Discriminator, Field, Strict, Tag
+from pydantic import AfterValidator, BeforeValidator, Discriminator, Field, Strict, Tag, ValidationInfo
 from pydantic.types import AllowInfNan
 
 from simulator.config.errors import expected, rule, toml_type
@@ -37,6 +37,7 @@ __all__ = [
     "tables",
     "Point",
     "Direction",
+    "UpDirection",
     "Size",
     "Resolution",
     "Spacing",
@@ -173,6 +174,15 @@ def orthogonal_up(up: np.ndarray, normal: np.ndarray | None) -> np.ndarray:
 Point = Annotated[list[Number], _array(3), AfterValidator(_float64)]
 #: a direction, normalised: float64 array, shape (3,)
 Direction = Annotated[Point, AfterValidator(_unit)]
+
+
+def _up_beside_normal(up: np.ndarray, info: ValidationInfo) -> np.ndarray:
+    return orthogonal_up(up, info.data.get("normal"))
+
+
+#: ``up`` of a table whose ``normal`` is declared before it: a direction, then
+#: made orthogonal to ``normal`` (:func:`orthogonal_up`)
+UpDirection = Annotated[Direction, AfterValidator(_up_beside_normal)]
 #: ``(width, height)``, metres, both > 0
 Size = Annotated[list[Positive], _array(2), AfterValidator(tuple)]
 #: lat-long map ``(width, height)`` in pixels, at most :data:`MAX_PROBE_PIXELS`

@@ -58,12 +58,11 @@ from __future__ import annotations
 
 from typing import Annotated
 
-import numpy as np
-from pydantic import Field, ValidationInfo, field_validator
+from pydantic import Field
 
 from simulator.config.fields import (
-    Count, Direction, Integer, Number, Point, Positive, Size, Spacing, Text, choice, interval, nonblank,
-    orthogonal_up, tables,
+    Count, Direction, Integer, Number, Point, Positive, Size, Spacing, Text, UpDirection, choice, interval,
+    nonblank, tables,
 )  # fmt: skip
 from simulator.config.records import (
     COMPONENTS, DEVICES, LIGHT_UNITS, METHODS, SEED_LIMIT, GridConfig, SimulationConfig,
@@ -109,13 +108,8 @@ class Grid(Table):
     position: Point
     normal: Direction
     size: Size
-    up: Direction
+    up: UpDirection
     spacing: Spacing
-
-    @field_validator("up")
-    @classmethod
-    def _up_orthogonal(cls, up: np.ndarray, info: ValidationInfo) -> np.ndarray:
-        return orthogonal_up(up, info.data.get("normal"))
 
     def to_grid(self, source: str) -> tuple[GridConfig, list[Sensor]]:
         """The grid record and its cell sensors (``j`` outer, ``i`` inner), defined at config key ``source``."""

@@ -21,12 +21,12 @@ import math
 from typing import Annotated, Any, ClassVar, Literal, Union, get_args
 
 import numpy as np
-from pydantic import BeforeValidator, ConfigDict, Field, ValidationInfo, field_validator
+from pydantic import BeforeValidator, ConfigDict, Field
 from pydantic_core import PydanticCustomError
 
 from simulator.config.errors import MISSING, expected, rule, unknown_key
 from simulator.config.fields import (
-    Direction, Number, Point, Resolution, Size, Text, interval, nonblank, one_of, orthogonal_up,
+    Direction, Number, Point, Resolution, Size, Text, UpDirection, interval, nonblank, one_of,
 )  # fmt: skip
 from simulator.config.table import Table
 from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SensorKind, Sensor
@@ -110,12 +110,7 @@ class PatchEntry(SensorFields):
     kind: Literal["patch"]
     normal: Direction
     size: Size
-    up: Direction
-
-    @field_validator("up")
-    @classmethod
-    def _up_orthogonal(cls, up: np.ndarray, info: ValidationInfo) -> np.ndarray:
-        return orthogonal_up(up, info.data.get("normal"))
+    up: UpDirection
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         return Sensor(

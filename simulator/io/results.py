@@ -20,7 +20,7 @@ import numpy as np
 from simulator.errors import UserError
 from simulator.scene.model import SENSOR_SPECS, SensorKind, Sensor
 
-__all__ = ["COLUMNS", "PROBE_COLUMNS", "Reading", "readings_from", "probe_readings", "extra_columns", "write_outputs", "format_table"]
+__all__ = ["COLUMNS", "PROBE_COLUMNS", "Reading", "readings_from", "probe_readings", "extra_columns", "write_outputs", "format_table", "json_default"]
 
 
 def _value_columns() -> tuple[str, ...]:
@@ -190,13 +190,20 @@ def write_outputs(csv_path: Path, rows: list[Reading], record: dict, extra: dict
         {
             **(extra or {}),
             csv_path: _csv_text(rows),
-            record_path: json.dumps(record, indent=2, sort_keys=True, default=_json_default) + "\n",
+            record_path: json.dumps(record, indent=2, sort_keys=True, default=json_default) + "\n",
         }
     )
     return record_path
 
 
-def _json_default(o):
+def json_default(o):
+    """``default`` for :func:`json.dumps` of a record: arrays → lists, numpy scalars → numbers, paths → text.
+
+    Raises
+    ------
+    TypeError
+        For any other object (as :func:`json.dumps` expects).
+    """
     if isinstance(o, np.ndarray):
         return o.tolist()
     if isinstance(o, (np.integer, np.floating)):

@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
+from simulator.io.results import json_default
 from simulator.scene.model import SensorKind
 from simulator.study.chunks import atomic_write
 from simulator.study.objectives import TARGET_FIGURES, calibrated_errors
@@ -221,7 +222,7 @@ def write_outputs(res, versions: dict) -> list[Path]:
     for z in res.study.zone:
         files[d / f"heatmap_{_safe(z.name)}.png"] = heat_map_png(res, z.name)
     res.files = sorted(p.name for p in files) + ["study.json"]
-    files[d / "study.json"] = (json.dumps(record(res, versions), indent=1, default=_json_default) + "\n").encode()
+    files[d / "study.json"] = (json.dumps(record(res, versions), indent=1, default=json_default) + "\n").encode()
     for p, data in files.items():
         atomic_write(p, data)
     return list(files)
@@ -229,13 +230,3 @@ def write_outputs(res, versions: dict) -> list[Path]:
 
 def _safe(name: str) -> str:
     return "".join(ch if ch.isalnum() or ch in "-_." else "_" for ch in name)
-
-
-def _json_default(o):
-    if isinstance(o, np.ndarray):
-        return o.tolist()
-    if isinstance(o, (np.floating, np.integer)):
-        return o.item()
-    if isinstance(o, tuple):
-        return list(o)
-    raise TypeError(type(o).__name__)

@@ -208,3 +208,13 @@ def plane_hit(l: LightRec, o: wp.vec3, d: wp.vec3, t_max: float) -> wp.vec3:
         return wp.vec3(-1.0, 0.0, 0.0)
     q = o + t * d - l.position
     return wp.vec3(t, wp.dot(q, l.ex), wp.dot(q, l.ey))
+
+
+@wp.func
+def hit_inside(h: wp.vec3, inside: bool) -> float:
+    """The ``hit`` of a one-sided planar light from its :func:`plane_hit`
+    ``h = (t, x, y)``: t when the plane is crossed (t > 0) at a point
+    ``inside`` the light's outline, else −1."""
+    if h[0] > 0.0 and inside:
+        return h[0]
+    return -1.0

@@ -10,7 +10,9 @@ from simulator.scene.model import LightKind
 
 from ..closed_forms import disk_irradiance
 from ..sampling import sample_concentric_disk
-from .base import LightKernel, LightRec, LightSample, SceneRec, area_pdf, area_sample, behind, empty_sample, near_planar, plane_hit
+from .base import (
+    LightKernel, LightRec, LightSample, SceneRec, area_pdf, area_sample, behind, empty_sample, hit_inside, near_planar, plane_hit,
+)  # fmt: skip
 
 
 @wp.func
@@ -29,9 +31,7 @@ def pdf(scene: SceneRec, l: LightRec, p: wp.vec3, n: wp.vec3, wi: wp.vec3, t: fl
 @wp.func
 def hit(l: LightRec, o: wp.vec3, d: wp.vec3, t_max: float) -> float:
     h = plane_hit(l, o, d, t_max)
-    if h[0] > 0.0 and h[1] * h[1] + h[2] * h[2] <= l.radius * l.radius:
-        return h[0]
-    return -1.0
+    return hit_inside(h, h[1] * h[1] + h[2] * h[2] <= l.radius * l.radius)
 
 
 @wp.func

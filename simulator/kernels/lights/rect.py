@@ -12,7 +12,9 @@ from simulator.scene.model import LightKind
 
 from ..closed_forms import polygon_irradiance4
 from ..sampling import SPHRECT_MIN_SOLID_ANGLE, sphrect_sample, sphrect_setup
-from .base import LightKernel, LightRec, LightSample, SceneRec, area_pdf, area_sample, behind, empty_sample, near_planar, plane_hit
+from .base import (
+    LightKernel, LightRec, LightSample, SceneRec, area_pdf, area_sample, behind, empty_sample, hit_inside, near_planar, plane_hit,
+)  # fmt: skip
 
 
 @wp.func
@@ -55,9 +57,7 @@ def pdf(scene: SceneRec, l: LightRec, p: wp.vec3, n: wp.vec3, wi: wp.vec3, t: fl
 @wp.func
 def hit(l: LightRec, o: wp.vec3, d: wp.vec3, t_max: float) -> float:
     h = plane_hit(l, o, d, t_max)
-    if h[0] > 0.0 and wp.abs(h[1]) <= 0.5 * l.width and wp.abs(h[2]) <= 0.5 * l.height:
-        return h[0]
-    return -1.0
+    return hit_inside(h, wp.abs(h[1]) <= 0.5 * l.width and wp.abs(h[2]) <= 0.5 * l.height)
 
 
 @wp.func

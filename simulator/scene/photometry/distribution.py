@@ -26,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-from simulator.errors import UserError
+from simulator.errors import UserError, require_file
 
 __all__ = ["GoniometricDistribution", "angles_from_local", "read_photometry"]
 
@@ -215,6 +215,24 @@ def angles_from_local(d_local) -> tuple[np.ndarray, np.ndarray]:
     th = np.degrees(np.arccos(np.clip(-d[..., 2], -1.0, 1.0)))
     ph = np.mod(np.degrees(np.arctan2(d[..., 1], d[..., 0])), 360.0)
     return th, ph
+
+
+def read_file_text(path) -> str:
+    """The text of a photometric file, decoded as Latin-1 (any byte is a character).
+
+    IES LM-63 and EULUMDAT files predate a stated encoding; Latin-1 reads
+    every byte, so an odd character in a keyword never stops the read.
+
+    Raises
+    ------
+    UserError
+        One line naming ``path``: missing, not a file, or unreadable.
+    """
+    p = require_file(path)
+    try:
+        return p.read_bytes().decode("latin-1")
+    except OSError as e:
+        raise UserError(f"{path}: cannot read ({e.strerror})") from None
 
 
 def read_photometry(path) -> GoniometricDistribution:

@@ -27,13 +27,12 @@ nothing), other tilts are refused (one-line :class:`UserError`).
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import numpy as np
 
-from simulator.errors import UserError, require_file
+from simulator.errors import UserError
 
-from .distribution import GoniometricDistribution, unfold_type_c
+from .distribution import GoniometricDistribution, read_file_text, unfold_type_c
 
 __all__ = ["read_ies", "parse_ies"]
 
@@ -42,12 +41,7 @@ _NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 def read_ies(path) -> GoniometricDistribution:
     """Read an IES LM-63 file; see :func:`parse_ies`."""
-    p = require_file(path)
-    try:
-        text = p.read_bytes().decode("latin-1")
-    except OSError as e:
-        raise UserError(f"{path}: cannot read ({e.strerror})") from None
-    return parse_ies(text, str(path))
+    return parse_ies(read_file_text(path), str(path))
 
 
 def parse_ies(text: str, source: str = "<ies>") -> GoniometricDistribution:

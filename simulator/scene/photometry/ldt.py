@@ -46,25 +46,19 @@ type C horizontal angles.
 
 from __future__ import annotations
 
-from pathlib import Path
 
 import numpy as np
 
-from simulator.errors import UserError, require_file
+from simulator.errors import UserError
 
-from .distribution import GoniometricDistribution, unfold_type_c
+from .distribution import GoniometricDistribution, read_file_text, unfold_type_c
 
 __all__ = ["read_ldt", "parse_ldt"]
 
 
 def read_ldt(path) -> GoniometricDistribution:
     """Read a EULUMDAT file; see :func:`parse_ldt`."""
-    p = require_file(path)
-    try:
-        text = p.read_bytes().decode("latin-1")
-    except OSError as e:
-        raise UserError(f"{path}: cannot read ({e.strerror})") from None
-    return parse_ldt(text, str(path))
+    return parse_ldt(read_file_text(path), str(path))
 
 
 def parse_ldt(text: str, source: str = "<ldt>") -> GoniometricDistribution:

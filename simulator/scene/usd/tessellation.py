@@ -21,6 +21,37 @@ def _cube_polygons(size: float):
     return points, np.full(6, 4, np.int64), np.array(quads, np.int64).ravel()
 
 
+def _ring_faces(n_ring: int, n_lon: int):
+    """Faces of a closed pole-to-pole surface: triangle fans at the poles, quads between rings, outward.
+
+    Parameters
+    ----------
+    n_ring : int
+        Rings of ``n_lon`` vertices between the poles (>= 1).
+    n_lon : int
+        Vertices per ring (>= 3).
+
+    Returns
+    -------
+    counts, indices : ndarray of int64
+        ``faceVertexCounts`` and ``faceVertexIndices`` for points laid out as
+        the north pole (index 0), then ring ``k`` column ``j`` at index
+        ``1 + k * n_lon + j``, then the south pole (the last index), with rings
+        ordered north to south and columns counter-clockwise seen from the
+        north pole.
+    """
+    north, south = 0, 1 + n_ring * n_lon
+    j = np.arange(n_lon)
+    jn = (j + 1) % n_lon
+    v = lambda k, jj: 1 + k * n_lon + jj  # noqa: E731  vertex of ring k (0-based), column jj
+    faces = [np.stack([np.full(n_lon, north), v(0, j), v(0, jn)], 1).ravel()]
+    for k in range(n_ring - 1):
+        faces.append(np.stack([v(k, j), v(k + 1, j), v(k + 1, jn), v(k, jn)], 1).ravel())
+    faces.append(np.stack([v(n_ring - 1, j), np.full(n_lon, south), v(n_ring - 1, jn)], 1).ravel())
+    counts = np.array([3] * n_lon + [4] * (n_lon * (n_ring - 1)) + [3] * n_lon, np.int64)
+    return counts, np.concatenate(faces)
+
+
 def _sphere_polygons(radius: float, n_lon: int, n_lat: int):
     """UsdGeom.Sphere as a UV sphere: pole caps of triangles, quads between rings, faces outward."""
     theta = np.pi * np.arange(1, n_lat) / n_lat  # ring polar angles, north to south
@@ -28,16 +59,8 @@ def _sphere_polygons(radius: float, n_lon: int, n_lat: int):
     st, ct = np.sin(theta)[:, None], np.cos(theta)[:, None]
     ring = np.stack([st * np.cos(phi), st * np.sin(phi), np.broadcast_to(ct, (n_lat - 1, n_lon))], axis=-1)
     points = radius * np.concatenate([[[0.0, 0.0, 1.0]], ring.reshape(-1, 3), [[0.0, 0.0, -1.0]]])
-    north, south = 0, len(points) - 1
-    j = np.arange(n_lon)
-    jn = (j + 1) % n_lon
-    v = lambda k, jj: 1 + k * n_lon + jj  # noqa: E731  vertex of ring k (0-based), column jj
-    faces = [np.stack([np.full(n_lon, north), v(0, j), v(0, jn)], 1).ravel()]
-    for k in range(n_lat - 2):
-        faces.append(np.stack([v(k, j), v(k + 1, j), v(k + 1, jn), v(k, jn)], 1).ravel())
-    faces.append(np.stack([v(n_lat - 2, j), np.full(n_lon, south), v(n_lat - 2, jn)], 1).ravel())
-    counts = np.array([3] * n_lon + [4] * (n_lon * (n_lat - 2)) + [3] * n_lon, np.int64)
-    return points, counts, np.concatenate(faces)
+    counts, indices = _ring_faces(n_lat - 1, n_lon)
+    return points, counts, indices
 
 
 #: a proper rotation taking local +Z to each UsdGeom ``axis`` (cyclic permutations: det +1)
@@ -81,16 +104,8 @@ def _revolution_polygons(radii: np.ndarray, heights: np.ndarray, n_lon: int, axi
     n_ring = len(r)
     ring = np.stack([r * np.cos(phi), r * np.sin(phi), np.broadcast_to(z, (n_ring, n_lon))], axis=-1)
     points = np.concatenate([[[0.0, 0.0, heights[0]]], ring.reshape(-1, 3), [[0.0, 0.0, heights[-1]]]])
-    north, south = 0, len(points) - 1
-    j = np.arange(n_lon)
-    jn = (j + 1) % n_lon
-    v = lambda k, jj: 1 + k * n_lon + jj  # noqa: E731  vertex of ring k (0-based), column jj
-    faces = [np.stack([np.full(n_lon, north), v(0, j), v(0, jn)], 1).ravel()]
-    for k in range(n_ring - 1):
-        faces.append(np.stack([v(k, j), v(k + 1, j), v(k + 1, jn), v(k, jn)], 1).ravel())
-    faces.append(np.stack([v(n_ring - 1, j), np.full(n_lon, south), v(n_ring - 1, jn)], 1).ravel())
-    counts = np.array([3] * n_lon + [4] * (n_lon * (n_ring - 1)) + [3] * n_lon, np.int64)
-    return points @ _AXIS_ROTATIONS[axis].T, counts, np.concatenate(faces)
+    counts, indices = _ring_faces(n_ring, n_lon)
+    return points @ _AXIS_ROTATIONS[axis].T, counts, indices
 
 
 def _cylinder_polygons(radius_top: float, radius_bottom: float, height: float, n_lon: int, axis: str = "Z"):
