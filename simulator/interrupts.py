@@ -44,4 +44,5 @@ def sigint_deferred(flag: StopFlag | None = None) -> Iterator[StopFlag]:
     try:
         yield flag
     finally:
-        signal.signal(signal.SIGINT, previous)
+        # None: a handler not set from Python, which cannot be put back; the default stands in
+        signal.signal(signal.SIGINT, signal.SIG_DFL if previous is None else previous)
