@@ -64,7 +64,8 @@ def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = Non
     Closed-form readings count as meeting any error target (they are exact).
     Once ``stop`` is requested no further group is started; ``unfinished``
     marks the sensors of the stopped group left short and those of the
-    groups never started (0 samples).
+    groups never started (0 samples). Without ``stop``, Ctrl-C raises
+    ``KeyboardInterrupt`` (after the current batch).
     """
     n = len(plan.sensors)
     groups = plan.groups()
@@ -74,10 +75,9 @@ def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = Non
         non_finite=np.zeros(n, np.int64), wall_s=0.0, methods=[sp.method for sp in plan.sensors],
         unfinished=np.ones(n, bool),
     )  # fmt: skip
-    stop = StopFlag() if stop is None else stop
     engine.set_light_mask(plan.light_mask([l.name for l in engine.scene.lights]))
     for method, ids in groups.items():
-        if stop.requested:
+        if stop is not None and stop.requested:
             break
         r = engine.run(
             method, samples=sim.samples, seed=sim.seed, rel_error=sim.rel_error, abs_error=sim.abs_error,
@@ -91,7 +91,7 @@ def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = Non
             out.target_met[ids] = r.target_met[ids]
         out.wall_s += r.wall_s
         out.warnings += [w for w in r.warnings if w not in out.warnings]
-    out.interrupted = stop.requested
+    out.interrupted = stop is not None and stop.requested
     return out
 
 
@@ -160,10 +160,10 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
 
 
 def _partial_rows(rows: list[Reading], unfinished: dict[str, bool], adaptive: bool) -> list[Reading]:
-    """Rows of an interrupted run: ``target_met`` says whether each sensor
-    finished (its error target met, or in a fixed-budget run its requested
-    samples drawn); a sensor never read (0 samples, no closed form) has
-    empty value cells."""
+    """Rows of an interrupted run: ``target_met`` is False for each sensor
+    the stop left unfinished; in a fixed-budget run the others say True (their
+    requested samples drawn), in an adaptive run whether they met the target.
+    A sensor never read (0 samples, no closed form) has empty value cells."""
     for r in rows:
         if unfinished[r.sensor.name]:
             r.target_met = False
@@ -196,13 +196,14 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         log(f"warning: {w}")
     by_name = {r.sensor.name: r for r in readings_from(plain, res.mean, res.stderr, res.samples, res.seconds, res.methods, res.target_met)}
     by_name.update({r.sensor.name: r for r in probe_readings(probe_res, probes_method)})
-    extra, probe_maps = {}, {}
+    extra, probe_maps, n_finished = {}, {}, len(sensors)
     if interrupted:  # probes not reached: an empty row each
         by_name.update({s.name: Reading(s, {}, 0, 0.0, probes_method, None) for s in probes if s.name not in by_name})
         unfinished = dict(zip((s.name for s in plain), res.unfinished))
         unfinished.update({s.name: True for s in probes})
         unfinished.update({p.sensor.name: p.interrupted for p in probe_res})
         rows = _partial_rows([by_name[s.name] for s in sensors], unfinished, res.target_met is not None)
+        n_finished = sum(1 for u in unfinished.values() if not u)
     else:
         rows = [by_name[s.name] for s in sensors]
         meta = {"seed": sim.seed, "method": "+".join(plan.groups()), "light_units": cfg.light_units, "stage": cfg.stage.name}
@@ -221,7 +222,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         "samples_total": int(res.samples.sum()) + sum(p.samples for p in probe_res),
         "interrupted": interrupted,
         "sensors_read": sum(1 for r in rows if r.values),
-        "sensors_finished": sum(1 for r in rows if r.target_met is not False) if interrupted else len(rows),
+        "sensors_finished": n_finished,
         "method": {"requested": sim.method, "used": {m: len(ix) for m, ix in plan.groups().items()}, "probes": probes_method, "reason": reason},
         "plan": plan.to_record(),
         "component": sim.component,
