@@ -15,6 +15,7 @@ from simulator import __version__
 from simulator.config.loader import RunConfig
 from simulator.engine.driver import EngineResult
 from simulator.errors import UserError
+from simulator.interrupts import StopFlag, sigint_deferred
 from simulator.io.maps import grid_outputs, probe_outputs
 from simulator.plan.planner import Plan, make_plan, probe_method
 from simulator.io.results import Reading, probe_readings, readings_from, write_outputs
@@ -30,6 +31,7 @@ class RunOutput:
     record_path: Path
     record: dict
     scene: Scene
+    interrupted: bool = False  #: stopped by Ctrl-C: the files hold what was measured so far
 
 
 def load_scene(cfg: RunConfig) -> Scene:
@@ -55,11 +57,15 @@ def collect_sensors(cfg: RunConfig, scene: Scene) -> list[Sensor]:
     return sensors
 
 
-def run_plan(engine, plan: Plan, sim, progress=None) -> EngineResult:
+def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = None) -> EngineResult:
     """Run each method's group of sensors and gather the readings in sensor
     order; ``methods`` says which method read each sensor.
 
     Closed-form readings count as meeting any error target (they are exact).
+    Once ``stop`` is requested no further group is started; ``unfinished``
+    marks the sensors of the stopped group left short and those of the
+    groups never started (0 samples). Without ``stop``, Ctrl-C raises
+    ``KeyboardInterrupt`` (after the current batch).
     """
     n = len(plan.sensors)
     groups = plan.groups()
@@ -67,20 +73,25 @@ def run_plan(engine, plan: Plan, sim, progress=None) -> EngineResult:
         method="+".join(groups), device=engine.device, mean=np.zeros((n, 2)), stderr=np.zeros((n, 2)),
         samples=np.zeros(n, np.int64), seconds=np.zeros(n), target_met=np.ones(n, bool) if sim.adaptive else None,
         non_finite=np.zeros(n, np.int64), wall_s=0.0, methods=[sp.method for sp in plan.sensors],
+        unfinished=np.ones(n, bool),
     )  # fmt: skip
     engine.set_light_mask(plan.light_mask([l.name for l in engine.scene.lights]))
     for method, ids in groups.items():
+        if stop is not None and stop.requested:
+            break
         r = engine.run(
             method, samples=sim.samples, seed=sim.seed, rel_error=sim.rel_error, abs_error=sim.abs_error,
             max_samples=sim.sample_cap, time_limit_s=sim.time_limit_s, max_depth=sim.max_depth,
-            component=sim.component, progress=progress, sensor_ids=ids, confidence=sim.confidence,
+            component=sim.component, progress=progress, sensor_ids=ids, confidence=sim.confidence, stop=stop,
         )  # fmt: skip
+        out.unfinished[ids] = False if r.unfinished is None else r.unfinished[ids]
         out.mean[ids], out.stderr[ids], out.samples[ids] = r.mean[ids], r.stderr[ids], r.samples[ids]
         out.seconds[ids], out.non_finite[ids] = r.seconds[ids], r.non_finite[ids]
         if out.target_met is not None and r.target_met is not None:
             out.target_met[ids] = r.target_met[ids]
         out.wall_s += r.wall_s
         out.warnings += [w for w in r.warnings if w not in out.warnings]
+    out.interrupted = stop is not None and stop.requested
     return out
 
 
@@ -113,6 +124,14 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
         Receives :class:`simulator.engine.driver.Progress` after each batch.
     log : callable
         Where one-line notes (warnings, the chosen method) go.
+
+    Notes
+    -----
+    Ctrl-C (or ``KeyboardInterrupt`` from ``progress``) while tracing stops
+    the run after the current batch: the CSV and run record are written with
+    what was measured (see :func:`_partial_rows`), no maps, and the output's
+    ``interrupted`` is True. SIGINT stays deferred until the files are in
+    place, so a second Ctrl-C cannot leave a file half-written.
     """
     from simulator.engine.driver import Engine  # imports warp
 
@@ -135,26 +154,62 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     t_load = time.perf_counter()
     engine = Engine(scene, plain, device=sim.device, threads=sim.threads)
     t_setup = time.perf_counter()
-    res = run_plan(engine, plan, sim, progress)
+    with sigint_deferred() as stop:  # Ctrl-C from here on: stop after the batch, write what was measured
+        return _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log,
+                                (t0, t_read, t_load, t_setup))  # fmt: skip
+
+
+def _partial_rows(rows: list[Reading], unfinished: dict[str, bool], adaptive: bool) -> list[Reading]:
+    """Rows of an interrupted run: ``target_met`` is False for each sensor
+    the stop left unfinished; in a fixed-budget run the others say True (their
+    requested samples drawn), in an adaptive run whether they met the target.
+    A sensor never read (0 samples, no closed form) has empty value cells."""
+    for r in rows:
+        if unfinished[r.sensor.name]:
+            r.target_met = False
+            if r.samples == 0:
+                r.values = {}
+        elif not adaptive:
+            r.target_met = True
+    return rows
+
+
+def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log, times) -> RunOutput:
+    """The rest of :func:`run`: trace (until done or ``stop``), then write the files."""
+    t0, t_read, t_load, t_setup = times
+    sim = cfg.simulation
+    res = run_plan(engine, plan, sim, progress, stop)
     probe_res = []
-    if probes:
+    if probes and not stop.requested:
         probe_res = engine.run_probes(
             probes, probes_method, samples=sim.samples, seed=sim.seed,
             stream_ids=[i for i, s in enumerate(sensors) if s.kind == SensorKind.PROBE], rel_error=sim.rel_error, abs_error=sim.abs_error,
             max_samples=sim.sample_cap, time_limit_s=sim.time_limit_s, max_depth=sim.max_depth,
-            component=sim.component, progress=progress, confidence=sim.confidence,
+            component=sim.component, progress=progress, confidence=sim.confidence, stop=stop,
         )  # fmt: skip
         for p in probe_res:
             res.warnings.extend(p.warnings)
+    # a stop that came after the last batch changed nothing: the run is complete
+    interrupted = stop.requested and (bool(res.unfinished.any()) or len(probe_res) < len(probes)
+                                      or any(p.interrupted for p in probe_res))
     for w in res.warnings:
         log(f"warning: {w}")
     by_name = {r.sensor.name: r for r in readings_from(plain, res.mean, res.stderr, res.samples, res.seconds, res.methods, res.target_met)}
     by_name.update({r.sensor.name: r for r in probe_readings(probe_res, probes_method)})
-    rows = [by_name[s.name] for s in sensors]
-    meta = {"seed": sim.seed, "method": "+".join(plan.groups()), "light_units": cfg.light_units, "stage": cfg.stage.name}
-    extra = grid_outputs(cfg.output.csv, cfg.grids, rows, meta)
-    probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, {**meta, "method": probes_method, "taken": [g.name for g in cfg.grids]})
-    extra.update(probe_files)
+    extra, probe_maps, n_finished = {}, {}, len(sensors)
+    if interrupted:  # probes not reached: an empty row each
+        by_name.update({s.name: Reading(s, {}, 0, 0.0, probes_method, None) for s in probes if s.name not in by_name})
+        unfinished = dict(zip((s.name for s in plain), res.unfinished))
+        unfinished.update({s.name: True for s in probes})
+        unfinished.update({p.sensor.name: p.interrupted for p in probe_res})
+        rows = _partial_rows([by_name[s.name] for s in sensors], unfinished, res.target_met is not None)
+        n_finished = sum(1 for u in unfinished.values() if not u)
+    else:
+        rows = [by_name[s.name] for s in sensors]
+        meta = {"seed": sim.seed, "method": "+".join(plan.groups()), "light_units": cfg.light_units, "stage": cfg.stage.name}
+        extra = grid_outputs(cfg.output.csv, cfg.grids, rows, meta)
+        probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, {**meta, "method": probes_method, "taken": [g.name for g in cfg.grids]})
+        extra.update(probe_files)
     t_end = time.perf_counter()
     record = {
         "config_path": str(cfg.path),
@@ -165,6 +220,9 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
         "seed": sim.seed,
         "samples_requested": sim.samples,
         "samples_total": int(res.samples.sum()) + sum(p.samples for p in probe_res),
+        "interrupted": interrupted,
+        "sensors_read": sum(1 for r in rows if r.values),
+        "sensors_finished": n_finished,
         "method": {"requested": sim.method, "used": {m: len(ix) for m, ix in plan.groups().items()}, "probes": probes_method, "reason": reason},
         "plan": plan.to_record(),
         "component": sim.component,
@@ -187,8 +245,8 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
             "confidence": sim.confidence,
             "max_samples": sim.sample_cap,
             "time_limit_s": sim.time_limit_s,
-            "sensors_met": int(res.target_met.sum()),
+            "sensors_met": int(res.target_met.sum()) if not interrupted else sum(1 for r in rows if r.target_met),
         },
     }
     record_path = write_outputs(cfg.output.csv, rows, record, extra)
-    return RunOutput(rows, cfg.output.csv, record_path, record, scene)
+    return RunOutput(rows, cfg.output.csv, record_path, record, scene, interrupted)

@@ -190,6 +190,10 @@ def _cmd_run(args) -> int:
         bar.close()
     wall = time.perf_counter() - t0
     rec = out.record
+    if out.interrupted:
+        print(f"interrupted: wrote partial results for {rec['sensors_read']} of {rec['sensors']} sensors to {out.csv_path} "
+              f"({rec['sensors_finished']} finished)", file=sys.stderr)  # fmt: skip
+        return 130
     if not args.quiet:
         print(format_table(out.rows))
     n = rec["sensors"]

@@ -12,6 +12,12 @@ z the two-sided normal quantile of ``confidence`` (0.95 → 1.96). Every
 unit stops at ``time_limit_s``. The next batch is what would reach the
 target if the variance holds (stderr² ∝ 1/n), with 10% to spare, at least
 one block and at most doubling the samples so far.
+
+A stop request (Ctrl-C, see :mod:`simulator.interrupts`) ends the loop
+between batches: SIGINT is deferred while a batch is drawn and merged, so
+the statistics always hold whole batches; ``KeyboardInterrupt`` raised by
+the ``report`` callback counts as a stop request too. A caller that passes
+no stop flag gets the ``KeyboardInterrupt`` (after the batch) as before.
 """
 
 from __future__ import annotations
@@ -22,6 +28,7 @@ from typing import Callable
 import numpy as np
 
 from simulator.engine.stats import z_for_confidence
+from simulator.interrupts import StopFlag, sigint_deferred
 
 __all__ = ["StoppingRule", "run_batches"]
 
@@ -71,6 +78,7 @@ def run_batches(
     time_limit_s: float | None = None,
     t_start: float | None = None,
     report: Callable[[np.ndarray, np.ndarray, float], None] | None = None,
+    stop: StopFlag | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Draw batches until every unit has stopped.
 
@@ -98,6 +106,11 @@ def run_batches(
         ``time.perf_counter()`` the time limit counts from; default now.
     report : callable, optional
         ``report(count, active, elapsed_s)`` after each batch.
+    stop : StopFlag, optional
+        Checked before each batch; once requested the loop returns, leaving
+        ``active`` True for the units it did not finish. SIGINT during a
+        batch, or ``KeyboardInterrupt`` from ``report``, requests it.
+        Without it, SIGINT raises ``KeyboardInterrupt`` once the batch is done.
 
     Returns
     -------
@@ -107,25 +120,35 @@ def run_batches(
         Whether the rule's target was reached (all False without a rule).
     """
     t0 = time.perf_counter() if t_start is None else t_start
+    own = stop is None  # no caller wants partial results: an interrupt is raised, after the batch
+    stop = StopFlag() if own else stop
     count = np.zeros(len(active), np.int64)
     met = np.zeros(len(active), bool)
-    while active.any():
-        ids = np.flatnonzero(active)
-        first = count[ids]
-        n = np.minimum(want[ids], cap - first)
-        step(ids, first, n)
-        count[ids] += n
-        done = count >= cap
-        if rule is not None:
-            value, se = measure()
-            ok, target = rule.check(value, se)
-            met |= ok & active
-            done |= ok
-            want = rule.next_batch(count, se, target, block)
-        active &= ~done
-        elapsed = time.perf_counter() - t0
-        if time_limit_s is not None and elapsed >= time_limit_s:
-            active[:] = False
+    while active.any() and not stop.requested:
+        with sigint_deferred(stop):  # a batch is drawn and merged whole
+            ids = np.flatnonzero(active)
+            first = count[ids]
+            n = np.minimum(want[ids], cap - first)
+            step(ids, first, n)
+            count[ids] += n
+            done = count >= cap
+            if rule is not None:
+                value, se = measure()
+                ok, target = rule.check(value, se)
+                met |= ok & active
+                done |= ok
+                want = rule.next_batch(count, se, target, block)
+            active &= ~done
+            elapsed = time.perf_counter() - t0
+            if time_limit_s is not None and elapsed >= time_limit_s:
+                active[:] = False
+        if own and stop.requested:
+            raise KeyboardInterrupt
         if report is not None:
-            report(count, active, elapsed)
+            try:
+                report(count, active, elapsed)
+            except KeyboardInterrupt:
+                if own:
+                    raise
+                stop.request()
     return count, met

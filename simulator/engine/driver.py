@@ -28,6 +28,7 @@ from simulator.engine.fanout import fan_out
 from simulator.engine.methods import COMPONENTS, METHOD_FLAGS
 from simulator.engine.stats import RunningStats
 from simulator.errors import UserError
+from simulator.interrupts import StopFlag
 from simulator.scene.model import MAX_PROBE_PIXELS, Scene, Sensor, SensorKind
 
 __all__ = [
@@ -77,6 +78,11 @@ class EngineResult:
     methods : list of str or None
         The method that read each sensor, when they differ (a planned run);
         ``method`` then names them all, joined by "+".
+    unfinished : ndarray of bool, shape (S,), or None
+        Sensors a stop request (Ctrl-C) left short of their samples or error
+        target (None for a closed-form run, which cannot be stopped part way).
+    interrupted : bool
+        Whether a stop was requested during the run.
     """
 
     method: str
@@ -90,6 +96,8 @@ class EngineResult:
     wall_s: float
     warnings: list[str] = field(default_factory=list)
     methods: list[str] | None = None  #: per sensor, when a plan mixed methods (see run.run_plan)
+    unfinished: np.ndarray | None = None
+    interrupted: bool = False
 
 
 class Engine:
@@ -287,6 +295,7 @@ class Engine:
         count_rays: bool = False,
         sensor_ids: np.ndarray | None = None,
         confidence: float = 0.95,
+        stop: StopFlag | None = None,
     ) -> EngineResult:
         """Estimate every sensor with ``method`` (analytic, exact, light, bsdf, mis or path).
 
@@ -299,6 +308,12 @@ class Engine:
         ``component``: ``total``; ``direct`` (light straight from emitters,
         and for a radiance meter its first surface's reflection of it); or
         ``indirect`` (the rest: light that has been reflected on the way).
+
+        ``stop``: once requested (by Ctrl-C during a batch, or by
+        ``KeyboardInterrupt`` from ``progress``) no further batch is drawn;
+        the result holds the whole batches drawn so far, ``interrupted`` is
+        True and ``unfinished`` marks the sensors stopped short. Without
+        ``stop``, Ctrl-C raises ``KeyboardInterrupt`` once the batch is done.
         """
         if component not in COMPONENTS:
             raise UserError(f"simulation.component: {component!r} is not one of {', '.join(COMPONENTS)}")
@@ -351,6 +366,7 @@ class Engine:
             step, active, want, cap, block=BLOCK,
             rule=StoppingRule(rel_error, abs_error, confidence) if adaptive else None,
             measure=lambda: (stats.mean, stats.stderr()), time_limit_s=time_limit_s, t_start=t0, report=report,
+            stop=stop,
         )  # fmt: skip
         wall = time.perf_counter() - t0
         warnings = list(self.warnings)
@@ -370,6 +386,8 @@ class Engine:
             non_finite=nonfinite,
             wall_s=wall,
             warnings=warnings,
+            unfinished=active.copy(),
+            interrupted=stop is not None and stop.requested,
         )
 
     # ------------------------------------------------------------ probes
@@ -443,6 +461,7 @@ class Engine:
         max_depth: int = -1,
         component: str = "total",
         progress: Callable | None = None,
+        stop: StopFlag | None = None,
     ) -> list[P.ProbeResult]:
         """Lat-long maps and sphere integrals of PROBE sensors (which
         :meth:`run` does not read) with ``method`` (light, bsdf, mis or path);
@@ -471,10 +490,16 @@ class Engine:
             As for :meth:`run`.
         progress : callable, optional
             Receives :class:`Progress` after each batch.
+        stop : StopFlag, optional
+            As for :meth:`run`: once requested, no further probe is started;
+            the probe being read keeps its whole batches (at least one) with
+            ``target_met`` False, and one stopped before its first batch is
+            left out.
 
         Returns
         -------
         list of ProbeResult
+            One per probe read, in order: all of them unless stopped.
         """
         if method not in METHOD_FLAGS:
             raise UserError(f"method {method!r} cannot read probes (use light, bsdf, mis, path or auto)")
@@ -488,6 +513,8 @@ class Engine:
         t_start = time.perf_counter()
         total_samples = 0
         for k, s in enumerate(probes):
+            if stop is not None and stop.requested:
+                break
             if s.kind != SensorKind.PROBE:
                 raise ValueError(f"{s.name}: not a probe")
             w, h = s.resolution
@@ -517,11 +544,16 @@ class Engine:
                     done = not active[0]
                     progress(Progress(k + int(done), len(probes), total_samples + int(stats.count.sum()), elapsed, None))
 
+            active = np.ones(1, bool)
             passes, met = run_batches(
-                step, np.ones(1, bool), np.array([min(first_batch, cap)], np.int64), cap, block=PASS_BLOCK, rule=rule,
-                measure=measure, time_limit_s=time_limit_s, t_start=t_start, report=report,
+                step, active, np.array([min(first_batch, cap)], np.int64), cap, block=PASS_BLOCK, rule=rule,
+                measure=measure, time_limit_s=time_limit_s, t_start=t_start, report=report, stop=stop,
             )  # fmt: skip
+            if passes[0] == 0:  # stopped before its first batch: nothing to report
+                break
             total_samples += int(passes[0]) * n_pix
+            target_met = False if active[0] else (bool(met[0]) if rule is not None else None)
             out.append(P.probe_result(s, frame, stats, omega, delta, int(passes[0]), time.perf_counter() - t0, bad[0],
-                                      bool(met[0]) if rule is not None else None))  # fmt: skip
+                                      target_met))  # fmt: skip
+            out[-1].interrupted = bool(active[0])
         return out

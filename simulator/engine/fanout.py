@@ -3,7 +3,8 @@
 Warp's CPU launches release the GIL, so ``threads`` Python threads each
 launching a slice of the kernel threads run in parallel. Every kernel
 thread's result depends only on its global index (``offset + tid``), never
-on how the launch was cut.
+on how the launch was cut. The workers are always joined before
+:func:`fan_out` returns or raises, so no launch outlives its batch.
 """
 
 from __future__ import annotations
@@ -35,7 +36,16 @@ def fan_out(threads: int, run: Callable[[int, int], None], n: int) -> None:
         return
     cuts = np.linspace(0, n, parts + 1).astype(int)
     workers = [threading.Thread(target=run, args=(int(a), int(b - a))) for a, b in zip(cuts[:-1], cuts[1:])]
-    for w in workers:
-        w.start()
-    for w in workers:
-        w.join()
+    interrupted = None
+    try:
+        for w in workers:
+            w.start()
+    finally:
+        for w in workers:
+            while w.is_alive():
+                try:
+                    w.join()
+                except KeyboardInterrupt as e:  # keep joining: the workers write into the batch's arrays
+                    interrupted = e
+    if interrupted is not None:
+        raise interrupted

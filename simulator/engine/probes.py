@@ -180,6 +180,9 @@ class ProbeResult:
         Samples that came out NaN or Inf (counted as 0).
     target_met : bool or None
         Adaptive runs: whether scalar irradiance reached the error target.
+    interrupted : bool
+        Stopped by a stop request (Ctrl-C) before its passes or target were
+        reached; ``target_met`` is then False.
     """
 
     sensor: Sensor
@@ -197,6 +200,7 @@ class ProbeResult:
     non_finite: int = 0
     target_met: bool | None = None
     warnings: list[str] = field(default_factory=list)
+    interrupted: bool = False
 
     @property
     def scalar_irradiance(self) -> tuple[np.ndarray, np.ndarray]:
