@@ -179,6 +179,23 @@ def test_relative_ies_peak_is_authored_intensity(tmp_path):
         assert abs(res.mean[i, 1] * 4.0 - truth) <= 1e-5 * truth + 1e-9
 
 
+def test_cone_does_not_affect_an_ies_profile(tmp_path):
+    """UsdLux ShapingAPI: the cone angle "does not affect IES profiles (if any
+    are applied for this light)": a 10° cone on an IES light leaves every
+    direction, inside or far outside the cone, at the file's candela."""
+    from pathlib import Path
+
+    ies = Path(ASYM_IES).resolve()
+    _stage(tmp_path, _ies_light(ies).replace("float inputs:shaping:cone:angle = 180", "float inputs:shaping:cone:angle = 10"))
+    rec = _around()
+    _, res = _run(tmp_path, [(n, p, d) for n, p, d, _, _ in rec])
+    dist = read_photometry(ies)
+    assert any(th > math.radians(10) for _, _, _, th, _ in rec)
+    for i, (_, _, _, th, ph) in enumerate(rec):
+        truth = dist.candela_at(math.degrees(th), math.degrees(ph))
+        assert abs(res.mean[i, 1] * 4.0 - truth) <= 1e-5 * truth + 1e-9
+
+
 def _cube_patches(half=1.0, n=2):
     """Inward-facing patches tiling a cube of half-size ``half`` centred on the light."""
     c = np.array([0, 0, H_M])

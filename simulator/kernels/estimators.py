@@ -451,14 +451,15 @@ def shaping_factor(l: LightRec, w_out: wp.vec3) -> float:
         return 1.0
     cos_t = wp.clamp(-wp.dot(w_out, l.ez), -1.0, 1.0)
     theta = wp.acos(cos_t)
-    cut = l.shaping[0]
-    if theta > cut:
-        return 0.0
     f = float(1.0)
-    start = cut * (1.0 - l.shaping[1])
-    if l.shaping[1] > 0.0 and cut > start:
-        t = wp.clamp((theta - start) / (cut - start), 0.0, 1.0)
-        f = 1.0 - t * t * (3.0 - 2.0 * t)
+    if l.ies_scale <= 0.0:  # UsdLux: the cone "does not affect IES profiles"
+        cut = l.shaping[0]
+        if theta > cut:
+            return 0.0
+        start = cut * (1.0 - l.shaping[1])
+        if l.shaping[1] > 0.0 and cut > start:
+            t = wp.clamp((theta - start) / (cut - start), 0.0, 1.0)
+            f = 1.0 - t * t * (3.0 - 2.0 * t)
     if l.shaping[2] > 0.0:
         tint = l.shaping[3]
         f = f * (tint + (1.0 - tint) * wp.pow(wp.abs(cos_t), l.shaping[2]))

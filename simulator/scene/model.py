@@ -115,7 +115,8 @@ class LightShaping:
 
         factor = cone(θ) · focus(θ) · ies_scale · I_file(θ, φ)
 
-    - cone: 0 for θ > ``cone_angle_rad``; with softness s (clamped to
+    - cone (not applied when an IES profile is: UsdLux says the cone "does
+      not affect IES profiles"): 0 for θ > ``cone_angle_rad``; with softness s (clamped to
       [0, 1]), 1 − smoothstep(θ_c·(1 − s), θ_c, θ), so 1 inside θ_c(1 − s)
       and the whole cone at s = 0;
     - focus: tint + (1 − tint)·|cos θ|^focus (focus ≤ 0: 1), tint the grey of
@@ -155,9 +156,11 @@ class LightShaping:
     def factor(self, theta_rad, phi_rad) -> np.ndarray:
         """The factor toward emission directions at (θ, φ), radians (numpy twin of the kernel's)."""
         th = np.asarray(theta_rad, float)
-        f = np.where(th > self.cone_angle_rad, 0.0, 1.0)
+        f = np.ones_like(th)
         s = min(max(self.cone_softness, 0.0), 1.0)
-        if s > 0:
+        if self.ies is None:  # UsdLux: the cone "does not affect IES profiles"
+            f = np.where(th > self.cone_angle_rad, 0.0, 1.0)
+        if s > 0 and self.ies is None:
             a = self.cone_angle_rad * (1 - s)
             t = np.clip((th - a) / (self.cone_angle_rad - a), 0.0, 1.0)
             f = f * (1 - t * t * (3 - 2 * t))
