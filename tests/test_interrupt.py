@@ -82,7 +82,17 @@ def _sigint_self():
 
 def test_sigint_inside_a_batch_takes_effect_after_it():
     """SIGINT during a step never cuts it: with a stop flag the loop ends
-    after that batch; without one KeyboardInterrupt is raised after it."""
+    after that batch; without one KeyboardInterrupt is raised after it. The
+    process starts from Python's own handler, as under a terminal (a job
+    started in the background inherits SIGINT ignored instead)."""
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        _sigint_inside_a_batch()
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
+def _sigint_inside_a_batch():
     for stop in (StopFlag(), None):
         finished = []
 
