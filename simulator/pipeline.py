@@ -137,6 +137,9 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
 
     t0 = time.perf_counter()
     scene = load_scene(cfg)
+    spectrum = None  # the emitters' spectrum, for response columns (grey scenes: exact post hoc)
+    if cfg.spectra is not None:
+        spectrum = _run_spectrum(cfg, scene)
     sensors = collect_sensors(cfg, scene)
     # probes are read by their own kernel (simulator.engine.probes)
     probes = [s for s in sensors if s.kind == SensorKind.PROBE]
@@ -156,7 +159,28 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     t_setup = time.perf_counter()
     with sigint_deferred() as stop:  # Ctrl-C from here on: stop after the batch, write what was measured
         return _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log,
-                                (t0, t_read, t_load, t_setup))  # fmt: skip
+                                (t0, t_read, t_load, t_setup), spectrum)  # fmt: skip
+
+
+def _run_spectrum(cfg: RunConfig, scene: Scene):
+    """The emitters' spectrum for the config's responses (:func:`simulator.spectra.posthoc.run_spectrum`).
+
+    Raises
+    ------
+    UserError
+        Before any tracing, one line naming the config: the scene needs a
+        transport other than grey (named, with why; not built yet), or the
+        lights' spectrum must be named in ``[spectra] lights``.
+    """
+    from simulator.spectra import posthoc
+    from simulator.spectra.transport import choose_transport
+
+    try:
+        return posthoc.run_spectrum(cfg.spectra, scene, cfg.light_units, cfg.radiometric_spectrum)
+    except UserError as e:
+        mode = choose_transport(scene)[0]
+        need = "" if mode == "grey" else f" (this scene needs {mode} transport, which is not built yet)"
+        raise UserError(f"{cfg.path}: output.responses: {e}{need}") from None
 
 
 def _partial_rows(rows: list[Reading], unfinished: dict[str, bool], adaptive: bool) -> list[Reading]:
@@ -174,7 +198,8 @@ def _partial_rows(rows: list[Reading], unfinished: dict[str, bool], adaptive: bo
     return rows
 
 
-def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log, times) -> RunOutput:
+def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log, times,
+                     spectrum=None) -> RunOutput:
     """The rest of :func:`run`: trace (until done or ``stop``), then write the files."""
     t0, t_read, t_load, t_setup = times
     sim = cfg.simulation
@@ -196,6 +221,11 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         log(f"warning: {w}")
     by_name = {r.sensor.name: r for r in readings_from(plain, res.mean, res.stderr, res.samples, res.seconds, res.methods, res.target_met)}
     by_name.update({r.sensor.name: r for r in probe_readings(probe_res, probes_method)})
+    spectra_record, response_maps = None, []
+    if spectrum is not None:  # response columns from the stated column (exact: the scene is grey)
+        from simulator.spectra import posthoc
+
+        spectra_record, response_maps = posthoc.finish_run(list(by_name.values()), scene, cfg.light_units, spectrum, cfg.spectra)
     extra, probe_maps, n_finished = {}, {}, len(sensors)
     if interrupted:  # probes not reached: an empty row each
         by_name.update({s.name: Reading(s, {}, 0, 0.0, probes_method, None) for s in probes if s.name not in by_name})
@@ -207,7 +237,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
     else:
         rows = [by_name[s.name] for s in sensors]
         meta = {"seed": sim.seed, "method": "+".join(plan.groups()), "light_units": cfg.light_units, "stage": cfg.stage.name}
-        extra = grid_outputs(cfg.output.csv, cfg.grids, rows, meta)
+        extra = grid_outputs(cfg.output.csv, cfg.grids, rows, meta, responses=response_maps)
         probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, {**meta, "method": probes_method, "taken": [g.name for g in cfg.grids]})
         extra.update(probe_files)
     t_end = time.perf_counter()
@@ -225,6 +255,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         "sensors_finished": n_finished,
         "method": {"requested": sim.method, "used": {m: len(ix) for m, ix in plan.groups().items()}, "probes": probes_method, "reason": reason},
         "plan": plan.to_record(),
+        **({} if spectra_record is None else {"spectra": spectra_record}),
         "component": sim.component,
         "device": res.device,
         "threads": engine.threads,

@@ -91,6 +91,11 @@ def load_config(path: str | os.PathLike) -> RunConfig:
     default_csv = base / f"{cfg_path.stem}.csv"
     output = OutputConfig(csv=default_csv if doc.output.csv is None else resolve_path(base, doc.output.csv))
     sensors, grids = _sensors(doc, label)
+    spectra = None
+    if doc.output.responses is not None or doc.spectra is not None:
+        from simulator.spectra.config import load_spectra_settings
+
+        spectra = load_spectra_settings(raw, Path(label).expanduser())  # messages name the file as given
     return RunConfig(
         path=cfg_path,
         stage=stage,
@@ -102,6 +107,7 @@ def load_config(path: str | os.PathLike) -> RunConfig:
         output=output,
         raw=raw,
         variants=dict(doc.variants),
+        spectra=spectra,
     )
 
 

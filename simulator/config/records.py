@@ -211,6 +211,9 @@ class RunConfig:
         Variant selections, variant-set name to variant name, applied to the
         stage before it is read (whether the stage offers them is checked
         when it is read); empty: the stage's own selections.
+    spectra : simulator.spectra.config.SpectraSettings or None
+        ``output.responses`` and ``[spectra]``, resolved; None when the
+        config has neither (the run writes only the standard columns).
     """
 
     path: Path
@@ -224,3 +227,4 @@ class RunConfig:
     raw: dict = field(default_factory=dict)
     overrides: dict = field(default_factory=dict)
     variants: dict[str, str] = field(default_factory=dict)
+    spectra: object | None = None

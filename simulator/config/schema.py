@@ -50,13 +50,21 @@ flags are checked by these same models (:mod:`simulator.config.overrides`).
 
     [output]
     csv = "out.csv"       # default: "<config stem>.csv" beside the config
+    responses = ["par", "melanopic_edi"]  # optional: extra response columns
+
+    [spectra]             # optional: the lights' spectral shape
+    lights = "D65"        # illuminant, temperature (K) or SPD .csv
+
+``output.responses`` and ``[spectra]`` are checked by
+:func:`simulator.spectra.config.load_spectra_settings` (they are opaque
+here so that its one-line messages name the entry at fault).
 
 Vectors are in the probesim world frame (metres, right-handed, Z up).
 """
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any
 
 from pydantic import Field
 
@@ -137,6 +145,8 @@ class Output(Table):
     """``[output]``: ``csv`` is resolved against the config's folder (default ``<config stem>.csv`` there)."""
 
     csv: Annotated[Text, nonblank("empty path")] | None = None
+    #: response names / custom tables, checked by :mod:`simulator.spectra.config`
+    responses: Any = None
 
 
 #: ``variants``: variant-set name -> variant name
@@ -157,3 +167,5 @@ class RunFile(Table):
     sensor: Annotated[list[SensorEntry], tables("sensor")] = []
     grid: Annotated[list[Grid], tables("grid")] = []
     output: Output = Output()
+    #: ``[spectra]``, checked by :mod:`simulator.spectra.config`
+    spectra: Any = None

@@ -19,9 +19,12 @@ sensor, in order:
 3. **paths** (``path``) otherwise: interreflection is part of the reading.
 
 Lights wholly behind a sensor's plane contribute nothing to it and are not
-sampled for it. Materials and light colours are grey, so one spectral
-channel is traced (with its radiometric and photometric totals). An explicit
-method overrides the plan for every sensor.
+sampled for it. One spectral channel is traced (with its radiometric and
+photometric totals); the plan says which transport the scene needs and why
+(:func:`simulator.spectra.transport.choose_transport`): ``grey`` is exact
+with one channel, ``per-emitter`` and ``spectral`` are not built yet, so
+such a scene is traced with its colours reduced to luminance grey. An
+explicit method overrides the plan for every sensor.
 """
 
 from __future__ import annotations
@@ -208,6 +211,8 @@ class Plan:
     channels: int
     channel_reason: str
     sensors: list[SensorPlan]
+    #: transport the scene needs (:data:`simulator.spectra.transport.TRANSPORTS`)
+    transport: str = "grey"
 
     def groups(self) -> dict[str, np.ndarray]:
         """Sensor indices per method, in first-use order."""
@@ -229,6 +234,7 @@ class Plan:
         return {
             "requested": self.requested,
             "component": self.component,
+            "transport": self.transport,
             "channels": self.channels,
             "channel_reason": self.channel_reason,
             "methods": {m: len(ix) for m, ix in self.groups().items()},
@@ -331,7 +337,7 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
     An explicit ``requested`` method applies to every sensor (``analytic``
     raises :class:`UserError` naming a sensor it cannot read).
     """
-    grey = "materials and lights are grey (colours reduced to luminance grey): one spectral channel"
+    transport, channels, channel_reason = _transport(scene)
     bounds = scene_bounds(scene)
     plans = []
     for s in sensors:
@@ -369,7 +375,18 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
         else:
             method, reason = "path", "surfaces it sees reflect: interreflection needs paths"
         plans.append(SensorPlan(s.name, kind, method, method == "path", reason, lights, culled, geometry))
-    return Plan(requested, component, 1, grey, plans)
+    return Plan(requested, component, channels, channel_reason, plans, transport)
+
+
+def _transport(scene: Scene) -> tuple[str, int, str]:
+    """``(transport, channels traced, reason)``: grey is one channel, exact; the others are not built yet."""
+    from simulator.spectra.transport import choose_transport
+
+    mode, needed, why = choose_transport(scene)
+    if mode == "grey":
+        return mode, 1, "materials and lights are grey (colours reduced to luminance grey): one spectral channel"
+    return mode, 1, (f"{mode} transport needed ({needed} channels: {why}), not built yet: "
+                     "one channel, colours reduced to luminance grey")
 
 
 def format_plan(plan: Plan, max_rows: int = 40) -> str:
@@ -380,5 +397,5 @@ def format_plan(plan: Plan, max_rows: int = 40) -> str:
     if len(plan.sensors) > max_rows:
         lines.append(f"... {len(plan.sensors) - max_rows} more sensors")
     counts = ", ".join(f"{m}: {len(ix)}" for m, ix in plan.groups().items())
-    lines.append(f"methods: {counts}; component {plan.component}; channels: {plan.channels} ({plan.channel_reason})")
+    lines.append(f"methods: {counts}; component {plan.component}; transport {plan.transport}, channels: {plan.channels} ({plan.channel_reason})")
     return "\n".join(lines)
