@@ -9,7 +9,9 @@ The copy is self-contained and editable::
 so ``probesim run DIR/NAME.toml`` works wherever probesim is installed. In
 the config only two values change: ``stage`` (``"../stages/x.usda"`` becomes
 ``"stages/x.usda"``) and an ``[output] csv`` that would land outside DIR
-(``"../out/x.csv"`` becomes ``"out/x.csv"``); comments stay as they are.
+(``"../out/x.csv"`` becomes ``"out/x.csv"``); a ``[spectra] lights`` SPD
+file under ``stages/`` is copied too and its path rewritten alike; comments
+stay as they are.
 
 Nothing is written if the name is unknown or any file to be written already
 exists with other, non-empty contents: that is a one-line :class:`UserError`
@@ -94,8 +96,18 @@ def example_files(name: str) -> tuple[str, dict[Path, Path]]:
     if csv is not None and PurePosixPath(csv).parts[:1] == ("..",):
         csv_to = f"out/{PurePosixPath(csv).name}"
         text = _replace_value(text, "csv", csv, csv_to)
+    lights = raw.get("spectra", {}).get("lights")
+    lights_to = None
+    if isinstance(lights, str) and lights.lower().endswith(".csv"):  # an SPD file: copied beside the stage
+        spd = (config.parent / lights).resolve()
+        if not spd.is_relative_to(root) or not spd.is_file():
+            raise RuntimeError(f"bundled config {config} names {lights}, which is not a bundled file")
+        files[spd] = Path("stages", spd.relative_to(root))
+        lights_to = PurePosixPath(*files[spd].parts).as_posix()
+        text = _replace_value(text, "lights", lights, lights_to)
     new = tomllib.loads(text)  # the rewrite must have changed exactly those values
-    if new["stage"] != stage_to or (csv_to and new["output"]["csv"] != csv_to):
+    if (new["stage"] != stage_to or (csv_to and new["output"]["csv"] != csv_to)
+            or (lights_to and new["spectra"]["lights"] != lights_to)):
         raise RuntimeError(f"bundled config {config}: could not rewrite its paths")
     return text, files
 
