@@ -104,7 +104,7 @@ def run_bench(configs: list[Path], device: str = "cpu", samples: int = 4096, cap
         info["device"] = engine.device
         info["threads"] = engine.threads
         from simulator.commands.bench_reference import reference_path
-        from simulator.plan.exact_rule import closed_form_refusal
+        from simulator.plan.planner import closed_form_refusal
 
         if reference_path(path).is_file():
             continue  # measured against its reference below

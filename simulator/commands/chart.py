@@ -256,7 +256,7 @@ def _skip_reason(method: str, scene, sensors, component: str) -> str:
     from simulator.plan.planner import analytic_refusal
 
     if method in ("analytic", "exact"):
-        from simulator.plan.exact_rule import closed_form_refusal
+        from simulator.plan.planner import closed_form_refusal
 
         if component != "total":
             return f"closed forms give the total, not the {component} component"
@@ -368,6 +368,8 @@ def chart_config(
             curve.budgets, curve.seconds = [0], [float(np.median(times))]
             curve.errors = [_rel_rms(res.mean[:, 0], ref, use)]
             curve.exact = True
+            if m == "exact":  # give the other methods every light again, as before
+                engine.set_light_mask(np.ones((len(sensors), len(scene.lights)), np.int32))
             log(f"  {m:<9} {curve.seconds[0] * 1e3:.3f} ms, error {curve.errors[0]:.1e}")
             continue
         run_kw = dict(max_depth=sim.max_depth, component=sim.component)

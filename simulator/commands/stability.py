@@ -249,7 +249,7 @@ def run_cell(
     with seeds ``seed, seed+1, …`` (independent streams), pooled, until the
     next batch would overrun the budget.
     """
-    from simulator.plan.exact_rule import closed_form_refusal
+    from simulator.plan.planner import closed_form_refusal
 
     sensors = engine.sensors
     if method in ("analytic", "exact"):
@@ -262,6 +262,8 @@ def run_cell(
 
             engine.set_light_mask(cull_mask(engine.scene, sensors))
         res = engine.run(method, samples=1, seed=seed, sensor_ids=np.array(ok))
+        if method == "exact":  # give the other methods every light again, as before
+            engine.set_light_mask(np.ones((len(sensors), len(engine.scene.lights)), np.int32))
         sub = np.array(ok)
         note = "" if len(ok) == len(sensors) else f"{len(ok)} of {len(sensors)} sensors (the rest: no closed form)"
         return _cell_from(case, method, [sensors[i] for i in ok], truth[sub], scale[sub], res.mean[sub, 0],

@@ -40,7 +40,7 @@ from simulator.plan.bounds import FrontIndex
 from simulator.scene.model import LightKind, Scene, Sensor, SensorKind, patch_width_axis
 
 __all__ = ["MC_METHODS", "SensorPlan", "Plan", "SceneBounds", "make_plan", "probe_method", "analytic_refusal", "scene_bounds",
-           "lights_behind", "cull_mask", "format_plan"]
+           "lights_behind", "cull_mask", "closed_form_refusal", "format_plan"]
 
 #: a light subtending more than this solid angle (sr) from a direct-lit
 #: sensor makes `mis` the plan: its cosine-weighted direction then lands on
@@ -275,6 +275,14 @@ def lights_behind(scene: Scene, sensor: Sensor) -> list[str]:
         if behind:
             out.append(l.name)
     return out
+
+
+def closed_form_refusal(method: str, scene: Scene, sensor: Sensor) -> str | None:
+    """For the commands that try every method: why ``method`` (``analytic`` or
+    ``exact``) cannot read ``sensor``, or None if it can."""
+    if method == "analytic":
+        return analytic_refusal(scene, sensor)
+    return exact_plan_refusal(scene, sensor, lights_behind(scene, sensor))
 
 
 def cull_mask(scene: Scene, sensors: list[Sensor]) -> np.ndarray:
