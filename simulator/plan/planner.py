@@ -369,7 +369,7 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
             method, reason = "path", "indirect light has been reflected on the way: paths"
         elif refusal is None and (not reflects or component == "direct"):
             method, reason = "analytic", "nothing can block its lights" + ("" if component == "direct" else " and nothing in front of it reflects: closed form")
-        elif (not reflects or component == "direct") and (no_exact := exact_plan_refusal(scene, s, culled)) is None:
+        elif (not reflects or component == "direct") and exact_plan_refusal(scene, s, culled) is None:
             method = "exact"
             reason = f"no surface it sees reflects ({refusal}): each RectLight's visible part in closed form, penumbrae exact"
         elif not reflects or component == "direct":
