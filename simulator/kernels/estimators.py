@@ -472,6 +472,22 @@ def shaping_factor(l: LightRec, w_out: wp.vec3) -> float:
 
 
 @wp.func
+def light_contribution(scene: SceneRec, params: TraceParams, li: int, value: wp.vec2) -> wp.vec2:
+    """Light ``li``'s share ``value`` (W and lm channels) of one sample, as
+    the trace tallies it. Every place a sample adds emitted light goes
+    through here, so per-light tallies (light groups) and per-light scalings
+    have one hook; today it passes the value on unchanged."""
+    return value
+
+
+@wp.func
+def surface_albedo(scene: SceneRec, params: TraceParams, face: int) -> float:
+    """Diffuse albedo ρ of triangle ``face`` for this trace: the one place a
+    path reads a surface's reflectance."""
+    return scene.albedo[face]
+
+
+@wp.func
 def vertex_irradiance(
     scene: SceneRec, p_in: wp.vec3, n_in: wp.vec3, weight_in: float, params: TraceParams, skip_first: int, rng_in: wp.uint32
 ) -> wp.vec2:
@@ -513,7 +529,7 @@ def vertex_irradiance(
                     if w > 0.0:
                         count_ray(scene, params)
                     if w > 0.0 and shadow_ray_clear(scene, o, p, li, ls):
-                        total += (weight * w) * ls.value
+                        total += light_contribution(scene, params, li, (weight * w) * ls.value)
         if params.bsdf == 0:
             break
         # -- a cosine-weighted direction: E ≈ π·L(ω)
@@ -538,7 +554,7 @@ def vertex_irradiance(
                 w = float(1.0)
                 if params.mis != 0 and params.nee != 0:
                     w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, t, -1))
-                total += (w_dir * w * shaping_factor(l, -wi)) * l.emission
+                total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission)
         if face < 0:
             for li in range(scene.n_lights):
                 le = escaped_radiance(scene.lights[li], wi)
@@ -546,7 +562,7 @@ def vertex_irradiance(
                     w = float(1.0)
                     if params.mis != 0 and params.nee != 0:
                         w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, RAY_INF, -1))
-                    total += (w_dir * w) * le
+                    total += light_contribution(scene, params, li, (w_dir * w) * le)
             break
         cos_view = -wp.dot(wi, ng)
         le = tri_emitted(scene, face, cos_view)
@@ -554,13 +570,13 @@ def vertex_irradiance(
             w = float(1.0)
             if params.mis != 0 and params.nee != 0 and params.emissive_light >= 0:
                 w = power_heuristic(pdf_b, pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
-            total += (w_dir * w) * le
+            total += light_contribution(scene, params, params.emissive_light, (w_dir * w) * le)
         if params.bounces >= 0 and depth >= params.bounces:
             break
         # -- reflect: L_o = ρ/π·E, so the next vertex's weight is w_dir·ρ/π
         #    = weight_in·β·ρ. Below RR_THRESHOLD, survive with probability
         #    q = β/RR_THRESHOLD and divide by it (Russian roulette, unbiased).
-        beta = beta * scene.albedo[face]
+        beta = beta * surface_albedo(scene, params, face)
         if beta < RR_THRESHOLD:
             q_survive = beta / RR_THRESHOLD
             if wp.randf(rng) >= q_survive:
@@ -594,16 +610,16 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     for li in range(scene.n_lights):
         l = scene.lights[li]
         if hit_light_before(l, o, d, t_hit) > 0.0 and direct:
-            total += shaping_factor(l, -d) * l.emission
+            total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission)
     if face < 0:
         if direct:
             for li in range(scene.n_lights):
-                total += escaped_radiance(scene.lights[li], d)
+                total += light_contribution(scene, params, li, escaped_radiance(scene.lights[li], d))
         return total
     cos_view = -wp.dot(d, ng)
     if direct:
-        total += tri_emitted(scene, face, cos_view)
-    rho = scene.albedo[face]
+        total += light_contribution(scene, params, params.emissive_light, tri_emitted(scene, face, cos_view))
+    rho = surface_albedo(scene, params, face)
     if rho > 0.0:
         n = wp.where(cos_view > 0.0, ng, -ng)
         total += vertex_irradiance(scene, o + t_hit * d, n, rho * INV_PI, params, params.skip_direct, rng)
