@@ -1,7 +1,8 @@
 """``probesim chart``: speed against accuracy, per estimator, on configs.
 
-For each config and each estimator that applies (``analytic``, ``light``,
-``bsdf``, ``mis``, ``path``; a method blind to the scene's lights or biased
+For each config and each estimator that applies (``analytic``, ``exact``,
+``light``, ``bsdf``, ``mis``, ``path``, and the planner's per-sensor ``auto``,
+run at the same fixed budgets; a method blind to the scene's lights or biased
 for it is listed with the reason and not run) it climbs a ladder of budgets,
 samples per sensor doubling from 16 until a run takes ``max_seconds``, with
 several independent seeds at each rung, and measures:
@@ -10,10 +11,13 @@ several independent seeds at each rung, and measures:
   after a warm-up run, so kernel compilation is not timed);
 - the relative RMS error over the config's sensors,
   ``sqrt(mean_i ((estimate_i − reference_i)/reference_i)²)``, radiometric
-  channel, over sensors whose reference is not 0 (a shadow's 0 has no
+  channel (photometric against a stored reference, which is in lx), over
+  sensors whose reference is not 0 (a shadow's 0 has no
   relative error; it counts in the CSV).
 
-The reference is the closed form where the ``analytic`` estimator applies to
+The reference is the config's stored reference
+(``configs/references/NAME.csv``, the one ``probesim bench`` uses) where it
+has one; else the closed form where the ``analytic`` estimator applies to
 every sensor; otherwise a long ``path`` run, made once and cached in
 ``<out>/<config>.reference.npz``, keyed by a hash of the config, the stage,
 the run settings and the package version. Its own relative standard error is
@@ -78,7 +82,8 @@ __all__ = [
 #: suite of the reference registry (:mod:`simulator.reference.cases`), config stems
 DEFAULT_CONFIGS = tuple(Path(c.config).stem for c in suite("chart"))
 CSV_COLUMNS = ("config", "method", "budget", "seed", "sensor", "estimate", "reference", "stderr", "seconds", "device")
-METHODS = READ_METHODS
+#: the curves charted: every method that reads a sensor, and the planner's ``auto``
+METHODS = (*READ_METHODS, "auto")
 #: first rung of the ladder, samples per sensor
 FIRST_BUDGET = 16
 #: last possible rung (sample indices are int32 in the kernel)
@@ -215,14 +220,37 @@ def _samples_text(samples) -> str:
     return f"{lo:,} samples/sensor" if lo == hi else f"{lo:,}-{hi:,} samples/sensor"
 
 
-def _reference(cfg, engine, sensors, max_seconds: float, cache_dir: Path, log) -> tuple[np.ndarray, np.ndarray, str]:
-    """Per-sensor reference (mean, stderr, radiometric) and how it was made."""
+def _stored_reference(cfg, sensors) -> tuple[np.ndarray, np.ndarray, str] | None:
+    """The config's stored reference (``configs/references/NAME.csv``, as
+    ``probesim bench`` reads it: illuminance in lx, photometric channel), or
+    None when it has none."""
+    from simulator.commands.bench_reference import read_reference, reference_path
+
+    path = reference_path(Path(cfg.path))
+    if not path.is_file():
+        return None
+    table = read_reference(path)
+    missing = [s.name for s in sensors if s.name not in table]
+    if missing:
+        raise UserError(f"{path}: no reference for sensor {missing[0]!r} of {cfg.path} ({len(missing)} missing)")
+    mean = np.array([table[s.name][0] for s in sensors])
+    se = np.array([table[s.name][1] for s in sensors])
+    return mean, se, f"stored reference {path.parent.name}/{path.name}"
+
+
+def _reference(cfg, engine, sensors, max_seconds: float, cache_dir: Path, log) -> tuple[np.ndarray, np.ndarray, str, int]:
+    """Per-sensor reference (mean, stderr), how it was made, and the channel
+    it is in (0 radiometric, 1 photometric: a stored reference is in lx)."""
     from simulator.plan.planner import analytic_refusal
 
+    stored = _stored_reference(cfg, sensors)
+    if stored is not None:
+        log(f"  reference: {stored[2]}")
+        return (*stored, 1)
     sim = cfg.simulation
     if sim.component == "total" and all(analytic_refusal(engine.scene, s) is None for s in sensors):
         res = engine.run("analytic", samples=1, seed=1)
-        return res.mean[:, 0].copy(), np.zeros(len(sensors)), "closed form (analytic)"
+        return res.mean[:, 0].copy(), np.zeros(len(sensors)), "closed form (analytic)", 0
     seconds = REFERENCE_TIME_FACTOR * max_seconds
     extra = {"component": sim.component, "max_depth": sim.max_depth, "rel": REFERENCE_REL_ERROR,
              "seconds": seconds, "seed": REFERENCE_SEED, "sensors": tuple(s.name for s in sensors)}  # fmt: skip
@@ -234,7 +262,7 @@ def _reference(cfg, engine, sensors, max_seconds: float, cache_dir: Path, log) -
             if str(z["key"]) == key:
                 what = _samples_text(z["samples"])
                 log(f"  reference: path, {what}, cached in {path}")
-                return z["mean"], z["stderr"], f"path, {what} (cached)"
+                return z["mean"], z["stderr"], f"path, {what} (cached)", 0
         except (OSError, KeyError, ValueError):
             pass
     log(f"  reference: path tracing for {seconds:.0f} s; cached in {path}")
@@ -245,7 +273,7 @@ def _reference(cfg, engine, sensors, max_seconds: float, cache_dir: Path, log) -
     tmp = path.with_name(f".{path.name}.{os.getpid()}.npz")
     np.savez(tmp, key=np.array(key), mean=mean, stderr=se, samples=res.samples, seconds=np.array(res.wall_s))
     os.replace(tmp, path)
-    return mean, se, f"path, {_samples_text(res.samples)}"
+    return mean, se, f"path, {_samples_text(res.samples)}", 0
 
 
 # --------------------------------------------------------------------------- ladders
@@ -266,11 +294,13 @@ def _skip_reason(method: str, scene, sensors, component: str) -> str:
                 return f"no closed form: {why}"
         return ""
     reflects = scene.geometry.n_triangles > 0 and bool(np.any(scene.geometry.albedo > 0))
+    if method == "auto":
+        return ""
     if component == "indirect" and not METHOD_FLAGS[method][3]:
         return "biased: the indirect component needs paths"
     if method == "bsdf" and any(l.is_delta for l in scene.lights):
         return "blind: point/angle-0 distant lights"
-    if method != "path" and reflects and component != "direct":
+    if method != "auto" and not METHOD_FLAGS[method][3] and reflects and component != "direct":
         return "biased: ignores interreflection"
     return ""
 
@@ -309,6 +339,23 @@ def _adaptive_times(engine, scene, sensors, sim, methods: list[str], log) -> dic
     return out
 
 
+def _ladder_runner(method: str, engine, scene, sensors, sim):
+    """``run(budget, seed) -> EngineResult``: one fixed-budget run of
+    ``method``; for ``auto`` the planner's per-sensor plan, as ``probesim run``
+    reads it (each sensor by its own method, lights culled per sensor)."""
+    run_kw = dict(max_depth=sim.max_depth, component=sim.component)
+    if method != "auto":
+        return lambda budget, seed: engine.run(method, samples=budget, seed=seed, **run_kw)
+    from dataclasses import replace
+
+    from simulator.pipeline import run_plan
+    from simulator.plan.planner import make_plan
+
+    plan = make_plan(scene, sensors, "auto", sim.component)
+    fixed = replace(sim, rel_error=None, time_limit_s=None)
+    return lambda budget, seed: run_plan(engine, plan, replace(fixed, samples=budget, seed=seed))
+
+
 def _rel_rms(est: np.ndarray, ref: np.ndarray, use: np.ndarray) -> float:
     if not use.any():
         return 0.0
@@ -317,7 +364,7 @@ def _rel_rms(est: np.ndarray, ref: np.ndarray, use: np.ndarray) -> float:
 
 def chart_config(
     path: Path, out_dir: Path, *, seeds: int = 4, max_seconds: float = 0.5, device: str = "cpu",
-    methods=METHODS, max_budget: int = MAX_BUDGET, plot: bool = True, log=print,
+    methods=METHODS, max_budget: int = MAX_BUDGET, plot: bool = True, adaptive: bool = True, log=print,
 ) -> ConfigChart:  # fmt: skip
     """Ladders of every applicable method in ``methods`` on one config (see
     the module docstring). A ladder stops at the first rung whose median run
@@ -337,7 +384,7 @@ def chart_config(
     engine = Engine(scene, sensors, device=device, threads=cfg.simulation.threads)
     sim = cfg.simulation
     log(f"{name}: {len(sensors)} sensors on {engine.device}")
-    ref, ref_se, ref_kind = _reference(cfg, engine, sensors, max_seconds, Path(out_dir), log)
+    ref, ref_se, ref_kind, c = _reference(cfg, engine, sensors, max_seconds, Path(out_dir), log)
     # sensors whose reference is 0 (a shadow; or within 3 of its standard errors of 0) have no relative error
     use = np.abs(ref) > 3.0 * ref_se
     use &= ref != 0
@@ -364,26 +411,26 @@ def chart_config(
                 res = engine.run(m, samples=1, seed=seed)
                 times.append(res.wall_s)
                 for i, s in enumerate(sensors):
-                    chart.rows.append((name, m, 0, seed, s.name, res.mean[i, 0], ref[i], 0.0, res.wall_s, engine.device))
+                    chart.rows.append((name, m, 0, seed, s.name, res.mean[i, c], ref[i], 0.0, res.wall_s, engine.device))
             curve.budgets, curve.seconds = [0], [float(np.median(times))]
-            curve.errors = [_rel_rms(res.mean[:, 0], ref, use)]
+            curve.errors = [_rel_rms(res.mean[:, c], ref, use)]
             curve.exact = True
             if m == "exact":  # give the other methods every light again, as before
                 engine.set_light_mask(np.ones((len(sensors), len(scene.lights)), np.int32))
             log(f"  {m:<9} {curve.seconds[0] * 1e3:.3f} ms, error {curve.errors[0]:.1e}")
             continue
-        run_kw = dict(max_depth=sim.max_depth, component=sim.component)
-        engine.run(m, samples=FIRST_BUDGET, seed=0, **run_kw)  # warm-up: compilation and caches are not timed
+        run = _ladder_runner(m, engine, scene, sensors, sim)
+        run(FIRST_BUDGET, 0)  # warm-up: compilation and caches are not timed
         budget = FIRST_BUDGET
         while True:
             sq, times = [], []
             rung = len(curve.budgets)
             for seed in range(1 + rung * seeds, 1 + (rung + 1) * seeds):
-                res = engine.run(m, samples=budget, seed=seed, **run_kw)
+                res = run(budget, seed)
                 times.append(res.wall_s)
-                sq.append(_rel_rms(res.mean[:, 0], ref, use) ** 2)
+                sq.append(_rel_rms(res.mean[:, c], ref, use) ** 2)
                 for i, s in enumerate(sensors):
-                    chart.rows.append((name, m, budget, seed, s.name, res.mean[i, 0], ref[i], res.stderr[i, 0],
+                    chart.rows.append((name, m, budget, seed, s.name, res.mean[i, c], ref[i], res.stderr[i, c],
                                        res.wall_s, engine.device))  # fmt: skip
             curve.budgets.append(budget)
             curve.seconds.append(float(np.median(times)))
@@ -401,7 +448,11 @@ def chart_config(
         slope = "exact" if curve.exact else ("-" if curve.slope is None else f"{curve.slope:+.2f}")
         log(f"  {m:<9} {len(curve.budgets)} rungs to {curve.budgets[-1]:,} samples/sensor in {curve.seconds[-1]:.3f} s, "
             f"error {curve.errors[-1]:.1e}, slope {slope}")  # fmt: skip
-    chart.adaptive = _adaptive_times(engine, scene, sensors, sim, [c.method for c in chart.curves if not c.skipped], log)
+    if "auto" in methods:  # the plan culled lights per sensor: give every light back
+        engine.set_light_mask(np.ones((len(sensors), len(scene.lights)), np.int32))
+    if adaptive:
+        singles = [c.method for c in chart.curves if not c.skipped and c.method != "auto"]
+        chart.adaptive = _adaptive_times(engine, scene, sensors, sim, singles, log)
     suspect = _reference_suspect(chart.curves)
     if suspect:
         chart.notes.append(suspect)
@@ -437,6 +488,8 @@ _STYLE = {
     "bsdf": dict(color="#ff7f0e", marker="s"),
     "mis": dict(color="#2ca02c", marker="^"),
     "path": dict(color="#d62728", marker="D"),
+    "exact": dict(color="#8c564b", marker="P"),
+    "auto": dict(color="#7f7f7f", marker="X", lw=2.4),
 }
 
 
@@ -460,7 +513,7 @@ def _plot(chart: ConfigChart, path: Path) -> None:
             label += " (exact)"
         elif c.slope is not None:
             label += f" (slope {c.slope:+.2f})"
-        ax.loglog(c.seconds, y, "-", marker=st.get("marker"), color=st.get("color"), ms=4, lw=1.3, label=label)
+        ax.loglog(c.seconds, y, "-", marker=st.get("marker"), color=st.get("color"), ms=4, lw=st.get("lw", 1.3), label=label)
         if c.exact and c.method == "analytic":
             ax.annotate("closed form", (c.seconds[0], floor_y), textcoords="offset points", xytext=(6, 4), fontsize=7.5)
         t1, _ = c.time_to(1e-2)
@@ -550,7 +603,7 @@ def default_configs() -> list[Path]:
 
 def run_chart(
     configs: list[Path], out_dir: Path, *, seeds: int = 4, max_seconds: float = 0.5, device: str = "cpu",
-    methods=METHODS, max_budget: int = MAX_BUDGET, log=print,
+    methods=METHODS, max_budget: int = MAX_BUDGET, adaptive: bool = True, log=print,
 ) -> list[ConfigChart]:  # fmt: skip
     """Chart each config; write ``chart.csv`` and the PNGs into ``out_dir``."""
     from simulator.io.results import _atomic_write_all
@@ -567,24 +620,26 @@ def run_chart(
     charts = []
     for p in configs:
         charts.append(chart_config(Path(p), out_dir, seeds=seeds, max_seconds=max_seconds, device=device,
-                                   methods=methods, max_budget=max_budget, log=log))  # fmt: skip
+                                   methods=methods, max_budget=max_budget, adaptive=adaptive, log=log))  # fmt: skip
     rows = [r for ch in charts for r in ch.rows]
     _atomic_write_all({out_dir / "chart.csv": _csv_text(rows)})
     return charts
 
 
-def main_chart(configs: list[str], out: str, seeds: int, max_seconds: float, device: str, log=print) -> int:
+def main_chart(configs: list[str], out: str, seeds: int, max_seconds: float, device: str, log=print,
+               methods=None, adaptive: bool = True) -> int:  # fmt: skip
     """The ``probesim chart`` command."""
     from simulator.commands.bench import processor_name
 
     t0 = time.perf_counter()
     paths = [Path(c) for c in configs] or default_configs()
-    charts = run_chart(paths, Path(out), seeds=seeds, max_seconds=max_seconds, device=device, log=log)
+    charts = run_chart(paths, Path(out), seeds=seeds, max_seconds=max_seconds, device=device, log=log,
+                       methods=tuple(methods) if methods else METHODS, adaptive=adaptive)  # fmt: skip
     log("")
     log(format_summary(charts))
     dev = charts[0].device if charts else device
     log(f"device {dev} ({processor_name()}, {os.cpu_count()} cores); {seeds} seeds per rung; "
-        f"errors relative, radiometric, RMS over sensors; times: median wall time of one run; "
+        f"errors relative, RMS over sensors, radiometric (photometric against a stored reference in lx); times: median wall time of one run; "
         f"'<=': the first rung already met the target; 1/(var*t) in 1/s; slopes of log error on log time (t, "
         f"rungs >= 10x the first rung's time) and on log samples (N)")  # fmt: skip
     for ch in charts:

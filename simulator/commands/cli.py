@@ -64,6 +64,9 @@ def _parser() -> argparse.ArgumentParser:
     ch.add_argument("--max-seconds", type=float, default=0.5, metavar="S",
                     help="stop a method's ladder once one run takes S seconds (default 0.5)")
     ch.add_argument("--device", choices=("cpu", "cuda", "auto"), default="cpu", help="Warp device (default cpu)")
+    ch.add_argument("--methods", metavar="M,M", help="comma-separated curves to draw (default: every method and auto)")
+    ch.add_argument("--no-adaptive", action="store_true",
+                    help="skip the planner check (adaptive runs of every method to 1%%; slow on big grids)")
 
     st = sub.add_parser("stability", help="map where each estimator fails: methods x hard cases (CSV, heat map)")
     st.add_argument("--out", default="out/stability", metavar="DIR", help="CSVs and heat map (default out/stability)")
@@ -91,7 +94,16 @@ def _cmd_example(args) -> int:
 def _cmd_chart(args) -> int:
     from simulator.commands.chart import main_chart
 
-    return main_chart(args.configs, args.out, args.seeds, args.max_seconds, args.device, log=lambda m: print(m, flush=True))
+    methods = None
+    if args.methods:
+        from simulator.commands.chart import METHODS
+
+        methods = [m.strip() for m in args.methods.split(",") if m.strip()]
+        unknown = [m for m in methods if m not in METHODS]
+        if unknown:
+            raise UserError(f"--methods: unknown method {unknown[0]!r} (expected some of {', '.join(METHODS)})")
+    return main_chart(args.configs, args.out, args.seeds, args.max_seconds, args.device,
+                      log=lambda m: print(m, flush=True), methods=methods, adaptive=not args.no_adaptive)  # fmt: skip
 
 
 def _cmd_stability(args) -> int:

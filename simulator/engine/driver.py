@@ -132,9 +132,8 @@ class Engine:
         if self._device_scene is None:
             wp = warp()
             from simulator.kernels import estimators as K
-            from simulator.kernels import probe as KP
 
-            self._kernels = (K, KP)
+            self._kernels = K
             # compile (or load from the kernel cache) before worker threads launch
             wp.load_module(K, device=self.device)
             self._device_scene = DeviceScene(self.scene, self.sensors, self.device)
@@ -149,12 +148,15 @@ class Engine:
     @property
     def _K(self):
         self._upload()
-        return self._kernels[0]
+        return self._kernels
 
     @property
     def _KP(self):
+        """The probe kernels, imported on first use (a run without probes skips them)."""
         self._upload()
-        return self._kernels[1]
+        from simulator.kernels import probe as KP
+
+        return KP
 
     @property
     def scene_rec(self):

@@ -50,6 +50,7 @@ from .lights import (  # noqa: F401  (LightRec, SceneRec re-exported for the eng
     analytic_patch_light,
     escaped_radiance,
     hit_light,
+    kind_chain,
     light_within,
     pdf_light,
     sample_light,
@@ -697,26 +698,52 @@ SENSOR_KERNELS = (
     SensorKernel(SensorKind.RADIANCE, sample_radiance, upload=_upload_radiance),
     SensorKernel(SensorKind.PATCH, sample_patch, analytic=analytic_patch, upload=_upload_patch),
 )
-_SAMPLE = tuple((int(k.kind), k.sample) for k in SENSOR_KERNELS)
-_ANALYTIC = tuple((int(k.kind), k.analytic) for k in SENSOR_KERNELS if k.analytic is not None)
+def _sample_link(k, hook, rest):
+    @wp.func
+    def sample_kind(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+        if s.kind == wp.static(k):
+            return wp.static(hook)(scene, s, params, rng_in)
+        return wp.static(rest)(scene, s, params, rng_in)
+
+    return sample_kind
+
+
+@wp.func
+def _no_sample(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+    return wp.vec2(0.0, 0.0)
+
+
+def _analytic_link(k, hook, rest):
+    @wp.func
+    def analytic_kind(scene: SceneRec, s: SensorRec) -> wp.vec2:
+        if s.kind == wp.static(k):
+            return wp.static(hook)(scene, s)
+        return wp.static(rest)(scene, s)
+
+    return analytic_kind
+
+
+@wp.func
+def _no_analytic(scene: SceneRec, s: SensorRec) -> wp.vec2:
+    return wp.vec2(0.0, 0.0)
+
+
+_sample_chain = kind_chain(tuple((int(k.kind), k.sample) for k in SENSOR_KERNELS), _sample_link, _no_sample)
+_analytic_chain = kind_chain(
+    tuple((int(k.kind), k.analytic) for k in SENSOR_KERNELS if k.analytic is not None), _analytic_link, _no_analytic
+)
 
 
 @wp.func
 def sample_sensor(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
     """One sample of sensor ``s``'s reading (dispatch over ``SENSOR_KERNELS``)."""
-    for i in range(wp.static(len(_SAMPLE))):
-        if s.kind == wp.static(_SAMPLE[i][0]):
-            return wp.static(_SAMPLE[i][1])(scene, s, params, rng_in)
-    return wp.vec2(0.0, 0.0)
+    return _sample_chain(scene, s, params, rng_in)
 
 
 @wp.func
 def analytic_sensor(scene: SceneRec, s: SensorRec) -> wp.vec2:
     """Closed-form reading of sensor ``s`` (dispatch over ``SENSOR_KERNELS``)."""
-    for i in range(wp.static(len(_ANALYTIC))):
-        if s.kind == wp.static(_ANALYTIC[i][0]):
-            return wp.static(_ANALYTIC[i][1])(scene, s)
-    return wp.vec2(0.0, 0.0)
+    return _analytic_chain(scene, s)
 
 
 def sensor_record(sensor: Sensor) -> SensorRec:

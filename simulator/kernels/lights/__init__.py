@@ -8,7 +8,7 @@ hooks in one :class:`~simulator.kernels.lights.base.LightKernel` named
 exactly one, and generates :func:`sample_light`, :func:`pdf_light`,
 :func:`hit_light`, :func:`escaped_radiance`, :func:`light_within`,
 :func:`analytic_light` and :func:`analytic_patch_light` as unrolled
-``if kind == k`` chains over the declared hooks (``wp.static``), and the
+``if kind == k`` chains over the declared hooks (:func:`kind_chain`), and the
 host upload :func:`light_record`.
 
 Each sampler returns the light's *unshadowed* contribution to irradiance on
@@ -47,7 +47,7 @@ from .base import RAY_INF, LightKernel, LightRec, LightSample, SceneRec, empty_s
 
 __all__ = [
     "KERNELS", "RAY_INF", "LightKernel", "LightRec", "LightSample", "SceneRec",
-    "analytic_light", "analytic_patch_light", "emissive_record", "escaped_radiance", "hit_light",
+    "analytic_light", "analytic_patch_light", "emissive_record", "escaped_radiance", "hit_light", "kind_chain",
     "light_record", "light_within", "pdf_light", "sample_light", "tri_emitted", "tri_vertex",
 ]  # fmt: skip
 
@@ -79,23 +79,143 @@ def _hooks(name: str) -> tuple[tuple[int, object], ...]:
     return tuple((int(k.kind), getattr(k, name)) for k in KERNELS if getattr(k, name) is not None)
 
 
-_SAMPLE = _hooks("sample")
-_PDF = _hooks("pdf")
-_HIT = _hooks("hit")
-_ESCAPED = _hooks("escaped")
-_NEAR = _hooks("near")
-_ANALYTIC = _hooks("analytic")
-_ANALYTIC_PATCH = _hooks("analytic_patch")
+def kind_chain(entries, link, fallback):
+    """An unrolled ``if kind == k`` chain over ``entries`` ((kind integer,
+    hook) pairs): ``link(k, hook, rest)`` returns a ``@wp.func`` that calls
+    ``hook`` when the kind is ``k`` and ``rest`` otherwise; ``fallback``
+    ends the chain.
+
+    Each link's ``wp.static`` names only its closure's ``k``, ``hook`` and
+    ``rest``, so Warp resolves them where the link is declared. A loop over
+    a table (``wp.static(table[i])``) would leave them to be resolved by
+    building the whole module, which Warp does to hash it before every
+    cached load (0.45 s of a one-sensor run's start-up)."""
+    f = fallback
+    for k, hook in reversed(entries):
+        f = link(k, hook, f)
+    return f
+
+
+def _sample_link(k, hook, rest):
+    @wp.func
+    def sample_kind(scene: SceneRec, l: LightRec, p: wp.vec3, n: wp.vec3, u: wp.vec3) -> LightSample:
+        if l.kind == wp.static(k):
+            return wp.static(hook)(scene, l, p, n, u)
+        return wp.static(rest)(scene, l, p, n, u)
+
+    return sample_kind
+
+
+@wp.func
+def _no_sample(scene: SceneRec, l: LightRec, p: wp.vec3, n: wp.vec3, u: wp.vec3) -> LightSample:
+    return empty_sample()
+
+
+def _pdf_link(k, hook, rest):
+    @wp.func
+    def pdf_kind(scene: SceneRec, l: LightRec, p: wp.vec3, n: wp.vec3, wi: wp.vec3, t: float, tri: int) -> float:
+        if l.kind == wp.static(k):
+            return wp.static(hook)(scene, l, p, n, wi, t, tri)
+        return wp.static(rest)(scene, l, p, n, wi, t, tri)
+
+    return pdf_kind
+
+
+@wp.func
+def _no_pdf(scene: SceneRec, l: LightRec, p: wp.vec3, n: wp.vec3, wi: wp.vec3, t: float, tri: int) -> float:
+    return 0.0
+
+
+def _hit_link(k, hook, rest):
+    @wp.func
+    def hit_kind(l: LightRec, o: wp.vec3, d: wp.vec3, t_max: float) -> float:
+        if l.kind == wp.static(k):
+            return wp.static(hook)(l, o, d, t_max)
+        return wp.static(rest)(l, o, d, t_max)
+
+    return hit_kind
+
+
+@wp.func
+def _no_hit(l: LightRec, o: wp.vec3, d: wp.vec3, t_max: float) -> float:
+    return -1.0
+
+
+def _escaped_link(k, hook, rest):
+    @wp.func
+    def escaped_kind(l: LightRec, d: wp.vec3) -> wp.vec2:
+        if l.kind == wp.static(k):
+            return wp.static(hook)(l, d)
+        return wp.static(rest)(l, d)
+
+    return escaped_kind
+
+
+@wp.func
+def _no_escape(l: LightRec, d: wp.vec3) -> wp.vec2:
+    return wp.vec2(0.0, 0.0)
+
+
+def _near_link(k, hook, rest):
+    @wp.func
+    def near_kind(l: LightRec, d: wp.vec3, reach: float) -> bool:
+        if l.kind == wp.static(k):
+            return wp.static(hook)(l, d, reach)
+        return wp.static(rest)(l, d, reach)
+
+    return near_kind
+
+
+@wp.func
+def _not_near(l: LightRec, d: wp.vec3, reach: float) -> bool:
+    return False
+
+
+def _analytic_link(k, hook, rest):
+    @wp.func
+    def analytic_kind(scene: SceneRec, l: LightRec, p: wp.vec3, n: wp.vec3) -> wp.vec2:
+        if l.kind == wp.static(k):
+            return wp.static(hook)(scene, l, p, n)
+        return wp.static(rest)(scene, l, p, n)
+
+    return analytic_kind
+
+
+@wp.func
+def _no_analytic(scene: SceneRec, l: LightRec, p: wp.vec3, n: wp.vec3) -> wp.vec2:
+    return wp.vec2(0.0, 0.0)
+
+
+def _analytic_patch_link(k, hook, rest):
+    @wp.func
+    def analytic_patch_kind(
+        l: LightRec, c: wp.vec3, n: wp.vec3, right: wp.vec3, up: wp.vec3, w: float, h: float
+    ) -> wp.vec2:
+        if l.kind == wp.static(k):
+            return wp.static(hook)(l, c, n, right, up, w, h)
+        return wp.static(rest)(l, c, n, right, up, w, h)
+
+    return analytic_patch_kind
+
+
+@wp.func
+def _no_analytic_patch(l: LightRec, c: wp.vec3, n: wp.vec3, right: wp.vec3, up: wp.vec3, w: float, h: float) -> wp.vec2:
+    return wp.vec2(0.0, 0.0)
+
+
+_sample_chain = kind_chain(_hooks("sample"), _sample_link, _no_sample)
+_pdf_chain = kind_chain(_hooks("pdf"), _pdf_link, _no_pdf)
+_hit_chain = kind_chain(_hooks("hit"), _hit_link, _no_hit)
+_escaped_chain = kind_chain(_hooks("escaped"), _escaped_link, _no_escape)
+_near_chain = kind_chain(_hooks("near"), _near_link, _not_near)
+_analytic_chain = kind_chain(_hooks("analytic"), _analytic_link, _no_analytic)
+_analytic_patch_chain = kind_chain(_hooks("analytic_patch"), _analytic_patch_link, _no_analytic_patch)
 
 
 @wp.func
 def sample_light(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3, u: wp.vec3) -> LightSample:
     """Sample light ``li`` for a receiver at ``p`` facing ``n``."""
-    l = scene.lights[li]
-    for i in range(wp.static(len(_SAMPLE))):
-        if l.kind == wp.static(_SAMPLE[i][0]):
-            return wp.static(_SAMPLE[i][1])(scene, l, p, n, u)
-    return empty_sample()
+    return _sample_chain(scene, scene.lights[li], p, n, u)
 
 
 @wp.func
@@ -103,11 +223,7 @@ def pdf_light(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3, wi: wp.vec3, t: 
     """Solid-angle pdf with which :func:`sample_light` would pick direction
     ``wi`` from ``p``, given that ``wi`` hits the light at distance ``t``
     (on triangle ``tri`` for emissive geometry)."""
-    l = scene.lights[li]
-    for i in range(wp.static(len(_PDF))):
-        if l.kind == wp.static(_PDF[i][0]):
-            return wp.static(_PDF[i][1])(scene, l, p, n, wi, t, tri)
-    return 0.0
+    return _pdf_chain(scene, scene.lights[li], p, n, wi, t, tri)
 
 
 @wp.func
@@ -116,50 +232,34 @@ def hit_light(l: LightRec, o: wp.vec3, d: wp.vec3, t_max: float) -> float:
     surface, or −1 if it is missed, lies beyond ``t_max``, or the light has
     no surface. UsdLux lights neither block nor reflect: a ray that hits one
     goes on to whatever lies behind."""
-    for i in range(wp.static(len(_HIT))):
-        if l.kind == wp.static(_HIT[i][0]):
-            return wp.static(_HIT[i][1])(l, o, d, t_max)
-    return -1.0
+    return _hit_chain(l, o, d, t_max)
 
 
 @wp.func
 def escaped_radiance(l: LightRec, d: wp.vec3) -> wp.vec2:
     """Radiance from an infinitely distant light along a ray that left the scene."""
-    for i in range(wp.static(len(_ESCAPED))):
-        if l.kind == wp.static(_ESCAPED[i][0]):
-            return wp.static(_ESCAPED[i][1])(l, d)
-    return wp.vec2(0.0, 0.0)
+    return _escaped_chain(l, d)
 
 
 @wp.func
 def light_within(l: LightRec, d: wp.vec3, reach: float) -> bool:
     """True if the light's surface lies within ``reach`` of the point at
     offset d from its centre (or the point is inside a sphere light)."""
-    for i in range(wp.static(len(_NEAR))):
-        if l.kind == wp.static(_NEAR[i][0]):
-            return wp.static(_NEAR[i][1])(l, d, reach)
-    return False
+    return _near_chain(l, d, reach)
 
 
 @wp.func
 def analytic_light(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3) -> wp.vec2:
     """Unoccluded irradiance on (p, n) from light ``li`` in closed form (the
     host has checked that the closed form applies; see plan.analytic_refusal)."""
-    l = scene.lights[li]
-    for i in range(wp.static(len(_ANALYTIC))):
-        if l.kind == wp.static(_ANALYTIC[i][0]):
-            return wp.static(_ANALYTIC[i][1])(scene, l, p, n)
-    return wp.vec2(0.0, 0.0)
+    return _analytic_chain(scene, scene.lights[li], p, n)
 
 
 @wp.func
 def analytic_patch_light(l: LightRec, c: wp.vec3, n: wp.vec3, right: wp.vec3, up: wp.vec3, w: float, h: float) -> wp.vec2:
     """Mean unoccluded irradiance on the w × h patch (centre c, normal n,
     axes right and up) in closed form, for kinds that have one (point)."""
-    for i in range(wp.static(len(_ANALYTIC_PATCH))):
-        if l.kind == wp.static(_ANALYTIC_PATCH[i][0]):
-            return wp.static(_ANALYTIC_PATCH[i][1])(l, c, n, right, up, w, h)
-    return wp.vec2(0.0, 0.0)
+    return _analytic_patch_chain(l, c, n, right, up, w, h)
 
 
 # ---------------------------------------------------------------- host upload
