@@ -76,6 +76,11 @@ def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = Non
         unfinished=np.ones(n, bool),
     )  # fmt: skip
     engine.set_light_mask(plan.light_mask([l.name for l in engine.scene.lights]))
+    hero = getattr(engine, "hero_tables", None)
+    if hero is not None:  # spectral transport: every response per sensor (NaN: not available)
+        out.responses = [r.name for r in hero.responses]
+        out.response_mean = np.full((n, len(hero.responses)), np.nan)
+        out.response_stderr = np.full((n, len(hero.responses)), np.nan)
     for method, ids in groups.items():
         if stop is not None and stop.requested:
             break
@@ -91,8 +96,27 @@ def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = Non
             out.target_met[ids] = r.target_met[ids]
         out.wall_s += r.wall_s
         out.warnings += [w for w in r.warnings if w not in out.warnings]
+        if hero is not None:
+            _merge_responses(out, r, ids, hero)
     out.interrupted = stop is not None and stop.requested
     return out
+
+
+def _merge_responses(out: EngineResult, r: EngineResult, ids, hero) -> None:
+    """One method group's responses into the run's: traced groups estimated them per sample; closed-form
+    ones (analytic, exact) take them from the emitters' one spectrum, else they stay NaN (warned)."""
+    from simulator.spectra.traced import closed_form_responses
+
+    if r.response_mean is not None:
+        out.response_mean[ids], out.response_stderr[ids] = r.response_mean[ids], r.response_stderr[ids]
+        return
+    m = closed_form_responses(hero, r.mean[ids])
+    if m is None:
+        w = (f"{r.method}: response columns left empty for its {len(ids)} sensor(s): closed-form readings of "
+             "emitters of several spectra need a tally per light")
+        out.warnings += [] if w in out.warnings else [w]
+        return
+    out.response_mean[ids], out.response_stderr[ids] = m, 0.0 * m
 
 
 def _sha256(path: Path) -> str:
@@ -135,11 +159,19 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     """
     from simulator.engine.driver import Engine  # imports warp
 
+    from simulator.spectra.transport import choose_transport
+
     t0 = time.perf_counter()
     scene = load_scene(cfg)
     spectrum = None  # the emitters' spectrum, for response columns (grey scenes: exact post hoc)
-    if cfg.spectra is not None:
-        spectrum = _run_spectrum(cfg, scene)
+    hero = None  # spectral transport's tables (a colour can change a reading: hero wavelengths)
+    if choose_transport(scene)[0] == "grey":
+        if cfg.spectra is not None:
+            spectrum = _run_spectrum(cfg, scene)
+    else:
+        from simulator.spectra.traced import run_hero_tables
+
+        hero = run_hero_tables(cfg, scene)
     sensors = collect_sensors(cfg, scene)
     # probes are read by their own kernel (simulator.engine.probes)
     probes = [s for s in sensors if s.kind == SensorKind.PROBE]
@@ -156,6 +188,10 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
         log(f"warning: {w}")
     t_load = time.perf_counter()
     engine = Engine(scene, plain, device=sim.device, threads=sim.threads)
+    if hero is not None:
+        engine.set_hero_tables(hero)
+        for note in hero.notes:
+            log(f"warning: {note}")
     t_setup = time.perf_counter()
     with sigint_deferred() as stop:  # Ctrl-C from here on: stop after the batch, write what was measured
         return _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log,
@@ -168,19 +204,33 @@ def _run_spectrum(cfg: RunConfig, scene: Scene):
     Raises
     ------
     UserError
-        Before any tracing, one line naming the config: the scene needs a
-        transport other than grey (named, with why; not built yet), or the
-        lights' spectrum must be named in ``[spectra] lights``.
+        Before any tracing, one line naming the config: the lights' spectrum
+        must be named in ``[spectra] lights``.
     """
     from simulator.spectra import posthoc
-    from simulator.spectra.transport import choose_transport
 
     try:
         return posthoc.run_spectrum(cfg.spectra, scene, cfg.light_units, cfg.radiometric_spectrum)
     except UserError as e:
-        mode = choose_transport(scene)[0]
-        need = "" if mode == "grey" else f" (this scene needs {mode} transport, which is not built yet)"
-        raise UserError(f"{cfg.path}: output.responses: {e}{need}") from None
+        raise UserError(f"{cfg.path}: output.responses: {e}") from None
+
+
+def _traced_columns(cfg, plan, engine, plain, by_name, res, probes) -> tuple[dict, list[dict]]:
+    """Response columns of a spectrally traced run's plain sensors, its record and its map channels."""
+    from simulator.spectra.posthoc import response_channels
+    from simulator.spectra.traced import add_traced_columns, traced_record
+
+    hero = engine.hero_tables
+    columns = add_traced_columns([by_name[s.name] for s in plain], hero, res.response_mean, res.response_stderr)
+    record = traced_record(hero, columns, plan.transport, plan.channel_reason)
+    if probes:
+        note = "probes are traced with one channel: their maps and columns reduce colours to luminance grey"
+        record["notes"].append(note)
+        res.warnings.append(note)
+    if cfg.spectra is not None:
+        record.update(cfg.spectra.raw)
+    wanted = [r for r in hero.responses if r.name not in ("radiometric", "photopic")]
+    return record, response_channels(wanted)
 
 
 def _partial_rows(rows: list[Reading], unfinished: dict[str, bool], adaptive: bool) -> list[Reading]:
@@ -226,6 +276,8 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         from simulator.spectra import posthoc
 
         spectra_record, response_maps = posthoc.finish_run(list(by_name.values()), scene, cfg.light_units, spectrum, cfg.spectra)
+    elif res.responses is not None:  # traced spectrally: response columns from the same samples
+        spectra_record, response_maps = _traced_columns(cfg, plan, engine, plain, by_name, res, probes)
     extra, probe_maps, n_finished = {}, {}, len(sensors)
     if interrupted:  # probes not reached: an empty row each
         by_name.update({s.name: Reading(s, {}, 0, 0.0, probes_method, None) for s in probes if s.name not in by_name})

@@ -3,7 +3,7 @@
 stages/point.usda is grey with one light (a 100 cd point at 3 m), so every
 response is exact post hoc from the one traced channel
 (simulator.spectra.posthoc); stages/quickstart.usda has a coloured rug, so
-responses there need spectral transport and the run is refused before tracing.
+it is traced with hero wavelengths and every response estimated per sample.
 """
 
 from __future__ import annotations
@@ -117,27 +117,34 @@ def test_a_run_without_responses_writes_the_standard_columns(tmp_path):
     assert "spectra" not in out.record
 
 
-def test_a_coloured_stage_with_responses_is_refused(tmp_path, capsys):
-    """quickstart.usda's rug is coloured: responses would need spectral
-    transport, not built yet. One line naming the config and why, exit 2, no
-    CSV; without responses the same stage's plan names the transport needed."""
-    cfg = _config(tmp_path, stage="quickstart.usda", output='responses = ["par"]')
-    assert main(["run", str(cfg), "-q"]) == 2
-    err = capsys.readouterr().err.strip()
-    assert "\n" not in err
-    assert str(cfg) in err and "output.responses" in err
-    assert "coloured" in err and "/World/Furniture/Rug" in err and "spectral transport" in err and "not built yet" in err
-    assert not (tmp_path / "out").exists()
+def test_a_coloured_stage_with_responses_is_traced_spectrally(tmp_path):
+    """quickstart.usda's rug is coloured: the run traces hero wavelengths and
+    its PPFD columns come from the same samples as its lux (one estimate per
+    sample, so each has its own stderr); the record names the transport and
+    why."""
+    cfg = load_config(_config(tmp_path, stage="quickstart.usda", output='responses = ["par"]'))
+    out = run(cfg, log=lambda *a: None)
+    rows = _table(out.csv_path)
+    assert [r["sensor"] for r in rows[:2]] == ["below", "offset"]  # then the stage's own sensors
+    for r in rows[:2]:
+        lux, ppfd = float(r["illuminance_lx"]), float(r["ppfd_umol_m2_s"])
+        assert lux > 0 and ppfd > 0 and float(r["ppfd_stderr_umol_m2_s"]) > 0
+        # D65 light off a mostly grey room: PPFD per lux near D65's 0.01802 µmol s⁻¹ lm⁻¹ (within 10 %)
+        assert 0.9 * 0.01802 < ppfd / lux < 1.1 * 0.01802
+    spectra = out.record["spectra"]
+    assert spectra["path"] == "hero wavelengths (spectral transport)" and "/World/Furniture/Rug" in spectra["reason"]
+    assert spectra["responses"] == ["radiometric", "photopic", "par"]
+    assert out.record["plan"]["transport"] == "spectral" and out.record["plan"]["channels"] == 4
 
 
 def test_the_plan_names_the_transport(tmp_path, capsys):
-    """``probesim plan``: grey for the point stage, spectral (4 hero
-    wavelengths needed, one channel traced) for the coloured quickstart."""
+    """``probesim plan``: grey (one channel) for the point stage, spectral (4
+    hero wavelengths traced, because of the rug's colour) for the coloured quickstart."""
     assert main(["plan", str(_config(tmp_path))]) == 0
     assert "transport grey, channels: 1" in capsys.readouterr().out
     assert main(["plan", str(_config(tmp_path, stage="quickstart.usda"))]) == 0
     line = capsys.readouterr().out.strip().splitlines()[-1]
-    assert "transport spectral, channels: 1" in line and "not built yet" in line
+    assert "transport spectral, channels: 4" in line and "hero wavelengths" in line and "Rug" in line
 
 
 @pytest.mark.parametrize(

@@ -83,6 +83,11 @@ class EngineResult:
         target (None for a closed-form run, which cannot be stopped part way).
     interrupted : bool
         Whether a stop was requested during the run.
+    responses, response_mean, response_stderr
+        Spectral transport (:meth:`Engine.set_hero_tables`) only: response
+        names and their per-sample estimates' means and standard errors,
+        shape (S, R); ``mean``/``stderr`` are then the radiometric and
+        photopic responses of the same samples.
     """
 
     method: str
@@ -98,6 +103,11 @@ class EngineResult:
     methods: list[str] | None = None  #: per sensor, when a plan mixed methods (see run.run_plan)
     unfinished: np.ndarray | None = None
     interrupted: bool = False
+    #: spectral transport: the responses estimated per sample (names; radiometric and photopic first),
+    #: their means and stderrs, shape (S, R); None for grey transport
+    responses: list[str] | None = None
+    response_mean: np.ndarray | None = None
+    response_stderr: np.ndarray | None = None
 
 
 class Engine:
@@ -125,6 +135,7 @@ class Engine:
         self.rays_traced = 0
         self._light_mask: np.ndarray | None = None
         self._device_scene: DeviceScene | None = None
+        self._hero = None  # simulator.spectra.hero.HeroTables when tracing spectrally
 
     def _upload(self) -> DeviceScene:
         """Import Warp, load the kernels and upload the scene, on first need: a
@@ -140,6 +151,8 @@ class Engine:
             self._device_scene = DeviceScene(self.scene, self.sensors, self.device)
             if self._light_mask is not None:
                 self._device_scene.set_light_mask(self._light_mask)
+            if self._hero is not None:
+                self._device_scene.set_hero_tables(self._hero)
         return self._device_scene
 
     @property
@@ -166,6 +179,23 @@ class Engine:
         """Index of the light record standing for all emissive triangles, −1 if none."""
         return self._dev.emissive_light
 
+    def set_hero_tables(self, tables) -> None:
+        """Trace spectrally with these tables (:func:`simulator.spectra.hero.hero_tables`): Monte Carlo
+        runs then estimate every response per sample (``EngineResult.responses``); None: grey transport."""
+        self._hero = tables
+        if self._device_scene is not None:
+            self._device_scene.set_hero_tables(tables)
+
+    @property
+    def hero_tables(self):
+        """The tables of spectral transport, None for grey transport (see :meth:`set_hero_tables`)."""
+        return self._hero
+
+    @property
+    def spectral(self) -> bool:
+        """Whether Monte Carlo runs trace hero wavelengths."""
+        return self._hero is not None
+
     def set_light_mask(self, mask: np.ndarray) -> None:
         """Lights to skip per sensor at its first vertex: ``mask`` (S, L) over
         the scene's lights, 0 = wholly behind the sensor (see plan.lights_behind)."""
@@ -185,6 +215,9 @@ class Engine:
         p.count_rays = 0
         p.thread = 0
         p.mask_row = -1
+        p.spectral = 1 if self._hero is not None else 0
+        p.hero = warp().vec4i(0, 0, 0, 0)
+        p.tint = warp().vec4(1.0, 1.0, 1.0, 1.0)
         return p
 
     # ------------------------------------------------------------ sensors
@@ -192,7 +225,8 @@ class Engine:
     def _launch(self, params, sensor_ids: np.ndarray, first: np.ndarray, count: np.ndarray):
         """Draw count[i] samples of sensor_ids[i], starting at sample first[i].
 
-        Returns (sensors, counts, means, m2s, non_finite) for the batch."""
+        Returns (sensors, counts, means, m2s, non_finite, response_means,
+        response_m2s) for the batch; the last two are None for grey transport."""
         wp = warp()
         nblk = (count + BLOCK - 1) // BLOCK
         t_sensor = np.repeat(sensor_ids, nblk).astype(np.int32)
@@ -212,13 +246,18 @@ class Engine:
             s1 = wp.empty(n, dtype=wp.vec2d)
             s2 = wp.empty(n, dtype=wp.vec2d)
             bad = wp.empty(n, dtype=wp.int32)
+            n_resp = self._dev.n_responses if params.spectral else 0
+            r_shape = (n, n_resp) if n_resp else (1, 1)
+            r_shift, r_s1, r_s2 = (wp.zeros(r_shape, dtype=wp.float64) for _ in range(3))
+            if n_resp:
+                rec.response_lanes = wp.zeros(n, dtype=wp.vec4)
 
             def run(offset: int, dim: int):
                 wp.launch(
                     self._K.estimate_kernel,
                     dim=dim,
                     inputs=[rec, self._dev.sensors, params, a_sensor, a_first, a_count, offset],
-                    outputs=[shift, s1, s2, bad],
+                    outputs=[shift, s1, s2, bad, r_shift, r_s1, r_s2],
                 )
 
             fan_out(self.threads, run, n)
@@ -227,7 +266,11 @@ class Engine:
             if params.count_rays:
                 self.rays_traced += int(rec.ray_counts.numpy().sum())
             nonfinite = np.add.reduceat(bad.numpy(), np.flatnonzero(np.r_[True, t_sensor[1:] != t_sensor[:-1]]))
-        return (*out, nonfinite)
+            r_mean = r_m2 = None
+            if n_resp:
+                _, _, r_mean, r_m2 = RunningStats.reduce_blocks(t_sensor, t_count, r_shift.numpy(), r_s1.numpy(),
+                                                                r_s2.numpy())
+        return (*out, nonfinite, r_mean, r_m2)
 
     def _run_analytic(self, sensor_ids: np.ndarray) -> EngineResult:
         """Closed-form readings (the caller has checked they apply): exact up
@@ -333,6 +376,8 @@ class Engine:
         params.count_rays = 1 if count_rays else 0
         self.rays_traced = 0  # shadow and path rays, counted when count_rays
         stats = RunningStats(n_s)
+        n_resp = self._dev.n_responses if params.spectral else 0
+        rstats = RunningStats(n_s, n_resp) if n_resp else None
         seconds = np.zeros(n_s)
         nonfinite = np.zeros(n_s, np.int64)
         adaptive = rel_error is not None
@@ -347,9 +392,11 @@ class Engine:
 
         def step(ids, first, count):
             tb = time.perf_counter()
-            sens, cnt, mean, m2, bad = self._launch(params, ids, first, count)
+            sens, cnt, mean, m2, bad, r_mean, r_m2 = self._launch(params, ids, first, count)
             dt = time.perf_counter() - tb
             stats.merge(sens, cnt, mean, m2)
+            if rstats is not None:
+                rstats.merge(sens, cnt, r_mean, r_m2)
             seconds[sens] += dt * cnt / cnt.sum()
             nonfinite[sens] += bad
 
@@ -388,6 +435,9 @@ class Engine:
             warnings=warnings,
             unfinished=active.copy(),
             interrupted=stop is not None and stop.requested,
+            responses=None if rstats is None else [r.name for r in self._hero.responses],
+            response_mean=None if rstats is None else rstats.mean.copy(),
+            response_stderr=None if rstats is None else rstats.stderr(),
         )
 
     # ------------------------------------------------------------ probes
@@ -506,6 +556,7 @@ class Engine:
         wp = warp()
         wp.load_module(self._KP, device=self.device)
         params = self.trace_params(method, seed, max_depth, component)
+        params.spectral = 0  # probes trace one channel (their kernel has no response tallies)
         stream_ids = list(range(len(probes))) if stream_ids is None else list(stream_ids)
         frame = P.probe_frame(self.scene.up_axis)
         rule = StoppingRule(rel_error, abs_error, confidence) if rel_error is not None else None
