@@ -133,7 +133,7 @@ def test_a_coloured_stage_with_responses_is_traced_spectrally(tmp_path):
         assert 0.9 * 0.01802 < ppfd / lux < 1.1 * 0.01802
     spectra = out.record["spectra"]
     assert spectra["path"] == "hero wavelengths (spectral transport)" and "/World/Furniture/Rug" in spectra["reason"]
-    assert spectra["responses"] == ["radiometric", "photopic", "par"]
+    assert spectra["estimated"] == ["radiometric", "photopic", "par"] and spectra["responses"] == ["par"]
     assert out.record["plan"]["transport"] == "spectral" and out.record["plan"]["channels"] == 4
 
 

@@ -91,5 +91,5 @@ def add_traced_columns(rows, tables, mean: np.ndarray, stderr: np.ndarray) -> li
 def traced_record(tables, columns: list[str], mode: str, reason: str) -> dict:
     """What the run record says about spectral transport."""
     return {"path": f"hero wavelengths ({mode} transport)", "reason": reason,
-            "responses": [r.name for r in tables.responses], "columns": list(columns),
+            "estimated": [r.name for r in tables.responses], "columns": list(columns),
             "reflectance_rows": int(tables.reflectance.shape[0]), "notes": list(tables.notes)}
