@@ -184,14 +184,12 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     if probes:  # no closed form for a probe: its method is chosen for the run
         probes_method, why = probe_method(scene, sim.method, sim.component)
         reason += f"; probes: {why}"
-    for w in scene.warnings:
-        log(f"warning: {w}")
     t_load = time.perf_counter()
     engine = Engine(scene, plain, device=sim.device, threads=sim.threads)
     if hero is not None:
         engine.set_hero_tables(hero)
-        for note in hero.notes:
-            log(f"warning: {note}")
+    for w in _scene_warnings(scene, engine) + ([] if hero is None else hero.notes):
+        log(f"warning: {w}")
     t_setup = time.perf_counter()
     with sigint_deferred() as stop:  # Ctrl-C from here on: stop after the batch, write what was measured
         return _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log,
@@ -231,6 +229,15 @@ def _traced_columns(cfg, plan, engine, plain, by_name, res, probes) -> tuple[dic
         record.update(cfg.spectra.raw)
     wanted = [r for r in hero.responses if r.name not in ("radiometric", "photopic")]
     return record, response_channels(wanted)
+
+
+def _scene_warnings(scene: Scene, engine) -> list[str]:
+    """The stage's warnings as the run record keeps them (a spectral run's say its colours were traced)."""
+    if getattr(engine, "hero_tables", None) is None:
+        return list(scene.warnings)
+    from simulator.spectra.traced import traced_warning
+
+    return [traced_warning(w) for w in scene.warnings]
 
 
 def _partial_rows(rows: list[Reading], unfinished: dict[str, bool], adaptive: bool) -> list[Reading]:
@@ -316,7 +323,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         "timings_s": {"load": t_read - t0, "plan": t_load - t_read, "setup": t_setup - t_load, "trace": res.wall_s + sum(p.seconds for p in probe_res), "total": t_end - t0},
         "sensors": len(sensors),
         "triangles": scene.geometry.n_triangles,
-        "warnings": list(scene.warnings) + list(res.warnings),
+        "warnings": _scene_warnings(scene, engine) + list(res.warnings),
         "non_finite_samples": int(res.non_finite.sum()) + sum(p.non_finite for p in probe_res),
         "maps": sorted(p.name for p in extra),
         "probe_maps": probe_maps,

@@ -17,7 +17,19 @@ import numpy as np
 
 from simulator.spectra.posthoc import BASE_COLUMNS
 
-__all__ = ["run_hero_tables", "closed_form_responses", "add_traced_columns", "traced_record"]
+__all__ = ["run_hero_tables", "closed_form_responses", "add_traced_columns", "traced_record", "traced_warning"]
+
+#: the stage reader's summary warning when it reduced a colour to grey (simulator.scene.usd.materials)
+_COLOURED = "coloured albedo/emission/light colour reduced to luminance grey: "
+
+
+def traced_warning(warning: str) -> str:
+    """A stage warning as it reads in a spectrally traced run: the reader's grey reduction of colours
+    no longer applies to albedos and light colours, which the kernels trace spectrally."""
+    if not warning.startswith(_COLOURED):
+        return warning
+    return ("coloured albedo or light color traced with hero wavelengths (an emissiveColor's colour and "
+            "texture colours still read as luminance grey): " + warning[len(_COLOURED):])
 
 
 def run_hero_tables(cfg, scene):
