@@ -297,7 +297,12 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         rows = [by_name[s.name] for s in sensors]
         meta = {"seed": sim.seed, "method": "+".join(plan.groups()), "light_units": cfg.light_units, "stage": cfg.stage.name}
         extra = grid_outputs(cfg.output.csv, cfg.grids, rows, meta, responses=response_maps)
-        probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, {**meta, "method": probes_method, "taken": [g.name for g in cfg.grids]})
+        probe_meta = {**meta, "method": probes_method, "taken": [g.name for g in cfg.grids]}
+        if spectrum is not None:  # grey scene, one declared spectrum: the maps carry its colour
+            from simulator.spectra.posthoc import rgb_per_luminance
+
+            probe_meta["rgb"] = (spectrum.name, rgb_per_luminance(spectrum))
+        probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, probe_meta)
         extra.update(probe_files)
     t_end = time.perf_counter()
     record = {

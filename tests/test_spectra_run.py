@@ -197,3 +197,34 @@ def test_greenhouse_ppfd_columns_and_map(tmp_path):
     assert "ppfd_umol_m2_s" in exr.channels()
     assert float(exr.header()["probesim:par_uniformity"]) == pytest.approx(ppfd.min() / ppfd.mean(), rel=1e-6)
     assert (tmp_path / "gh.bench.par.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_a_probe_of_a_grey_scene_writes_its_emitters_colour(tmp_path):
+    """With ``[spectra] lights = "A"`` on the grey greenhouse (radiometric
+    units) every radiance has illuminant A's chromaticity, so the probe's
+    lat-long EXR carries R, G, B = the stated radiance (W m⁻² sr⁻¹) × the
+    linear sRGB of A per unit luminance (rgb_per_luminance: warm, R > G > B),
+    whose BT.709 Y is the stated radiance again (to 2e-4: the Y weights
+    0.2126, 0.7152, 0.0722 are the sRGB matrix's row rounded to 4 decimals),
+    and names the colour in its header."""
+    import OpenEXR
+
+    from simulator.spectra.posthoc import rgb_per_luminance
+    from simulator.units import luminance_grey
+
+    cfg = _config(tmp_path, stage="greenhouse.usda", units="radiometric", spectra='[spectra]\nlights = "A"')
+    cfg.write_text(cfg.read_text().replace("[output]", '[[sensor]]\nname = "ball"\nkind = "probe"\n'
+                                                      'position = [0, 0, 0.5]\nresolution = [8, 4]\n\n[output]'))
+    out = run(load_config(cfg), log=lambda *a: None)
+    exr = OpenEXR.File(str(tmp_path / "out" / "run.ball.exr"), separate_channels=True)
+    ch = {k: v.pixels.astype(float) for k, v in exr.channels().items()}
+    rgb = rgb_per_luminance(sources.emitter_spectrum("A"))
+    assert rgb[0] > rgb[1] > rgb[2]
+    lit = ch["L_W_m2_sr"] > 0
+    assert lit.any()
+    for k, c in enumerate("RGB"):
+        assert np.allclose(ch[c][lit] / ch["L_W_m2_sr"][lit], rgb[k], rtol=1e-6)
+    y = luminance_grey(np.stack([ch["R"], ch["G"], ch["B"]], axis=-1))
+    assert np.allclose(y, ch["L_W_m2_sr"], rtol=2e-4, atol=0)
+    assert "illuminant" not in exr.header()["probesim:rgb"] and " A " in exr.header()["probesim:rgb"]
+    assert out.record["spectra"]["spectrum"] == "A"
