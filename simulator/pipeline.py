@@ -222,9 +222,8 @@ def _traced_columns(cfg, plan, engine, plain, by_name, res, probes) -> tuple[dic
     columns = add_traced_columns([by_name[s.name] for s in plain], hero, res.response_mean, res.response_stderr)
     record = traced_record(hero, columns, plan.transport, plan.channel_reason)
     if probes:
-        note = "probes are traced with one channel: their maps and columns reduce colours to luminance grey"
-        record["notes"].append(note)
-        res.warnings.append(note)
+        record["notes"].append("probes are traced spectrally: their maps' R, G, B are each pixel's traced "
+                               "colour; their response columns are not estimated")
     if cfg.spectra is not None:
         record.update(cfg.spectra.raw)
     wanted = [r for r in hero.responses if r.name not in ("radiometric", "photopic")]

@@ -48,7 +48,7 @@ def _stage(tmp_path: Path, rgb) -> Path:
     return p
 
 
-def _config(tmp_path: Path, rgb, samples: int, seed: int = 5) -> Path:
+def _config(tmp_path: Path, rgb, samples: int, seed: int = 5, extra: str = "") -> Path:
     p = tmp_path / "furnace.toml"
     p.write_text(f'''stage = "{_stage(tmp_path, rgb).as_posix()}"
 light_units = "radiometric"
@@ -80,7 +80,7 @@ position = [0, 0, 0]
 normal = [0, 0, 1]
 size = [4, 3]
 up = [0, 1, 0]
-
+{extra}
 [output]
 csv = "out/furnace.csv"
 responses = ["par", "melanopic_edi"]
@@ -232,3 +232,36 @@ def _make_hero_kernel():
 
 
 _hero_nodes_kernel = _make_hero_kernel()
+
+
+def test_a_probe_in_the_red_furnace_maps_its_colour(tmp_path):
+    """A probe traced spectrally: in the furnace every direction sees the
+    radiance L(λ) = L_e(λ)/(1 − ρ(λ)), so every pixel of its lat-long EXR
+    reads the linear sRGB ``M K_m ∫ L (x̄, ȳ, z̄) dλ`` (cd/m², CIE 1931 2°,
+    IEC 61966-2-1 M; here × L_W/L_v per pixel for the stage's radiometric
+    units), and its scalar illuminance 4π K_m ∫ V L dλ: the pixels' mean
+    colour and the scalar illuminance each within 4 standard errors (8 × 4
+    pixels, 200 passes, seed 5; the pixels' spread gives the mean's stderr:
+    each pixel has the same expectation). The red walls make it red: R > G, B."""
+    import OpenEXR
+
+    from simulator.spectra.hero import colour_weights
+    from simulator.spectra.grid import trapezoid_weights
+
+    probe = '[[sensor]]\nname = "ball"\nkind = "probe"\nposition = [0, 0, 1.25]\nresolution = [8, 4]\n'
+    cfg = load_config(_config(tmp_path, RED, samples=32 * 200, extra=probe))
+    out = run(cfg, log=lambda *a: None)
+    row = next(r for r in out.rows if r.sensor.name == "ball")
+    truth_lx = 4 * math.pi * _truth("photopic", RED)
+    v, se = row.values["scalar_illuminance_lx"], row.values["scalar_illuminance_stderr_lx"]
+    assert abs(v - truth_lx) <= 4 * se, (v, truth_lx, se)
+    d65 = sources.cie_illuminant("D65")
+    radiance = d65.values / d65.radiometric / (1.0 - reflectance.uplift(RED))  # W m⁻² sr⁻¹ nm⁻¹
+    rgb_truth = colour_weights() / 400.0 @ (trapezoid_weights() * radiance)  # cd/m²
+    exr = OpenEXR.File(str(tmp_path / "out" / "furnace.ball.exr"), separate_channels=True)
+    ch = {k: c.pixels.astype(float) for k, c in exr.channels().items()}
+    assert "traced spectrum" in exr.header()["probesim:rgb"]
+    for k, c in enumerate("RGB"):
+        pix = ch[c] * ch["Lv_cd_m2"] / ch["L_W_m2_sr"]  # back to cd/m²: the map's R, G, B are × L_W/L_v
+        assert abs(pix.mean() - rgb_truth[k]) <= 4 * pix.std(ddof=1) / math.sqrt(pix.size), (c, pix.mean(), rgb_truth[k])
+    assert rgb_truth[0] > rgb_truth[1] and rgb_truth[0] > rgb_truth[2]

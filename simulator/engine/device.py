@@ -181,10 +181,10 @@ class DeviceScene:
         (1 × 1) when None, for grey transport, which never reads them."""
         if tables is None:
             one = np.zeros((1, 1), np.float32)
-            refl, face, emis, weights = one, np.zeros(1, np.int32), one, one
+            refl, face, emis, weights, colour = one, np.zeros(1, np.int32), one, one, one
         else:
-            refl, emis, weights = (np.ascontiguousarray(a, np.float32) for a in
-                                   (tables.reflectance, tables.emission, tables.weights))
+            refl, emis, weights, colour = (np.ascontiguousarray(a, np.float32) for a in
+                                           (tables.reflectance, tables.emission, tables.weights, tables.colour))
             face = np.ascontiguousarray(tables.face_reflectance, np.int32)
             if not len(face):
                 face = np.zeros(1, np.int32)
@@ -193,6 +193,7 @@ class DeviceScene:
         rec.spectral_emission = wp.array2d(emis, dtype=float)
         rec.response_weights = wp.array2d(weights, dtype=float)
         rec.response_lanes = wp.zeros(1, dtype=wp.vec4)
+        rec.colour_weights = wp.array2d(colour, dtype=float)
         self.n_responses = 0 if tables is None else int(weights.shape[0])
 
     def set_hero_tables(self, tables) -> None:

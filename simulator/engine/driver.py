@@ -445,13 +445,15 @@ class Engine:
     def _launch_passes(self, rec, params, n_pix: int, first_pass: int, n_passes: int):
         """Draw passes [first_pass, first_pass + n_passes) of every pixel of
         the probe ``rec``. Returns per-pixel (counts, means, m2s) of shape
-        (P,), (P, 2Q), (P, 2Q) and the number of non-finite samples."""
+        (P,), (P, K), (P, K) and the number of non-finite samples; K = 2Q, and
+        3 more (linear sRGB) with spectral transport."""
         wp = warp()
-        width = P.N_QUANTITIES * P.N_CHANNELS
+        width = P.probe_width(bool(params.spectral))
         blocks = (n_passes + PASS_BLOCK - 1) // PASS_BLOCK
         counts_blk = np.minimum(PASS_BLOCK, n_passes - PASS_BLOCK * np.arange(blocks))
         pix_per_launch = max(1, THREADS_PER_LAUNCH // blocks)
         counts = np.full(n_pix, n_passes, np.int64)
+        rec_scene = self._dev.rec
         means = np.empty((n_pix, width))
         m2s = np.empty((n_pix, width))
         bad_total = 0
@@ -463,12 +465,14 @@ class Engine:
                 s1 = wp.empty((n, width), dtype=wp.float64)
                 s2 = wp.empty((n, width), dtype=wp.float64)
                 bad = wp.empty(n, dtype=wp.int32)
+                if params.spectral:
+                    rec_scene.response_lanes = wp.zeros(n, dtype=wp.vec4)
 
                 def run(offset: int, dim: int):
                     wp.launch(
                         self._KP.probe_kernel,
                         dim=dim,
-                        inputs=[self._dev.rec, rec, params, 0, first_pass, n_passes, PASS_BLOCK, blocks, p0, offset],
+                        inputs=[rec_scene, rec, params, 0, first_pass, n_passes, PASS_BLOCK, blocks, p0, offset],
                         outputs=[shift, s1, s2, bad],
                     )
 
@@ -485,7 +489,7 @@ class Engine:
     def _probe_delta(self, rec, params) -> np.ndarray:
         """The delta lights' exact contributions to a probe's integrals, (Q, C)."""
         wp = warp()
-        width = P.N_QUANTITIES * P.N_CHANNELS
+        width = P.probe_width(bool(params.spectral))
         with wp.ScopedDevice(self.device):
             d_shift = wp.zeros((1, width), dtype=wp.float64)
             d_sum = wp.zeros((1, width), dtype=wp.float64)
@@ -493,7 +497,7 @@ class Engine:
             d_bad = wp.zeros(1, dtype=wp.int32)
             wp.launch(self._KP.probe_kernel, dim=1, inputs=[self._dev.rec, rec, params, 1, 0, 0, 1, 1, 0, 0],
                       outputs=[d_shift, d_sum, d_sq, d_bad])  # fmt: skip
-            return d_sum.numpy()[0].reshape(P.N_QUANTITIES, P.N_CHANNELS)
+            return d_sum.numpy()[0][: P.N_QUANTITIES * P.N_CHANNELS].reshape(P.N_QUANTITIES, P.N_CHANNELS)
 
     def run_probes(
         self,
@@ -556,7 +560,6 @@ class Engine:
         wp = warp()
         wp.load_module(self._KP, device=self.device)
         params = self.trace_params(method, seed, max_depth, component)
-        params.spectral = 0  # probes trace one channel (their kernel has no response tallies)
         stream_ids = list(range(len(probes))) if stream_ids is None else list(stream_ids)
         frame = P.probe_frame(self.scene.up_axis)
         rule = StoppingRule(rel_error, abs_error, confidence) if rel_error is not None else None
@@ -576,7 +579,7 @@ class Engine:
             rec = P.probe_record(self._KP.ProbeRec(), s, frame, P.stream_key(seed, stream_ids[k]))
             omega = P.pixel_solid_angles(w, h).reshape(-1)
             delta = self._probe_delta(rec, params)  # delta lights: exact, once
-            stats = RunningStats(n_pix, P.N_QUANTITIES * P.N_CHANNELS)
+            stats = RunningStats(n_pix, P.probe_width(bool(params.spectral)))
             first_batch = max(P.MIN_PASSES, -(-samples // n_pix))
             cap = max(P.MIN_PASSES, -(-max_samples // n_pix)) if rule is not None else first_batch
             bad = [0]

@@ -346,6 +346,17 @@ def probe_record(result, map_file: str) -> dict:
     }
 
 
+def _stated_colour(r, k: int, photometric: bool) -> np.ndarray:
+    """Channel k of a spectrally traced probe's sRGB map in the stage's light units: the traced
+    luminance-based colour (cd/m²), times L_W / L_v per pixel for radiometric units (0 where dark)."""
+    c = np.asarray(r.colour[..., k], float)
+    if photometric:
+        return c
+    lv, le = r.radiance[..., 1], r.radiance[..., 0]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(lv > 0, c * le / lv, 0.0)
+
+
 def probe_outputs(csv_path: Path, results: list, meta: dict[str, str]) -> tuple[dict[Path, Content], dict[str, str]]:
     """EXR maps of every probe and the ``<csv stem>.probes.json`` side file.
 
@@ -382,8 +393,11 @@ def probe_outputs(csv_path: Path, results: list, meta: dict[str, str]) -> tuple[
         grey = r.radiance[..., 1 if photometric else 0]
         rgb = meta.get("rgb")
         colour = np.ones(3) if rgb is None else np.asarray(rgb[1], float)
+        maps = [grey * colour[k] for k in range(3)]
+        if getattr(r, "colour", None) is not None:  # traced spectrally: each pixel's own colour
+            maps = [_stated_colour(r, k, photometric) for k in range(3)]
         channels = {
-            "R": grey * colour[0], "G": grey * colour[1], "B": grey * colour[2],
+            "R": maps[0], "G": maps[1], "B": maps[2],
             "L_W_m2_sr": r.radiance[..., 0], "L_stderr_W_m2_sr": r.radiance_stderr[..., 0],
             "Lv_cd_m2": r.radiance[..., 1], "Lv_stderr_cd_m2": r.radiance_stderr[..., 1],
         }  # fmt: skip
@@ -413,7 +427,11 @@ def probe_outputs(csv_path: Path, results: list, meta: dict[str, str]) -> tuple[
             "probesim:samples": str(r.samples),
             "probesim:delta_lights": delta,
         }
-        if rgb is not None:
+        if getattr(r, "colour", None) is not None:
+            header["probesim:rgb"] = ("R, G, B: linear sRGB of each pixel's traced spectrum (hero wavelengths; "
+                                      "M K_m integral of L times the CIE 1931 colour matching functions, cd/m2)"
+                                      + ("" if photometric else ", scaled by the pixel's W/m2/sr per cd/m2"))
+        elif rgb is not None:
             header["probesim:rgb"] = (f"R, G, B: the stated radiance x the linear sRGB of {rgb[0]} per unit luminance "
                                       f"({_vec(colour)}); the scene is grey, so every radiance has that chromaticity")
         files[path] = _exr_writer(channels, header, latlong=True)

@@ -24,7 +24,11 @@ the sample's response. Tables, one row per item, 401 columns:
   photometric value with ``light_units = "photometric"``, radiometric
   otherwise), as :func:`simulator.spectra.sources.spectral_emission` does;
 - response weights ``W``: radiometric and photopic first (the engine's
-  two channels), then the run's other responses.
+  two channels), then the run's other responses;
+- colour weights: the ``W`` of linear sRGB luminance channels,
+  ``K_m · M (x̄, ȳ, z̄)`` (CIE 1931 2°, ``M`` the IEC 61966-2-1 XYZ → linear
+  sRGB matrix), so that a spectral radiance reads its colour in cd/m²
+  (D65 → R = G = B = its luminance, to 1e-3); probes' RGB maps use them.
 
 References
 ----------
@@ -41,7 +45,7 @@ import numpy as np
 
 from simulator.spectra.grid import WAVELENGTHS_NM, trapezoid_weights
 
-__all__ = ["N_LAMBDA", "HeroTables", "hero_tables", "response_weights", "light_spectrum"]
+__all__ = ["N_LAMBDA", "HeroTables", "hero_tables", "response_weights", "colour_weights", "light_spectrum"]
 
 #: grid nodes a lane can land on (380–780 nm at 1 nm)
 N_LAMBDA = len(WAVELENGTHS_NM)
@@ -65,6 +69,9 @@ class HeroTables:
         Per response: the per-lane weight ``W = 400 q / w`` (see module docstring).
     responses : list of Response
         The R responses, ``radiometric`` and ``photopic`` first.
+    colour : ndarray, shape (3, 401)
+        Per-lane weights of linear sRGB R, G, B in cd/m² per W m⁻² sr⁻¹ nm⁻¹
+        (:func:`colour_weights`).
     notes : list of str
         One line each: what spectral transport approximated (colours clipped,
         emissive triangles of several spectra).
@@ -76,12 +83,27 @@ class HeroTables:
     weights: np.ndarray
     responses: list
     notes: list[str] = field(default_factory=list)
+    colour: np.ndarray = field(default_factory=lambda: colour_weights())
 
 
 def response_weights(resp) -> np.ndarray:
     """``W = 400 · q / w`` of a response, shape (401,): a lane's weight at each grid node."""
     w = trapezoid_weights()
     return (WAVELENGTHS_NM[-1] - WAVELENGTHS_NM[0]) * np.asarray(resp.q, float) / w
+
+
+def colour_weights() -> np.ndarray:
+    """Per-lane weights (3, 401) of linear sRGB: ``400 · K_m · M (x̄, ȳ, z̄)(λ)``, so that the lanes'
+    mean of ``weights · L`` estimates ``M · K_m ∫ L (x̄, ȳ, z̄) dλ`` (trapezoid rule), luminance-based
+    sRGB in cd/m² (the sRGB white D65 of luminance Y reads (Y, Y, Y) to 1e-3)."""
+    import colour
+
+    from simulator.spectra import tables
+    from simulator.spectra.sources import K_M_LM_W
+
+    m = np.asarray(colour.models.RGB_COLOURSPACE_sRGB.matrix_XYZ_to_RGB, float)
+    span = WAVELENGTHS_NM[-1] - WAVELENGTHS_NM[0]
+    return span * K_M_LM_W * (m @ tables.cmfs_1931())
 
 
 def light_spectrum(light, default, declared=None):

@@ -91,6 +91,7 @@ class SceneRec:
     spectral_emission: wp.array2d(dtype=float)  # (light records × 401): density per unit radiometric value
     response_weights: wp.array2d(dtype=float)  # (responses × 401): a lane's weight 400·q/w
     response_lanes: wp.array(dtype=wp.vec4)  # per kernel thread: this sample's spectral density per hero lane
+    colour_weights: wp.array2d(dtype=float)  # (3 × 401): a lane's weight of linear sRGB (cd/m²), for probe maps
 
 
 @wp.struct
