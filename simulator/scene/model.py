@@ -6,10 +6,12 @@ frame, so a config's sensor coordinates mean the same thing whatever units and
 up axis the stage was authored in.
 
 Emission is carried as a pair of numbers per emitter: the radiometric value
-(watts) and its photometric twin (lumens), because materials are grey and the
-two integrals are all a reading needs (no spectrum is traced where nothing is
-coloured). What the pair measures depends on the light kind; see
-:class:`Light`.
+(watts) and its photometric twin (lumens): where materials are grey the two
+integrals are all a reading needs (no spectrum is traced where nothing is
+coloured). Albedos are carried as their luminance grey and, for spectral
+transport, the linear sRGB it came from (``Geometry.albedo_rgb``); lights
+name their spectral shape and colour (``Light.spectrum``, ``Light.color``).
+What the pair measures depends on the light kind; see :class:`Light`.
 """
 
 from __future__ import annotations
