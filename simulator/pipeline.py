@@ -97,26 +97,30 @@ def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = Non
         out.wall_s += r.wall_s
         out.warnings += [w for w in r.warnings if w not in out.warnings]
         if hero is not None:
-            _merge_responses(out, r, ids, hero)
+            _merge_responses(out, r, ids, hero, engine, sim, stop)
     out.interrupted = stop is not None and stop.requested
     return out
 
 
-def _merge_responses(out: EngineResult, r: EngineResult, ids, hero) -> None:
-    """One method group's responses into the run's: traced groups estimated them per sample; closed-form
-    ones (analytic, exact) take them from the emitters' one spectrum, else they stay NaN (warned)."""
+def _merge_responses(out: EngineResult, r: EngineResult, ids, hero, engine, sim, stop) -> None:
+    """One method group's responses into the run's. Traced groups estimated them per sample. Closed-form
+    groups (analytic, exact: light straight from emitters) take them from the emitters' one spectrum;
+    with several spectra they are estimated by direct-light sampling (method ``light``, component
+    ``direct``, the run's samples and seed) while the W and lm columns stay the closed form's."""
     from simulator.spectra.traced import closed_form_responses
 
     if r.response_mean is not None:
         out.response_mean[ids], out.response_stderr[ids] = r.response_mean[ids], r.response_stderr[ids]
         return
     m = closed_form_responses(hero, r.mean[ids])
-    if m is None:
-        w = (f"{r.method}: response columns left empty for its {len(ids)} sensor(s): closed-form readings of "
-             "emitters of several spectra need a tally per light")
-        out.warnings += [] if w in out.warnings else [w]
+    if m is not None:
+        out.response_mean[ids], out.response_stderr[ids] = m, 0.0 * m
         return
-    out.response_mean[ids], out.response_stderr[ids] = m, 0.0 * m
+    est = engine.run("light", samples=sim.samples, seed=sim.seed, component="direct", sensor_ids=ids, stop=stop)
+    out.response_mean[ids], out.response_stderr[ids] = est.response_mean[ids], est.response_stderr[ids]
+    w = (f"{r.method}: the response columns of its {len(ids)} sensor(s) are estimated by direct-light sampling "
+         "(emitters of several spectra: a closed form per light is not kept)")
+    out.warnings += [] if w in out.warnings else [w]
 
 
 def _sha256(path: Path) -> str:

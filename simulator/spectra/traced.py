@@ -8,7 +8,8 @@ the radiometric and photometric columns are that estimate's radiometric and
 photopic responses. Readings the plan answers in closed form (``analytic``,
 ``exact``: light straight from emitters, no reflection) are not traced: their
 responses are ``Σ_l E_l · (q · S_l)``, which needs one emitter spectrum (the
-radiometric reading × the ratio), else they are left empty with a warning.
+radiometric reading × the ratio); with several, the run estimates them by
+direct-light sampling (:func:`simulator.pipeline.run_plan`).
 """
 
 from __future__ import annotations
