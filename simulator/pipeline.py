@@ -76,6 +76,11 @@ def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = Non
         unfinished=np.ones(n, bool),
     )  # fmt: skip
     engine.set_light_mask(plan.light_mask([l.name for l in engine.scene.lights]))
+    hero = getattr(engine, "hero_tables", None)
+    if hero is not None:  # spectral transport: every response per sensor (NaN: not available)
+        out.responses = [r.name for r in hero.responses]
+        out.response_mean = np.full((n, len(hero.responses)), np.nan)
+        out.response_stderr = np.full((n, len(hero.responses)), np.nan)
     for method, ids in groups.items():
         if stop is not None and stop.requested:
             break
@@ -91,8 +96,31 @@ def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = Non
             out.target_met[ids] = r.target_met[ids]
         out.wall_s += r.wall_s
         out.warnings += [w for w in r.warnings if w not in out.warnings]
+        if hero is not None:
+            _merge_responses(out, r, ids, hero, engine, sim, stop)
     out.interrupted = stop is not None and stop.requested
     return out
+
+
+def _merge_responses(out: EngineResult, r: EngineResult, ids, hero, engine, sim, stop) -> None:
+    """One method group's responses into the run's. Traced groups estimated them per sample. Closed-form
+    groups (analytic, exact: light straight from emitters) take them from the emitters' one spectrum;
+    with several spectra they are estimated by direct-light sampling (method ``light``, component
+    ``direct``, the run's samples and seed) while the W and lm columns stay the closed form's."""
+    from simulator.spectra.traced import closed_form_responses
+
+    if r.response_mean is not None:
+        out.response_mean[ids], out.response_stderr[ids] = r.response_mean[ids], r.response_stderr[ids]
+        return
+    m = closed_form_responses(hero, r.mean[ids])
+    if m is not None:
+        out.response_mean[ids], out.response_stderr[ids] = m, 0.0 * m
+        return
+    est = engine.run("light", samples=sim.samples, seed=sim.seed, component="direct", sensor_ids=ids, stop=stop)
+    out.response_mean[ids], out.response_stderr[ids] = est.response_mean[ids], est.response_stderr[ids]
+    w = (f"{r.method}: the response columns of its {len(ids)} sensor(s) are estimated by direct-light sampling "
+         "(emitters of several spectra: a closed form per light is not kept)")
+    out.warnings += [] if w in out.warnings else [w]
 
 
 def _sha256(path: Path) -> str:
@@ -135,11 +163,19 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     """
     from simulator.engine.driver import Engine  # imports warp
 
+    from simulator.spectra.transport import choose_transport
+
     t0 = time.perf_counter()
     scene = load_scene(cfg)
     spectrum = None  # the emitters' spectrum, for response columns (grey scenes: exact post hoc)
-    if cfg.spectra is not None:
-        spectrum = _run_spectrum(cfg, scene)
+    hero = None  # spectral transport's tables (a colour can change a reading: hero wavelengths)
+    if choose_transport(scene)[0] == "grey":
+        if cfg.spectra is not None:
+            spectrum = _run_spectrum(cfg, scene)
+    else:
+        from simulator.spectra.traced import run_hero_tables
+
+        hero = run_hero_tables(cfg, scene)
     sensors = collect_sensors(cfg, scene)
     # probes are read by their own kernel (simulator.engine.probes)
     probes = [s for s in sensors if s.kind == SensorKind.PROBE]
@@ -152,10 +188,12 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     if probes:  # no closed form for a probe: its method is chosen for the run
         probes_method, why = probe_method(scene, sim.method, sim.component)
         reason += f"; probes: {why}"
-    for w in scene.warnings:
-        log(f"warning: {w}")
     t_load = time.perf_counter()
     engine = Engine(scene, plain, device=sim.device, threads=sim.threads)
+    if hero is not None:
+        engine.set_hero_tables(hero)
+    for w in _scene_warnings(scene, engine) + ([] if hero is None else hero.notes):
+        log(f"warning: {w}")
     t_setup = time.perf_counter()
     with sigint_deferred() as stop:  # Ctrl-C from here on: stop after the batch, write what was measured
         return _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log,
@@ -168,19 +206,41 @@ def _run_spectrum(cfg: RunConfig, scene: Scene):
     Raises
     ------
     UserError
-        Before any tracing, one line naming the config: the scene needs a
-        transport other than grey (named, with why; not built yet), or the
-        lights' spectrum must be named in ``[spectra] lights``.
+        Before any tracing, one line naming the config: the lights' spectrum
+        must be named in ``[spectra] lights``.
     """
     from simulator.spectra import posthoc
-    from simulator.spectra.transport import choose_transport
 
     try:
         return posthoc.run_spectrum(cfg.spectra, scene, cfg.light_units, cfg.radiometric_spectrum)
     except UserError as e:
-        mode = choose_transport(scene)[0]
-        need = "" if mode == "grey" else f" (this scene needs {mode} transport, which is not built yet)"
-        raise UserError(f"{cfg.path}: output.responses: {e}{need}") from None
+        raise UserError(f"{cfg.path}: output.responses: {e}") from None
+
+
+def _traced_columns(cfg, plan, engine, plain, by_name, res, probes) -> tuple[dict, list[dict]]:
+    """Response columns of a spectrally traced run's plain sensors, its record and its map channels."""
+    from simulator.spectra.posthoc import response_channels
+    from simulator.spectra.traced import add_traced_columns, traced_record
+
+    hero = engine.hero_tables
+    columns = add_traced_columns([by_name[s.name] for s in plain], hero, res.response_mean, res.response_stderr)
+    record = traced_record(hero, columns, plan.transport, plan.channel_reason)
+    if probes:
+        record["notes"].append("probes are traced spectrally: their maps' R, G, B are each pixel's traced "
+                               "colour; their response columns are not estimated")
+    if cfg.spectra is not None:
+        record.update(cfg.spectra.raw)
+    wanted = [r for r in hero.responses if r.name not in ("radiometric", "photopic")]
+    return record, response_channels(wanted)
+
+
+def _scene_warnings(scene: Scene, engine) -> list[str]:
+    """The stage's warnings as the run record keeps them (a spectral run's say its colours were traced)."""
+    if getattr(engine, "hero_tables", None) is None:
+        return list(scene.warnings)
+    from simulator.spectra.traced import traced_warning
+
+    return [traced_warning(w) for w in scene.warnings]
 
 
 def _partial_rows(rows: list[Reading], unfinished: dict[str, bool], adaptive: bool) -> list[Reading]:
@@ -226,6 +286,8 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         from simulator.spectra import posthoc
 
         spectra_record, response_maps = posthoc.finish_run(list(by_name.values()), scene, cfg.light_units, spectrum, cfg.spectra)
+    elif res.responses is not None:  # traced spectrally: response columns from the same samples
+        spectra_record, response_maps = _traced_columns(cfg, plan, engine, plain, by_name, res, probes)
     extra, probe_maps, n_finished = {}, {}, len(sensors)
     if interrupted:  # probes not reached: an empty row each
         by_name.update({s.name: Reading(s, {}, 0, 0.0, probes_method, None) for s in probes if s.name not in by_name})
@@ -238,7 +300,12 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         rows = [by_name[s.name] for s in sensors]
         meta = {"seed": sim.seed, "method": "+".join(plan.groups()), "light_units": cfg.light_units, "stage": cfg.stage.name}
         extra = grid_outputs(cfg.output.csv, cfg.grids, rows, meta, responses=response_maps)
-        probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, {**meta, "method": probes_method, "taken": [g.name for g in cfg.grids]})
+        probe_meta = {**meta, "method": probes_method, "taken": [g.name for g in cfg.grids]}
+        if spectrum is not None:  # grey scene, one declared spectrum: the maps carry its colour
+            from simulator.spectra.posthoc import rgb_per_luminance
+
+            probe_meta["rgb"] = (spectrum.name, rgb_per_luminance(spectrum))
+        probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, probe_meta)
         extra.update(probe_files)
     t_end = time.perf_counter()
     record = {
@@ -264,7 +331,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         "timings_s": {"load": t_read - t0, "plan": t_load - t_read, "setup": t_setup - t_load, "trace": res.wall_s + sum(p.seconds for p in probe_res), "total": t_end - t0},
         "sensors": len(sensors),
         "triangles": scene.geometry.n_triangles,
-        "warnings": list(scene.warnings) + list(res.warnings),
+        "warnings": _scene_warnings(scene, engine) + list(res.warnings),
         "non_finite_samples": int(res.non_finite.sum()) + sum(p.non_finite for p in probe_res),
         "maps": sorted(p.name for p in extra),
         "probe_maps": probe_maps,

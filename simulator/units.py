@@ -1,9 +1,11 @@
 """Units, spectra and photometry.
 
-Materials are grey, so light transport is the same at every wavelength and a
-reading needs only two integrals of each emitter's spectrum: its radiometric
-total (W) and its photometric total (lm). This module turns a light's stated
-value into that pair.
+Where materials are grey, light transport is the same at every wavelength and
+a reading needs only two integrals of each emitter's spectrum: its
+radiometric total (W) and its photometric total (lm). This module turns a
+light's stated value into that pair (scenes with colour are traced with hero
+wavelengths, :mod:`simulator.spectra.hero`, from the same pair and the
+emitter's spectral shape).
 
 Notes
 -----

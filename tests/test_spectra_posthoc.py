@@ -179,7 +179,8 @@ def test_scenes_the_post_hoc_path_refuses():
     assert (mode, channels) == ("spectral", 4) and "hero" in reason
     mixed = _scene([(1.0, 205.15), (1.0, 163.1)])
     assert "2 different spectra" in posthoc_refusal(mixed)
-    assert choose_transport(mixed, n_responses=5)[:2] == ("per-emitter", 5)
+    mode, channels, reason = choose_transport(mixed, n_responses=5)
+    assert (mode, channels) == ("per-emitter", 4) and "hero" in reason
     with pytest.raises(ValueError, match="different spectra"):
         apply_posthoc([_row(1.0, 0.1)], mixed, "photometric", sources.cie_illuminant("D65"), [R.response("par")])
     assert posthoc_refusal(_scene([(1.0, 205.15), (3.0, 3 * 205.15)])) is None

@@ -3,7 +3,7 @@
 stages/point.usda is grey with one light (a 100 cd point at 3 m), so every
 response is exact post hoc from the one traced channel
 (simulator.spectra.posthoc); stages/quickstart.usda has a coloured rug, so
-responses there need spectral transport and the run is refused before tracing.
+it is traced with hero wavelengths and every response estimated per sample.
 """
 
 from __future__ import annotations
@@ -117,27 +117,34 @@ def test_a_run_without_responses_writes_the_standard_columns(tmp_path):
     assert "spectra" not in out.record
 
 
-def test_a_coloured_stage_with_responses_is_refused(tmp_path, capsys):
-    """quickstart.usda's rug is coloured: responses would need spectral
-    transport, not built yet. One line naming the config and why, exit 2, no
-    CSV; without responses the same stage's plan names the transport needed."""
-    cfg = _config(tmp_path, stage="quickstart.usda", output='responses = ["par"]')
-    assert main(["run", str(cfg), "-q"]) == 2
-    err = capsys.readouterr().err.strip()
-    assert "\n" not in err
-    assert str(cfg) in err and "output.responses" in err
-    assert "coloured" in err and "/World/Furniture/Rug" in err and "spectral transport" in err and "not built yet" in err
-    assert not (tmp_path / "out").exists()
+def test_a_coloured_stage_with_responses_is_traced_spectrally(tmp_path):
+    """quickstart.usda's rug is coloured: the run traces hero wavelengths and
+    its PPFD columns come from the same samples as its lux (one estimate per
+    sample, so each has its own stderr); the record names the transport and
+    why."""
+    cfg = load_config(_config(tmp_path, stage="quickstart.usda", output='responses = ["par"]'))
+    out = run(cfg, log=lambda *a: None)
+    rows = _table(out.csv_path)
+    assert [r["sensor"] for r in rows[:2]] == ["below", "offset"]  # then the stage's own sensors
+    for r in rows[:2]:
+        lux, ppfd = float(r["illuminance_lx"]), float(r["ppfd_umol_m2_s"])
+        assert lux > 0 and ppfd > 0 and float(r["ppfd_stderr_umol_m2_s"]) > 0
+        # D65 light off a mostly grey room: PPFD per lux near D65's 0.01802 µmol s⁻¹ lm⁻¹ (within 10 %)
+        assert 0.9 * 0.01802 < ppfd / lux < 1.1 * 0.01802
+    spectra = out.record["spectra"]
+    assert spectra["path"] == "hero wavelengths (spectral transport)" and "/World/Furniture/Rug" in spectra["reason"]
+    assert spectra["estimated"] == ["radiometric", "photopic", "par"] and spectra["responses"] == ["par"]
+    assert out.record["plan"]["transport"] == "spectral" and out.record["plan"]["channels"] == 4
 
 
 def test_the_plan_names_the_transport(tmp_path, capsys):
-    """``probesim plan``: grey for the point stage, spectral (4 hero
-    wavelengths needed, one channel traced) for the coloured quickstart."""
+    """``probesim plan``: grey (one channel) for the point stage, spectral (4
+    hero wavelengths traced, because of the rug's colour) for the coloured quickstart."""
     assert main(["plan", str(_config(tmp_path))]) == 0
     assert "transport grey, channels: 1" in capsys.readouterr().out
     assert main(["plan", str(_config(tmp_path, stage="quickstart.usda"))]) == 0
     line = capsys.readouterr().out.strip().splitlines()[-1]
-    assert "transport spectral, channels: 1" in line and "not built yet" in line
+    assert "transport spectral, channels: 4" in line and "hero wavelengths" in line and "Rug" in line
 
 
 @pytest.mark.parametrize(
@@ -190,3 +197,34 @@ def test_greenhouse_ppfd_columns_and_map(tmp_path):
     assert "ppfd_umol_m2_s" in exr.channels()
     assert float(exr.header()["probesim:par_uniformity"]) == pytest.approx(ppfd.min() / ppfd.mean(), rel=1e-6)
     assert (tmp_path / "gh.bench.par.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_a_probe_of_a_grey_scene_writes_its_emitters_colour(tmp_path):
+    """With ``[spectra] lights = "A"`` on the grey greenhouse (radiometric
+    units) every radiance has illuminant A's chromaticity, so the probe's
+    lat-long EXR carries R, G, B = the stated radiance (W m⁻² sr⁻¹) × the
+    linear sRGB of A per unit luminance (rgb_per_luminance: warm, R > G > B),
+    whose BT.709 Y is the stated radiance again (to 2e-4: the Y weights
+    0.2126, 0.7152, 0.0722 are the sRGB matrix's row rounded to 4 decimals),
+    and names the colour in its header."""
+    import OpenEXR
+
+    from simulator.spectra.posthoc import rgb_per_luminance
+    from simulator.units import luminance_grey
+
+    cfg = _config(tmp_path, stage="greenhouse.usda", units="radiometric", spectra='[spectra]\nlights = "A"')
+    cfg.write_text(cfg.read_text().replace("[output]", '[[sensor]]\nname = "ball"\nkind = "probe"\n'
+                                                      'position = [0, 0, 0.5]\nresolution = [8, 4]\n\n[output]'))
+    out = run(load_config(cfg), log=lambda *a: None)
+    exr = OpenEXR.File(str(tmp_path / "out" / "run.ball.exr"), separate_channels=True)
+    ch = {k: v.pixels.astype(float) for k, v in exr.channels().items()}
+    rgb = rgb_per_luminance(sources.emitter_spectrum("A"))
+    assert rgb[0] > rgb[1] > rgb[2]
+    lit = ch["L_W_m2_sr"] > 0
+    assert lit.any()
+    for k, c in enumerate("RGB"):
+        assert np.allclose(ch[c][lit] / ch["L_W_m2_sr"][lit], rgb[k], rtol=1e-6)
+    y = luminance_grey(np.stack([ch["R"], ch["G"], ch["B"]], axis=-1))
+    assert np.allclose(y, ch["L_W_m2_sr"], rtol=2e-4, atol=0)
+    assert "illuminant" not in exr.header()["probesim:rgb"] and " A " in exr.header()["probesim:rgb"]
+    assert out.record["spectra"]["spectrum"] == "A"

@@ -125,6 +125,7 @@ class DeviceScene:
         rec.eps = 1.0e-5
         rec.ray_counts = wp.zeros(1, dtype=wp.int32)
         rec.light_mask = wp.ones(max(1, n_sensors * (len(scene.lights) + 1)), dtype=wp.int32)
+        self._upload_hero(wp, rec, None)
         n_tri = g.n_triangles
         pts = g.points.astype(np.float32) if n_tri else np.zeros((3, 3), np.float32)
         tris = g.triangles.astype(np.int32) if n_tri else np.array([[0, 1, 2]], np.int32)
@@ -174,6 +175,34 @@ class DeviceScene:
         self._keep += [mesh, points, tri_ids, rec.albedo, rec.emission, rec.two_sided, rec.emit_tris, rec.emit_cdf,
                        rec.emit_prob, rec.lights]  # fmt: skip
         return rec
+
+    def _upload_hero(self, wp, rec, tables) -> None:
+        """The hero-wavelength tables (:class:`simulator.spectra.hero.HeroTables`) on ``rec``; placeholders
+        (1 × 1) when None, for grey transport, which never reads them."""
+        if tables is None:
+            one = np.zeros((1, 1), np.float32)
+            refl, face, emis, weights, colour = one, np.zeros(1, np.int32), one, one, one
+        else:
+            refl, emis, weights, colour = (np.ascontiguousarray(a, np.float32) for a in
+                                           (tables.reflectance, tables.emission, tables.weights, tables.colour))
+            face = np.ascontiguousarray(tables.face_reflectance, np.int32)
+            if not len(face):
+                face = np.zeros(1, np.int32)
+        rec.spectral_reflectance = wp.array2d(refl, dtype=float)
+        rec.spectral_face = wp.array(face, dtype=wp.int32)
+        rec.spectral_emission = wp.array2d(emis, dtype=float)
+        rec.response_weights = wp.array2d(weights, dtype=float)
+        rec.response_lanes = wp.zeros(1, dtype=wp.vec4)
+        rec.colour_weights = wp.array2d(colour, dtype=float)
+        self.n_responses = 0 if tables is None else int(weights.shape[0])
+
+    def set_hero_tables(self, tables) -> None:
+        """Upload the tables of spectral transport (``None``: back to grey placeholders)."""
+        wp = warp()
+        if tables is not None and tables.emission.shape[0] < int(self.rec.n_lights):
+            raise ValueError(f"{tables.emission.shape[0]} emission rows for {int(self.rec.n_lights)} light records")
+        with wp.ScopedDevice(self.device):
+            self._upload_hero(wp, self.rec, tables)
 
     def set_light_mask(self, mask: np.ndarray) -> None:
         """Lights to skip per sensor at its first vertex: ``mask`` (S, L) over

@@ -83,6 +83,11 @@ class EngineResult:
         target (None for a closed-form run, which cannot be stopped part way).
     interrupted : bool
         Whether a stop was requested during the run.
+    responses, response_mean, response_stderr
+        Spectral transport (:meth:`Engine.set_hero_tables`) only: response
+        names and their per-sample estimates' means and standard errors,
+        shape (S, R); ``mean``/``stderr`` are then the radiometric and
+        photopic responses of the same samples.
     """
 
     method: str
@@ -98,6 +103,11 @@ class EngineResult:
     methods: list[str] | None = None  #: per sensor, when a plan mixed methods (see run.run_plan)
     unfinished: np.ndarray | None = None
     interrupted: bool = False
+    #: spectral transport: the responses estimated per sample (names; radiometric and photopic first),
+    #: their means and stderrs, shape (S, R); None for grey transport
+    responses: list[str] | None = None
+    response_mean: np.ndarray | None = None
+    response_stderr: np.ndarray | None = None
 
 
 class Engine:
@@ -125,6 +135,7 @@ class Engine:
         self.rays_traced = 0
         self._light_mask: np.ndarray | None = None
         self._device_scene: DeviceScene | None = None
+        self._hero = None  # simulator.spectra.hero.HeroTables when tracing spectrally
 
     def _upload(self) -> DeviceScene:
         """Import Warp, load the kernels and upload the scene, on first need: a
@@ -139,6 +150,8 @@ class Engine:
             self._device_scene = DeviceScene(self.scene, self.sensors, self.device)
             if self._light_mask is not None:
                 self._device_scene.set_light_mask(self._light_mask)
+            if self._hero is not None:
+                self._device_scene.set_hero_tables(self._hero)
         return self._device_scene
 
     @property
@@ -168,6 +181,23 @@ class Engine:
         """Index of the light record standing for all emissive triangles, −1 if none."""
         return self._dev.emissive_light
 
+    def set_hero_tables(self, tables) -> None:
+        """Trace spectrally with these tables (:func:`simulator.spectra.hero.hero_tables`): Monte Carlo
+        runs then estimate every response per sample (``EngineResult.responses``); None: grey transport."""
+        self._hero = tables
+        if self._device_scene is not None:
+            self._device_scene.set_hero_tables(tables)
+
+    @property
+    def hero_tables(self):
+        """The tables of spectral transport, None for grey transport (see :meth:`set_hero_tables`)."""
+        return self._hero
+
+    @property
+    def spectral(self) -> bool:
+        """Whether Monte Carlo runs trace hero wavelengths."""
+        return self._hero is not None
+
     def set_light_mask(self, mask: np.ndarray) -> None:
         """Lights to skip per sensor at its first vertex: ``mask`` (S, L) over
         the scene's lights, 0 = wholly behind the sensor (see plan.lights_behind)."""
@@ -187,6 +217,9 @@ class Engine:
         p.count_rays = 0
         p.thread = 0
         p.mask_row = -1
+        p.spectral = 1 if self._hero is not None else 0
+        p.hero = warp().vec4i(0, 0, 0, 0)
+        p.tint = warp().vec4(1.0, 1.0, 1.0, 1.0)
         return p
 
     # ------------------------------------------------------------ sensors
@@ -194,7 +227,8 @@ class Engine:
     def _launch(self, params, sensor_ids: np.ndarray, first: np.ndarray, count: np.ndarray):
         """Draw count[i] samples of sensor_ids[i], starting at sample first[i].
 
-        Returns (sensors, counts, means, m2s, non_finite) for the batch."""
+        Returns (sensors, counts, means, m2s, non_finite, response_means,
+        response_m2s) for the batch; the last two are None for grey transport."""
         wp = warp()
         nblk = (count + BLOCK - 1) // BLOCK
         t_sensor = np.repeat(sensor_ids, nblk).astype(np.int32)
@@ -214,13 +248,18 @@ class Engine:
             s1 = wp.empty(n, dtype=wp.vec2d)
             s2 = wp.empty(n, dtype=wp.vec2d)
             bad = wp.empty(n, dtype=wp.int32)
+            n_resp = self._dev.n_responses if params.spectral else 0
+            r_shape = (n, n_resp) if n_resp else (1, 1)
+            r_shift, r_s1, r_s2 = (wp.zeros(r_shape, dtype=wp.float64) for _ in range(3))
+            if n_resp:
+                rec.response_lanes = wp.zeros(n, dtype=wp.vec4)
 
             def run(offset: int, dim: int):
                 wp.launch(
                     self._K.estimate_kernel,
                     dim=dim,
                     inputs=[rec, self._dev.sensors, params, a_sensor, a_first, a_count, offset],
-                    outputs=[shift, s1, s2, bad],
+                    outputs=[shift, s1, s2, bad, r_shift, r_s1, r_s2],
                 )
 
             fan_out(self.threads, run, n)
@@ -229,7 +268,11 @@ class Engine:
             if params.count_rays:
                 self.rays_traced += int(rec.ray_counts.numpy().sum())
             nonfinite = np.add.reduceat(bad.numpy(), np.flatnonzero(np.r_[True, t_sensor[1:] != t_sensor[:-1]]))
-        return (*out, nonfinite)
+            r_mean = r_m2 = None
+            if n_resp:
+                _, _, r_mean, r_m2 = RunningStats.reduce_blocks(t_sensor, t_count, r_shift.numpy(), r_s1.numpy(),
+                                                                r_s2.numpy())
+        return (*out, nonfinite, r_mean, r_m2)
 
     def _run_analytic(self, sensor_ids: np.ndarray) -> EngineResult:
         """Closed-form readings (the caller has checked they apply): exact up
@@ -335,6 +378,8 @@ class Engine:
         params.count_rays = 1 if count_rays else 0
         self.rays_traced = 0  # shadow and path rays, counted when count_rays
         stats = RunningStats(n_s)
+        n_resp = self._dev.n_responses if params.spectral else 0
+        rstats = RunningStats(n_s, n_resp) if n_resp else None
         seconds = np.zeros(n_s)
         nonfinite = np.zeros(n_s, np.int64)
         adaptive = rel_error is not None
@@ -349,9 +394,11 @@ class Engine:
 
         def step(ids, first, count):
             tb = time.perf_counter()
-            sens, cnt, mean, m2, bad = self._launch(params, ids, first, count)
+            sens, cnt, mean, m2, bad, r_mean, r_m2 = self._launch(params, ids, first, count)
             dt = time.perf_counter() - tb
             stats.merge(sens, cnt, mean, m2)
+            if rstats is not None:
+                rstats.merge(sens, cnt, r_mean, r_m2)
             seconds[sens] += dt * cnt / cnt.sum()
             nonfinite[sens] += bad
 
@@ -390,6 +437,9 @@ class Engine:
             warnings=warnings,
             unfinished=active.copy(),
             interrupted=stop is not None and stop.requested,
+            responses=None if rstats is None else [r.name for r in self._hero.responses],
+            response_mean=None if rstats is None else rstats.mean.copy(),
+            response_stderr=None if rstats is None else rstats.stderr(),
         )
 
     # ------------------------------------------------------------ probes
@@ -397,13 +447,15 @@ class Engine:
     def _launch_passes(self, rec, params, n_pix: int, first_pass: int, n_passes: int):
         """Draw passes [first_pass, first_pass + n_passes) of every pixel of
         the probe ``rec``. Returns per-pixel (counts, means, m2s) of shape
-        (P,), (P, 2Q), (P, 2Q) and the number of non-finite samples."""
+        (P,), (P, K), (P, K) and the number of non-finite samples; K = 2Q, and
+        3 more (linear sRGB) with spectral transport."""
         wp = warp()
-        width = P.N_QUANTITIES * P.N_CHANNELS
+        width = P.probe_width(bool(params.spectral))
         blocks = (n_passes + PASS_BLOCK - 1) // PASS_BLOCK
         counts_blk = np.minimum(PASS_BLOCK, n_passes - PASS_BLOCK * np.arange(blocks))
         pix_per_launch = max(1, THREADS_PER_LAUNCH // blocks)
         counts = np.full(n_pix, n_passes, np.int64)
+        rec_scene = self._dev.rec
         means = np.empty((n_pix, width))
         m2s = np.empty((n_pix, width))
         bad_total = 0
@@ -415,12 +467,14 @@ class Engine:
                 s1 = wp.empty((n, width), dtype=wp.float64)
                 s2 = wp.empty((n, width), dtype=wp.float64)
                 bad = wp.empty(n, dtype=wp.int32)
+                if params.spectral:
+                    rec_scene.response_lanes = wp.zeros(n, dtype=wp.vec4)
 
                 def run(offset: int, dim: int):
                     wp.launch(
                         self._KP.probe_kernel,
                         dim=dim,
-                        inputs=[self._dev.rec, rec, params, 0, first_pass, n_passes, PASS_BLOCK, blocks, p0, offset],
+                        inputs=[rec_scene, rec, params, 0, first_pass, n_passes, PASS_BLOCK, blocks, p0, offset],
                         outputs=[shift, s1, s2, bad],
                     )
 
@@ -437,7 +491,7 @@ class Engine:
     def _probe_delta(self, rec, params) -> np.ndarray:
         """The delta lights' exact contributions to a probe's integrals, (Q, C)."""
         wp = warp()
-        width = P.N_QUANTITIES * P.N_CHANNELS
+        width = P.probe_width(bool(params.spectral))
         with wp.ScopedDevice(self.device):
             d_shift = wp.zeros((1, width), dtype=wp.float64)
             d_sum = wp.zeros((1, width), dtype=wp.float64)
@@ -445,7 +499,7 @@ class Engine:
             d_bad = wp.zeros(1, dtype=wp.int32)
             wp.launch(self._KP.probe_kernel, dim=1, inputs=[self._dev.rec, rec, params, 1, 0, 0, 1, 1, 0, 0],
                       outputs=[d_shift, d_sum, d_sq, d_bad])  # fmt: skip
-            return d_sum.numpy()[0].reshape(P.N_QUANTITIES, P.N_CHANNELS)
+            return d_sum.numpy()[0][: P.N_QUANTITIES * P.N_CHANNELS].reshape(P.N_QUANTITIES, P.N_CHANNELS)
 
     def run_probes(
         self,
@@ -527,7 +581,7 @@ class Engine:
             rec = P.probe_record(self._KP.ProbeRec(), s, frame, P.stream_key(seed, stream_ids[k]))
             omega = P.pixel_solid_angles(w, h).reshape(-1)
             delta = self._probe_delta(rec, params)  # delta lights: exact, once
-            stats = RunningStats(n_pix, P.N_QUANTITIES * P.N_CHANNELS)
+            stats = RunningStats(n_pix, P.probe_width(bool(params.spectral)))
             first_batch = max(P.MIN_PASSES, -(-samples // n_pix))
             cap = max(P.MIN_PASSES, -(-max_samples // n_pix)) if rule is not None else first_batch
             bad = [0]

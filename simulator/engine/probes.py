@@ -52,6 +52,8 @@ __all__ = [
     "MAX_PROBE_PIXELS",
     "N_QUANTITIES",
     "N_CHANNELS",
+    "N_COLOUR",
+    "probe_width",
     "ProbeResult",
     "latlong_layout",
     "pixel_solid_angles",
@@ -74,8 +76,15 @@ N_QUANTITIES = 22
 #: channels: radiometric, photometric
 N_CHANNELS = 2
 
+#: spectral transport: linear sRGB radiance columns (cd/m²) after the integrands
+N_COLOUR = 3
 _Q = N_QUANTITIES
 _C = N_CHANNELS
+
+
+def probe_width(spectral: bool) -> int:
+    """Statistics per pixel: the 22 integrands × 2 channels, and the 3 sRGB columns when spectral."""
+    return _Q * _C + (N_COLOUR if spectral else 0)
 
 
 # --------------------------------------------------------------------------- layout (numpy)
@@ -180,6 +189,10 @@ class ProbeResult:
         Samples that came out NaN or Inf (counted as 0).
     target_met : bool or None
         Adaptive runs: whether scalar irradiance reached the error target.
+    colour, colour_stderr : ndarray, shape (H, W, 3), or None
+        Spectral transport only: mean linear sRGB radiance per pixel in
+        cd/m² (luminance-based: ``M · K_m ∫ L (x̄, ȳ, z̄) dλ``, CIE 1931 2°,
+        IEC 61966-2-1 ``M``) and its standard error.
     interrupted : bool
         Stopped by a stop request (Ctrl-C) before its passes or target were
         reached; ``target_met`` is then False.
@@ -201,6 +214,8 @@ class ProbeResult:
     target_met: bool | None = None
     warnings: list[str] = field(default_factory=list)
     interrupted: bool = False
+    colour: np.ndarray | None = None
+    colour_stderr: np.ndarray | None = None
 
     @property
     def scalar_irradiance(self) -> tuple[np.ndarray, np.ndarray]:
@@ -286,9 +301,9 @@ def integrals(stats: RunningStats, omega: np.ndarray, delta: np.ndarray) -> tupl
         The delta lights' exact part.
     """
     n = stats.count.astype(np.float64)[:, None]
-    mean = stats.mean
+    mean = stats.mean[:, : _Q * _C]
     with np.errstate(invalid="ignore", divide="ignore"):
-        var_mean = np.where(n > 1, stats.m2 / (n * (n - 1.0)), np.inf)
+        var_mean = np.where(n > 1, stats.m2[:, : _Q * _C] / (n * (n - 1.0)), np.inf)
     val = (omega[:, None] * mean).sum(axis=0).reshape(_Q, _C) + delta
     se = np.sqrt((omega[:, None] ** 2 * var_mean).sum(axis=0)).reshape(_Q, _C)
     return val, se
@@ -308,8 +323,13 @@ def probe_result(sensor: Sensor, frame: np.ndarray, stats: RunningStats, omega: 
         cov[:, a, a] = var[7 + a]
     for q, (a, b) in zip((19, 20, 21), ((0, 1), (0, 2), (1, 2))):
         cov[:, a, b] = cov[:, b, a] = 0.5 * (var[q] - var[7 + a] - var[7 + b])
-    mean = stats.mean.reshape(n_pix, _Q, _C)[:, 0, :]
-    pse = stats.stderr().reshape(n_pix, _Q, _C)[:, 0, :]
+    se_all = stats.stderr()
+    mean = stats.mean[:, : _Q * _C].reshape(n_pix, _Q, _C)[:, 0, :]
+    pse = se_all[:, : _Q * _C].reshape(n_pix, _Q, _C)[:, 0, :]
+    colour = colour_se = None
+    if stats.mean.shape[1] > _Q * _C:
+        colour = stats.mean[:, _Q * _C:].reshape(h, w, N_COLOUR).copy()
+        colour_se = se_all[:, _Q * _C:].reshape(h, w, N_COLOUR).copy()
     warnings = []
     if bad:
         warnings.append(f"probe {sensor.name}: {bad} non-finite samples were counted as 0")
@@ -329,4 +349,6 @@ def probe_result(sensor: Sensor, frame: np.ndarray, stats: RunningStats, omega: 
         non_finite=bad,
         target_met=target_met,
         warnings=warnings,
+        colour=colour,
+        colour_stderr=colour_se,
     )

@@ -49,7 +49,8 @@ channel                unit      value
 =====================  ========  ==================================================
 ``R``, ``G``, ``B``    (note)    mean radiance in the stage's light units: cd/m²
                                  for ``photometric``, W m⁻² sr⁻¹ for
-                                 ``radiometric`` (grey: R = G = B), so that the
+                                 ``radiometric`` (R = G = B; a grey run with
+                                 ``[spectra]`` × its emitters' colour), so that the
                                  file is a DomeLight ``texture:file`` at intensity 1
 ``L_W_m2_sr``          W/m²/sr   mean radiance over the pixel
 ``L_stderr_W_m2_sr``   W/m²/sr   its standard error
@@ -345,6 +346,17 @@ def probe_record(result, map_file: str) -> dict:
     }
 
 
+def _stated_colour(r, k: int, photometric: bool) -> np.ndarray:
+    """Channel k of a spectrally traced probe's sRGB map in the stage's light units: the traced
+    luminance-based colour (cd/m²), times L_W / L_v per pixel for radiometric units (0 where dark)."""
+    c = np.asarray(r.colour[..., k], float)
+    if photometric:
+        return c
+    lv, le = r.radiance[..., 1], r.radiance[..., 0]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(lv > 0, c * le / lv, 0.0)
+
+
 def probe_outputs(csv_path: Path, results: list, meta: dict[str, str]) -> tuple[dict[Path, Content], dict[str, str]]:
     """EXR maps of every probe and the ``<csv stem>.probes.json`` side file.
 
@@ -354,7 +366,12 @@ def probe_outputs(csv_path: Path, results: list, meta: dict[str, str]) -> tuple[
     results : list of simulator.engine.probes.ProbeResult
     meta : dict of str to str
         Run-wide metadata: ``seed``, ``method``, ``light_units``, ``stage``,
-        and optionally ``taken`` (grid names, whose files come first).
+        and optionally ``taken`` (grid names, whose files come first) and
+        ``rgb`` ``(spectrum name, linear sRGB per unit luminance (3,))``: a
+        grey scene whose emitters share that spectrum, so every radiance has
+        its chromaticity and R, G, B are the stated radiance × that colour
+        (BT.709 Y of it is 1 to 1e-4, so a DomeLight reading the file sees
+        the same grey); without it R = G = B.
 
     Returns
     -------
@@ -374,8 +391,13 @@ def probe_outputs(csv_path: Path, results: list, meta: dict[str, str]) -> tuple[
         path = csv_path.with_name(stems[r.sensor.name] + ".exr")
         map_files[r.sensor.name] = path.name
         grey = r.radiance[..., 1 if photometric else 0]
+        rgb = meta.get("rgb")
+        colour = np.ones(3) if rgb is None else np.asarray(rgb[1], float)
+        maps = [grey * colour[k] for k in range(3)]
+        if getattr(r, "colour", None) is not None:  # traced spectrally: each pixel's own colour
+            maps = [_stated_colour(r, k, photometric) for k in range(3)]
         channels = {
-            "R": grey, "G": grey, "B": grey,
+            "R": maps[0], "G": maps[1], "B": maps[2],
             "L_W_m2_sr": r.radiance[..., 0], "L_stderr_W_m2_sr": r.radiance_stderr[..., 0],
             "Lv_cd_m2": r.radiance[..., 1], "Lv_stderr_cd_m2": r.radiance_stderr[..., 1],
         }  # fmt: skip
@@ -405,6 +427,13 @@ def probe_outputs(csv_path: Path, results: list, meta: dict[str, str]) -> tuple[
             "probesim:samples": str(r.samples),
             "probesim:delta_lights": delta,
         }
+        if getattr(r, "colour", None) is not None:
+            header["probesim:rgb"] = ("R, G, B: linear sRGB of each pixel's traced spectrum (hero wavelengths; "
+                                      "M K_m integral of L times the CIE 1931 colour matching functions, cd/m2)"
+                                      + ("" if photometric else ", scaled by the pixel's W/m2/sr per cd/m2"))
+        elif rgb is not None:
+            header["probesim:rgb"] = (f"R, G, B: the stated radiance x the linear sRGB of {rgb[0]} per unit luminance "
+                                      f"({_vec(colour)}); the scene is grey, so every radiance has that chromaticity")
         files[path] = _exr_writer(channels, header, latlong=True)
         records.append(probe_record(r, path.name))
     doc = {

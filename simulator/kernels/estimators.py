@@ -63,6 +63,7 @@ from .sampling import (
     pdf_cosine_hemisphere,
     sample_cosine_hemisphere,
     sample_uniform_cone,
+    hero_stream_key,
     sensor_stream_key,
     to_world,
 )
@@ -114,6 +115,9 @@ class TraceParams:
     count_rays: int  # 1: count traced rays per thread in scene.ray_counts (benchmarks)
     thread: int  # set by the kernel for each thread
     mask_row: int  # set by the kernel: the sensor whose light mask applies at vertex 0, −1 for none
+    spectral: int  # 1: hero-wavelength transport (scene.spectral_* tables, response tallies)
+    hero: wp.vec4i  # set by the kernel per sample: the 4 hero wavelengths' grid nodes (0…400)
+    tint: wp.vec4  # spectral throughput / β per hero lane where a path starts (mean 1; ones at a sensor)
 
 
 @wp.func
@@ -472,20 +476,98 @@ def shaping_factor(l: LightRec, w_out: wp.vec3) -> float:
     return f
 
 
+# ---------------------------------------------------------------- hero wavelengths
+#
+# Spectral mode (params.spectral = 1, simulator.spectra.hero): each sample
+# carries 4 wavelengths (grid nodes params.hero) and, besides the scalar
+# throughput β that Russian roulette reads, a tint per lane: the spectral
+# throughput divided by β, kept at mean 1 (so β is the lanes' mean). A
+# contribution value (W channel) × tint_k × the light's spectral row at node
+# k is the spectral density the sample adds at λ_k; it is summed per lane in
+# scene.response_lanes and projected on every response when the sample ends.
+
+#: hero wavelengths per sample (simulator.spectra.transport.HERO_WAVELENGTHS)
+N_HERO = wp.constant(4)
+#: grid nodes spanned by the 4 lanes: 380–780 nm at 1 nm
+GRID_SPAN_NM = wp.constant(400.0)
+
+
 @wp.func
-def light_contribution(scene: SceneRec, params: TraceParams, li: int, value: wp.vec2) -> wp.vec2:
+def hero_nodes(u: float) -> wp.vec4i:
+    """Grid nodes of the 4 hero wavelengths of a uniform ``u`` ∈ [0, 1):
+    x_k = 400·frac(u + k/4) nm above 380 nm, each rounded to its nearest
+    node ⌊x_k + ½⌋ ∈ {0 … 400}. Node i is then drawn with probability w_i/400
+    (w the trapezoid weights: ½ at either end), which
+    ``scene.response_weights`` (400·q/w) divides out (simulator.spectra.hero)."""
+    h = wp.vec4i(0, 0, 0, 0)
+    for k in range(4):
+        x = GRID_SPAN_NM * (u + float(k) * 0.25)
+        if x >= GRID_SPAN_NM:
+            x = x - GRID_SPAN_NM
+        h[k] = wp.min(int(x + 0.5), 400)
+    return h
+
+
+@wp.func
+def spectral_row(table: wp.array2d(dtype=float), row: int, h: wp.vec4i) -> wp.vec4:
+    """``table[row]`` at the 4 hero nodes."""
+    return wp.vec4(table[row, h[0]], table[row, h[1]], table[row, h[2]], table[row, h[3]])
+
+
+@wp.func
+def lane_response(scene: SceneRec, r: int, h: wp.vec4i, lanes: wp.vec4) -> float:
+    """Response ``r`` of one sample from its 4 lanes: (1/4) Σ_k W_r(λ_k)·X_k."""
+    return 0.25 * wp.dot(spectral_row(scene.response_weights, r, h), lanes)
+
+
+@wp.func
+def spectral_contribution(scene: SceneRec, params: TraceParams, li: int, value: wp.vec2, tint: wp.vec4) -> wp.vec2:
+    """Tally light ``li``'s share of a spectral sample in its lanes and
+    return its (radiometric, photopic) responses, which stand for the W and
+    lm channels in spectral mode."""
+    lanes = value[0] * wp.cw_mul(tint, spectral_row(scene.spectral_emission, li, params.hero))
+    scene.response_lanes[params.thread] = scene.response_lanes[params.thread] + lanes
+    return wp.vec2(lane_response(scene, 0, params.hero, lanes), lane_response(scene, 1, params.hero, lanes))
+
+
+@wp.struct
+class Reflection:
+    rho: float  # what the path's throughput β is multiplied by
+    tint: wp.vec4  # the lanes' spectral throughput / β after the reflection
+
+
+@wp.func
+def light_contribution(scene: SceneRec, params: TraceParams, li: int, value: wp.vec2, tint: wp.vec4) -> wp.vec2:
     """Light ``li``'s share ``value`` (W and lm channels) of one sample, as
-    the trace tallies it. Every place a sample adds emitted light goes
+    the trace tallies it; ``tint`` is the path's spectral tint there (see
+    :class:`Reflection`). Every place a sample adds emitted light goes
     through here, so per-light tallies (light groups) and per-light scalings
-    have one hook; today it passes the value on unchanged."""
+    have one hook. Grey transport passes the value on unchanged; spectral
+    transport tallies its lanes and returns its spectral (W, lm) responses."""
+    if params.spectral != 0:
+        return spectral_contribution(scene, params, li, value, tint)
     return value
 
 
 @wp.func
-def surface_albedo(scene: SceneRec, params: TraceParams, face: int) -> float:
-    """Diffuse albedo ρ of triangle ``face`` for this trace: the one place a
-    path reads a surface's reflectance."""
-    return scene.albedo[face]
+def surface_albedo(scene: SceneRec, params: TraceParams, face: int, tint: wp.vec4) -> Reflection:
+    """Diffuse reflection off triangle ``face`` for this trace: the one place
+    a path reads a surface's reflectance. Grey: ρ = the albedo, the tint is
+    kept. Spectral: with ρ_k = ρ(λ_k) the uplifted reflectance, the scalar
+    is the mean m = (1/4) Σ_k tint_k ρ_k and the tint becomes tint_k ρ_k / m,
+    so β·tint_k stays the lane's spectral throughput and β their mean (what
+    Russian roulette reads)."""
+    r = Reflection()
+    r.tint = tint
+    if params.spectral == 0:
+        r.rho = scene.albedo[face]
+        return r
+    t = wp.cw_mul(tint, spectral_row(scene.spectral_reflectance, scene.spectral_face[face], params.hero))
+    m = 0.25 * (t[0] + t[1] + t[2] + t[3])
+    r.rho = m
+    if m > 0.0:
+        r.tint = t / m
+    return r
 
 
 @wp.func
@@ -501,6 +583,7 @@ def vertex_irradiance(
     n = n_in
     weight = weight_in  # weight_in × the path throughput β
     beta = float(1.0)
+    tint = params.tint  # spectral throughput / β per hero lane (spectral mode; see surface_albedo)
     total = wp.vec2(0.0, 0.0)
     depth = int(0)
     while depth < MAX_VERTICES:
@@ -530,7 +613,7 @@ def vertex_irradiance(
                     if w > 0.0:
                         count_ray(scene, params)
                     if w > 0.0 and shadow_ray_clear(scene, o, p, li, ls):
-                        total += light_contribution(scene, params, li, (weight * w) * ls.value)
+                        total += light_contribution(scene, params, li, (weight * w) * ls.value, tint)
         if params.bsdf == 0:
             break
         # -- a cosine-weighted direction: E ≈ π·L(ω)
@@ -555,7 +638,7 @@ def vertex_irradiance(
                 w = float(1.0)
                 if params.mis != 0 and params.nee != 0:
                     w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, t, -1))
-                total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission)
+                total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission, tint)
         if face < 0:
             for li in range(scene.n_lights):
                 le = escaped_radiance(scene.lights[li], wi)
@@ -563,7 +646,7 @@ def vertex_irradiance(
                     w = float(1.0)
                     if params.mis != 0 and params.nee != 0:
                         w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, RAY_INF, -1))
-                    total += light_contribution(scene, params, li, (w_dir * w) * le)
+                    total += light_contribution(scene, params, li, (w_dir * w) * le, tint)
             break
         cos_view = -wp.dot(wi, ng)
         le = tri_emitted(scene, face, cos_view)
@@ -571,13 +654,15 @@ def vertex_irradiance(
             w = float(1.0)
             if params.mis != 0 and params.nee != 0 and params.emissive_light >= 0:
                 w = power_heuristic(pdf_b, pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
-            total += light_contribution(scene, params, params.emissive_light, (w_dir * w) * le)
+            total += light_contribution(scene, params, params.emissive_light, (w_dir * w) * le, tint)
         if params.bounces >= 0 and depth >= params.bounces:
             break
         # -- reflect: L_o = ρ/π·E, so the next vertex's weight is w_dir·ρ/π
         #    = weight_in·β·ρ. Below RR_THRESHOLD, survive with probability
         #    q = β/RR_THRESHOLD and divide by it (Russian roulette, unbiased).
-        beta = beta * surface_albedo(scene, params, face)
+        refl = surface_albedo(scene, params, face, tint)
+        beta = beta * refl.rho
+        tint = refl.tint
         if beta < RR_THRESHOLD:
             q_survive = beta / RR_THRESHOLD
             if wp.randf(rng) >= q_survive:
@@ -611,19 +696,23 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     for li in range(scene.n_lights):
         l = scene.lights[li]
         if hit_light_before(l, o, d, t_hit) > 0.0 and direct:
-            total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission)
+            total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, params.tint)
     if face < 0:
         if direct:
             for li in range(scene.n_lights):
-                total += light_contribution(scene, params, li, escaped_radiance(scene.lights[li], d))
+                total += light_contribution(scene, params, li, escaped_radiance(scene.lights[li], d), params.tint)
         return total
     cos_view = -wp.dot(d, ng)
     if direct:
-        total += light_contribution(scene, params, params.emissive_light, tri_emitted(scene, face, cos_view))
-    rho = surface_albedo(scene, params, face)
-    if rho > 0.0:
+        le = tri_emitted(scene, face, cos_view)
+        if le[0] > 0.0 or le[1] > 0.0:
+            total += light_contribution(scene, params, params.emissive_light, le, params.tint)
+    refl = surface_albedo(scene, params, face, params.tint)
+    if refl.rho > 0.0:
         n = wp.where(cos_view > 0.0, ng, -ng)
-        total += vertex_irradiance(scene, o + t_hit * d, n, rho * INV_PI, params, params.skip_direct, rng)
+        prm = params
+        prm.tint = refl.tint
+        total += vertex_irradiance(scene, o + t_hit * d, n, refl.rho * INV_PI, prm, params.skip_direct, rng)
     return total
 
 
@@ -773,12 +862,21 @@ def estimate_kernel(
     out_sum: wp.array(dtype=wp.vec2d),
     out_sumsq: wp.array(dtype=wp.vec2d),
     out_bad: wp.array(dtype=wp.int32),
+    response_shift: wp.array2d(dtype=wp.float64),
+    response_sum: wp.array2d(dtype=wp.float64),
+    response_sumsq: wp.array2d(dtype=wp.float64),
 ):
     """Each thread draws ``thread_count[t]`` samples of one sensor and
     writes shifted sums Σ(x − K) and Σ(x − K)² with K its first sample, so
     that a constant estimator (a lone point light) has exactly zero variance
     and float64 accumulation does not cancel. Non-finite samples are counted
-    in ``out_bad`` and left out of the sums (the host reports them)."""
+    in ``out_bad`` and left out of the sums (the host reports them).
+
+    Spectral mode: each sample first draws its hero wavelengths from the
+    sensor's wavelength stream (:func:`hero_stream_key`); its lanes are
+    projected on every response r of ``scene.response_weights`` and tallied
+    likewise in ``response_*[t, r]`` (rows 0 and 1, radiometric and
+    photopic, are also the W and lm channels)."""
     t = wp.tid() + offset
     sid = thread_sensor[t]
     first = thread_first_sample[t]
@@ -791,17 +889,39 @@ def estimate_kernel(
     prm = params
     prm.thread = t
     prm.mask_row = wp.where(s.cull != 0, sid, -1)
+    n_resp = int(0)
+    if params.spectral != 0:
+        n_resp = scene.response_weights.shape[0]
+    for r in range(n_resp):
+        response_sum[t, r] = wp.float64(0.0)
+        response_sumsq[t, r] = wp.float64(0.0)
     for j in range(thread_count[t]):
+        if params.spectral != 0:
+            prm.hero = hero_nodes(wp.randf(wp.rand_init(hero_stream_key(key), first + j)))
+            scene.response_lanes[t] = wp.vec4(0.0, 0.0, 0.0, 0.0)
         v = sample_sensor(scene, s, prm, wp.rand_init(key, first + j))
-        if not (wp.isfinite(v[0]) and wp.isfinite(v[1])):
+        ok = wp.isfinite(v[0]) and wp.isfinite(v[1])
+        lanes = wp.vec4(0.0, 0.0, 0.0, 0.0)
+        if n_resp > 0:
+            lanes = scene.response_lanes[t]
+            ok = ok and wp.isfinite(wp.dot(lanes, lanes))
+        if not ok:
             bad += 1
             v = wp.vec2(0.0, 0.0)
+            lanes = wp.vec4(0.0, 0.0, 0.0, 0.0)
         x = wp.vec2d(wp.float64(v[0]), wp.float64(v[1]))
         if j == 0:
             shift = x
         dx = x - shift
         s1 += dx
         s2 += wp.cw_mul(dx, dx)
+        for r in range(n_resp):
+            xr = wp.float64(lane_response(scene, r, prm.hero, lanes))
+            if j == 0:
+                response_shift[t, r] = xr
+            dr = xr - response_shift[t, r]
+            response_sum[t, r] = response_sum[t, r] + dr
+            response_sumsq[t, r] = response_sumsq[t, r] + dr * dr
     out_shift[t] = shift
     out_sum[t] = s1
     out_sumsq[t] = s2

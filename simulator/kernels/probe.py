@@ -47,9 +47,9 @@ import warp as wp
 
 from simulator.scene.model import LightKind, SensorKind
 
-from .estimators import SensorRec, TraceParams, sample_radiance, shaping_factor, unoccluded
+from .estimators import SensorRec, TraceParams, hero_nodes, sample_radiance, shaping_factor, spectral_row, unoccluded
 from .lights import SceneRec
-from .sampling import sensor_stream_key
+from .sampling import hero_stream_key, sensor_stream_key
 
 _POINT = wp.constant(int(LightKind.POINT))
 _DISTANT = wp.constant(int(LightKind.DISTANT))
@@ -60,6 +60,8 @@ wp.set_module_options({"enable_backward": False})
 
 #: integrands per sample (see the module docstring), each with 2 channels
 N_QUANTITIES = wp.constant(22)
+#: spectral transport (params.spectral): linear sRGB radiance columns after the 2·N_QUANTITIES integrands
+N_COLOUR = wp.constant(3)
 
 # SH normalisation constants (module docstring)
 _SH0 = wp.constant(0.28209479177387814)  # ½√(1/π)
@@ -206,6 +208,19 @@ def accumulate(t: int, q: int, first: int, v: wp.vec2, out_shift: wp.array2d(dty
         out_sumsq[t, k] = out_sumsq[t, k] + dx * dx
 
 
+@wp.func
+def accumulate_one(t: int, k: int, first: int, x: wp.float64, out_shift: wp.array2d(dtype=wp.float64),
+                   out_sum: wp.array2d(dtype=wp.float64), out_sumsq: wp.array2d(dtype=wp.float64)):  # fmt: skip
+    """Shifted sums of one column ``k`` (as :func:`accumulate`)."""
+    if first != 0:
+        out_shift[t, k] = x
+        out_sum[t, k] = wp.float64(0.0)
+        out_sumsq[t, k] = wp.float64(0.0)
+    dx = x - out_shift[t, k]
+    out_sum[t, k] = out_sum[t, k] + dx
+    out_sumsq[t, k] = out_sumsq[t, k] + dx * dx
+
+
 @wp.kernel
 def probe_kernel(
     scene: SceneRec,
@@ -229,10 +244,17 @@ def probe_kernel(
     writes the shifted sums of the 22 integrands (row t, column 2q + channel). Sample k of pixel p always uses the random stream
     ``rand_init(sensor_stream_key(probe.key, p), k)``, whatever the batch
     layout. ``mode`` 1 (one thread): writes the delta lights' exact
-    contributions to the integrals in ``out_sum[0]`` (shift and squares 0)."""
+    contributions to the integrals in ``out_sum[0]`` (shift and squares 0).
+
+    Spectral transport (``params.spectral``): each direction carries hero
+    wavelengths drawn from the pixel's wavelength stream
+    (``hero_stream_key``), the integrands are its radiometric and photopic
+    responses, and columns 2·N_QUANTITIES + c (c = 0, 1, 2) take its linear
+    sRGB radiance (``scene.colour_weights``, cd/m²); delta lights, which the
+    map cannot show, add nothing there."""
     t = wp.tid() + offset
     if mode == 1:
-        for k in range(2 * N_QUANTITIES):
+        for k in range(out_shift.shape[1]):
             out_shift[t, k] = wp.float64(0.0)
             out_sum[t, k] = wp.float64(0.0)
             out_sumsq[t, k] = wp.float64(0.0)
@@ -264,16 +286,31 @@ def probe_kernel(
     s.position = probe.position
     s.one_minus_cos = 0.0
     bad = int(0)
+    prm = params
+    prm.thread = t
     for k in range(start, end):
         rng = wp.rand_init(key, k)
         loc = sample_latlong_pixel(wp.vec2(wp.randf(rng), wp.randf(rng)), lon_a, lon_a + probe.dlon, lat_a, lat_a + probe.dlat)
         w = wp.normalize(loc[0] * probe.ex + loc[1] * probe.ey + loc[2] * probe.ez)
         s.normal = w
-        v = sample_radiance(scene, s, params, rng)
-        if not (wp.isfinite(v[0]) and wp.isfinite(v[1])):
+        if params.spectral != 0:
+            prm.hero = hero_nodes(wp.randf(wp.rand_init(hero_stream_key(key), k)))
+            scene.response_lanes[t] = wp.vec4(0.0, 0.0, 0.0, 0.0)
+        v = sample_radiance(scene, s, prm, rng)
+        lanes = wp.vec4(0.0, 0.0, 0.0, 0.0)
+        ok = wp.isfinite(v[0]) and wp.isfinite(v[1])
+        if params.spectral != 0:
+            lanes = scene.response_lanes[t]
+            ok = ok and wp.isfinite(wp.dot(lanes, lanes))
+        if not ok:
             bad += 1
             v = wp.vec2(0.0, 0.0)
+            lanes = wp.vec4(0.0, 0.0, 0.0, 0.0)
         first = wp.where(k == start, 1, 0)
         for q in range(N_QUANTITIES):
             accumulate(t, q, first, probe_weight(q, w) * v, out_shift, out_sum, out_sumsq)
+        if params.spectral != 0:
+            for c in range(N_COLOUR):
+                x = 0.25 * wp.dot(spectral_row(scene.colour_weights, c, prm.hero), lanes)
+                accumulate_one(t, 2 * N_QUANTITIES + c, first, wp.float64(x), out_shift, out_sum, out_sumsq)
     out_bad[t] = bad

@@ -54,6 +54,19 @@ def sensor_stream_key(seed: int, sensor: int) -> int:
     return int(hash_u32(wp.uint32(seed) ^ hash_u32(wp.uint32(sensor) + _GOLDEN)) >> wp.uint32(1))
 
 
+#: salt of the hero-wavelength stream (hero_stream_key)
+_HERO_SALT = wp.constant(wp.uint32(0x85EBCA6B))
+
+
+@wp.func
+def hero_stream_key(key: int) -> int:
+    """Seed of a sensor's wavelength stream, apart from its path stream ``key``
+    (:func:`sensor_stream_key`): sample j draws its hero wavelengths from
+    ``wp.rand_init(hero_stream_key(key), j)``, so they depend on neither the
+    batch layout nor how many numbers the path used."""
+    return int(hash_u32(wp.uint32(key) ^ _HERO_SALT) >> wp.uint32(1))
+
+
 # ---------------------------------------------------------------- frames
 
 

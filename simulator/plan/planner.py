@@ -19,12 +19,12 @@ sensor, in order:
 3. **paths** (``path``) otherwise: interreflection is part of the reading.
 
 Lights wholly behind a sensor's plane contribute nothing to it and are not
-sampled for it. One spectral channel is traced (with its radiometric and
-photometric totals); the plan says which transport the scene needs and why
-(:func:`simulator.spectra.transport.choose_transport`): ``grey`` is exact
-with one channel, ``per-emitter`` and ``spectral`` are not built yet, so
-such a scene is traced with its colours reduced to luminance grey. An
-explicit method overrides the plan for every sensor.
+sampled for it. The plan says which transport the scene needs and why
+(:func:`simulator.spectra.transport.choose_transport`): ``grey`` traces one
+channel (with its radiometric and photometric totals), exact; ``spectral``
+(a colour can change a reading) and ``per-emitter`` (several emitter
+spectra; its exact per-emitter tally is not built) trace 4 hero wavelengths
+per sample. An explicit method overrides the plan for every sensor.
 """
 
 from __future__ import annotations
@@ -387,14 +387,10 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
 
 
 def _transport(scene: Scene) -> tuple[str, int, str]:
-    """``(transport, channels traced, reason)``: grey is one channel, exact; the others are not built yet."""
+    """``(transport, channels traced, reason)``: grey is one channel, exact; the others trace hero wavelengths."""
     from simulator.spectra.transport import choose_transport
 
-    mode, needed, why = choose_transport(scene)
-    if mode == "grey":
-        return mode, 1, "materials and lights are grey (colours reduced to luminance grey): one spectral channel"
-    return mode, 1, (f"{mode} transport needed ({needed} channels: {why}), not built yet: "
-                     "one channel, colours reduced to luminance grey")
+    return choose_transport(scene)
 
 
 def format_plan(plan: Plan, max_rows: int = 40) -> str:

@@ -6,10 +6,12 @@ frame, so a config's sensor coordinates mean the same thing whatever units and
 up axis the stage was authored in.
 
 Emission is carried as a pair of numbers per emitter: the radiometric value
-(watts) and its photometric twin (lumens), because materials are grey and the
-two integrals are all a reading needs (no spectrum is traced where nothing is
-coloured). What the pair measures depends on the light kind; see
-:class:`Light`.
+(watts) and its photometric twin (lumens): where materials are grey the two
+integrals are all a reading needs (no spectrum is traced where nothing is
+coloured). Albedos are carried as their luminance grey and, for spectral
+transport, the linear sRGB it came from (``Geometry.albedo_rgb``); lights
+name their spectral shape and colour (``Light.spectrum``, ``Light.color``).
+What the pair measures depends on the light kind; see :class:`Light`.
 """
 
 from __future__ import annotations
@@ -95,6 +97,12 @@ class Light:
     texture_map: np.ndarray | None = None
     #: UsdLuxShapingAPI of a point, sphere, disk or rect light (None: unshaped)
     shaping: "LightShaping | None" = None
+    #: the emitter's spectral shape as the stage reader named it (an illuminant
+    #: name or a temperature, see :func:`simulator.spectra.sources.emitter_spectrum`);
+    #: None: the run's default
+    spectrum: str | float | None = None
+    #: linear sRGB ``color`` input (``emission`` holds its BT.709 grey), for spectral transport
+    color: tuple[float, float, float] = (1.0, 1.0, 1.0)
 
     @property
     def is_delta(self) -> bool:
@@ -192,6 +200,10 @@ class Geometry:
     prim : ndarray, shape (T,), int32
         Index into ``prim_names`` of the prim each triangle came from.
     prim_names : list of str
+    albedo_rgb : ndarray, shape (T, 3), float64, or None
+        The linear sRGB ``diffuseColor`` each ``albedo`` is the BT.709 grey
+        of, for spectral transport (reflectance uplift); None: grey
+        (``(a, a, a)``) everywhere.
     """
 
     points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
@@ -201,6 +213,7 @@ class Geometry:
     two_sided: np.ndarray = field(default_factory=lambda: np.zeros(0, bool))
     prim: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int32))
     prim_names: list[str] = field(default_factory=list)
+    albedo_rgb: np.ndarray | None = None
 
     @property
     def n_triangles(self) -> int:

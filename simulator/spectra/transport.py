@@ -8,9 +8,11 @@ Three cases, cheapest first (docs/DESIGN.md, "Spectral transport"):
     Exact.
 ``per-emitter``
     Grey albedos, several emitter spectra: transport is still
-    wavelength-independent, so each emitter can carry its response vector
-    (one value per requested response, the generalisation of today's
-    (radiometric, photometric) pair). Exact; R channels for R responses.
+    wavelength-independent, so each emitter could carry its response vector
+    (one value per requested response, the generalisation of the
+    (radiometric, photometric) pair), exactly. That tally is not built:
+    such scenes are traced like ``spectral`` ones (unbiased, with
+    wavelength noise).
 ``spectral``
     A coloured albedo (or coloured textured emitter) can change a reading:
     hero-wavelength transport, 4 wavelengths per path; every response is
@@ -42,7 +44,7 @@ def choose_transport(scene, n_responses: int = 2) -> tuple[str, int, str]:
         One of :data:`TRANSPORTS`.
     channels : int
         Values each path carries: 1 (grey; the photometric twin is then a
-        ratio), ``n_responses`` (per-emitter), :data:`HERO_WAVELENGTHS` (spectral).
+        ratio), :data:`HERO_WAVELENGTHS` otherwise.
     reason : str
         One line for ``probesim plan`` and the run record.
     """
@@ -54,6 +56,7 @@ def choose_transport(scene, n_responses: int = 2) -> tuple[str, int, str]:
                            "responses exact post hoc")
     if why.startswith("emitters have"):
         n = len(set(round(float(k), 9) for k in emitter_efficacies(scene)))
-        return "per-emitter", n_responses, (f"albedos are grey but {n} emitter spectra differ: each emitter "
-                                            f"carries its {n_responses} response values (exact)")
+        return "per-emitter", HERO_WAVELENGTHS, (f"albedos are grey but {n} emitter spectra differ; the exact "
+                                                 f"per-emitter tally is not built: {HERO_WAVELENGTHS} hero "
+                                                 "wavelengths per path")
     return "spectral", HERO_WAVELENGTHS, f"{why}; {HERO_WAVELENGTHS} hero wavelengths per path"

@@ -85,6 +85,13 @@ class SceneRec:
     eps: float  # ray-origin offset relative to max(1 m, |p|∞)
     ray_counts: wp.array(dtype=wp.int32)  # per kernel thread, when TraceParams.count_rays
     light_mask: wp.array(dtype=wp.int32)  # (sensors × n_lights): 0 = light culled for that sensor
+    # hero-wavelength transport (TraceParams.spectral; tables of simulator.spectra.hero, 401 grid nodes)
+    spectral_reflectance: wp.array2d(dtype=float)  # (colours × 401): ρ(λ)
+    spectral_face: wp.array(dtype=wp.int32)  # per triangle: its row of spectral_reflectance
+    spectral_emission: wp.array2d(dtype=float)  # (light records × 401): density per unit radiometric value
+    response_weights: wp.array2d(dtype=float)  # (responses × 401): a lane's weight 400·q/w
+    response_lanes: wp.array(dtype=wp.vec4)  # per kernel thread: this sample's spectral density per hero lane
+    colour_weights: wp.array2d(dtype=float)  # (3 × 401): a lane's weight of linear sRGB (cd/m²), for probe maps
 
 
 @wp.struct

@@ -46,6 +46,7 @@ class _GeometryBuilder:
         self._points: list[np.ndarray] = []
         self._tris: list[np.ndarray] = []
         self._albedo: list[np.ndarray] = []
+        self._albedo_rgb: list[np.ndarray] = []
         self._emission: list[np.ndarray] = []
         self._two_sided: list[np.ndarray] = []
         self._prim: list[np.ndarray] = []
@@ -53,8 +54,9 @@ class _GeometryBuilder:
         self._n_points = 0
 
     def add(self, name: str, points: np.ndarray, tris: np.ndarray, albedo,
-            emission, two_sided: bool) -> None:
-        """Add one prim's world triangles; ``albedo`` (T,) or scalar, ``emission`` (T, 2) or (2,)."""
+            emission, two_sided: bool, albedo_rgb=None) -> None:
+        """Add one prim's world triangles; ``albedo`` (T,) or scalar, ``emission`` (T, 2) or (2,),
+        ``albedo_rgb`` (T, 3) or (3,), default grey ``(a, a, a)``."""
         t = len(tris)
         if t == 0:
             return
@@ -64,6 +66,8 @@ class _GeometryBuilder:
         self._tris.append(tris.astype(np.int64) + self._n_points)
         self._n_points += len(points)
         self._albedo.append(np.broadcast_to(np.asarray(albedo, float), (t,)))
+        rgb = np.asarray(albedo, float)[..., None] if albedo_rgb is None else np.asarray(albedo_rgb, float)
+        self._albedo_rgb.append(np.broadcast_to(rgb, (t, 3)))
         self._emission.append(np.broadcast_to(np.asarray(emission, float), (t, 2)))
         self._two_sided.append(np.full(t, bool(two_sided)))
         self._prim.append(np.full(t, index, np.int32))
@@ -79,6 +83,7 @@ class _GeometryBuilder:
             two_sided=np.concatenate(self._two_sided),
             prim=np.concatenate(self._prim),
             prim_names=list(self._names),
+            albedo_rgb=np.concatenate(self._albedo_rgb),
         )
 
 
@@ -88,8 +93,8 @@ class _Part:
 
     ``points`` (P, 3) and ``tris`` (T, 3) are local (stage units, the prim's
     own frame); ``tris`` already carries the ``leftHanded`` re-winding.
-    ``albedo`` (T,) and ``emission`` (T, 2) are per triangle (GeomSubsets
-    may bind different materials to different faces).
+    ``albedo`` (T,), ``albedo_rgb`` (T, 3) and ``emission`` (T, 2) are per
+    triangle (GeomSubsets may bind different materials to different faces).
     """
 
     name: str
@@ -99,6 +104,7 @@ class _Part:
     emission: np.ndarray
     two_sided: bool
     is_light: bool
+    albedo_rgb: np.ndarray | None = None
 
 
 def _read_gprim(ctx: _Context, prim: Usd.Prim, geo: _GeometryBuilder) -> None:
@@ -120,12 +126,13 @@ def _gprim_part(ctx: _Context, prim: Usd.Prim) -> _Part | None:
     n_faces = len(counts)
     if is_light:
         surface = _geometry_light_surface(ctx, prim)
-        faces = (np.full(n_faces, surface[0]), np.zeros((n_faces, 2)), np.ones(n_faces, bool))
+        faces = (np.full(n_faces, surface[0]), np.zeros((n_faces, 2)), np.ones(n_faces, bool),
+                 np.tile(surface[2], (n_faces, 1)))
     else:
         faces = _face_surfaces(ctx, prim, n_faces)
     if faces is None:  # opacity 0 everywhere: it lets light through
         return None
-    albedo, emission, keep = faces
+    albedo, emission, keep, albedo_rgb = faces
     tris, fanned, face_of = _triangulate_faces(points, counts, indices)
     if fanned:
         ctx.warn(f"{prim.GetPath()}: {fanned} self-intersecting or non-planar face(s) fan-triangulated")
@@ -136,11 +143,12 @@ def _gprim_part(ctx: _Context, prim: Usd.Prim) -> _Part | None:
         tris = tris[:, [0, 2, 1]]
     return _Part(name=str(prim.GetPath()), points=points, tris=tris, albedo=albedo[face_of],
                  emission=emission[face_of], two_sided=bool(gprim.GetDoubleSidedAttr().Get(ctx.time)),
-                 is_light=is_light)
+                 is_light=is_light, albedo_rgb=albedo_rgb[face_of])
 
 
 def _face_surfaces(ctx: _Context, prim: Usd.Prim, n_faces: int):
-    """Per-face ``(albedo (F,), emission (F, 2), kept (F,))`` of a gprim; None when nothing is kept.
+    """Per-face ``(albedo (F,), emission (F, 2), kept (F,), albedo colour (F, 3))`` of a gprim; None when
+    nothing is kept.
 
     The prim's own bound material (or displayColor) covers every face; each
     ``GeomSubset`` of the ``materialBind`` family with a material bound to
@@ -152,8 +160,10 @@ def _face_surfaces(ctx: _Context, prim: Usd.Prim, n_faces: int):
     if not subsets:
         if base is None:
             return None
-        return np.full(n_faces, base[0]), np.tile(np.asarray(base[1], float), (n_faces, 1)), np.ones(n_faces, bool)
+        return (np.full(n_faces, base[0]), np.tile(np.asarray(base[1], float), (n_faces, 1)), np.ones(n_faces, bool),
+                np.tile(base[2], (n_faces, 1)))
     albedo = np.full(n_faces, base[0] if base else 0.0)
+    albedo_rgb = np.tile(base[2] if base else np.zeros(3), (n_faces, 1))
     emission = np.tile(np.asarray(base[1] if base else (0.0, 0.0), float), (n_faces, 1))
     keep = np.full(n_faces, base is not None)
     for subset in subsets:
@@ -169,8 +179,8 @@ def _face_surfaces(ctx: _Context, prim: Usd.Prim, n_faces: int):
         if surface is None:
             keep[faces] = False
             continue
-        albedo[faces], emission[faces], keep[faces] = surface[0], surface[1], True
-    return (albedo, emission, keep) if keep.any() else None
+        albedo[faces], emission[faces], keep[faces], albedo_rgb[faces] = surface[0], surface[1], True, surface[2]
+    return (albedo, emission, keep, albedo_rgb) if keep.any() else None
 
 
 def _add_placed(ctx: _Context, prim: Usd.Prim, part: _Part, a: np.ndarray, t: np.ndarray,
@@ -204,7 +214,8 @@ def _add_placed(ctx: _Context, prim: Usd.Prim, part: _Part, a: np.ndarray, t: np
         for k in range(n):
             mine = place == k
             emission[mine] = _geometry_light_emission(ctx, prim, world, tris[mine])
-    geo.add(name, world, tris, part.albedo[per_tri], emission, part.two_sided)
+    rgb = None if part.albedo_rgb is None else part.albedo_rgb[per_tri]
+    geo.add(name, world, tris, part.albedo[per_tri], emission, part.two_sided, rgb)
 
 
 def _gprim_polygons(ctx: _Context, prim: Usd.Prim):

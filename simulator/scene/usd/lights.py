@@ -24,7 +24,7 @@ from simulator.errors import UserError
 from simulator.units import luminance_grey
 from simulator.scene.model import Light, LightKind
 from simulator.scene.usd.context import _Context, _get, _not_uniform
-from simulator.scene.usd.materials import _albedo, _grey, _material_inputs
+from simulator.scene.usd.materials import _albedo, _albedo_colour, _grey, _material_inputs
 from simulator.scene.usd.shaping import has_shaping, read_shaping
 from simulator.scene.usd.tessellation import _parallelogram_areas
 from simulator.scene.usd.transforms import _axis_scales, _frame, _mean_scale, _world_affine
@@ -77,6 +77,10 @@ def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:
     if value is None:
         return None
     light.emission = ctx.emission(value, spectrum)
+    light.spectrum = spectrum
+    colour = np.atleast_1d(np.asarray(_get(ctx, UsdLux.LightAPI(prim).GetColorAttr()), float))
+    if colour.size == 3 and np.ptp(colour) > 0.0:
+        light.color = tuple(float(c) for c in colour)
     read_shaping(ctx, prim, light)
     return light
 
@@ -281,8 +285,8 @@ def _is_geometry_light(ctx: _Context, prim: Usd.Prim) -> bool:
     return True
 
 
-def _geometry_light_surface(ctx: _Context, prim: Usd.Prim) -> tuple[float, tuple[float, float]]:
-    """``(albedo, (0, 0))`` of a geometry light; its emission comes from its light inputs.
+def _geometry_light_surface(ctx: _Context, prim: Usd.Prim) -> tuple[float, tuple[float, float], np.ndarray]:
+    """``(albedo, (0, 0), albedo colour (3,))`` of a geometry light; its emission comes from its light inputs.
 
     The albedo is the bound UsdPreviewSurface's diffuseColor; 0 with no
     (usable) bound material or with ``light:materialSyncMode``
@@ -290,17 +294,17 @@ def _geometry_light_surface(ctx: _Context, prim: Usd.Prim) -> tuple[float, tuple
     """
     sync = UsdLux.LightAPI(prim).GetMaterialSyncModeAttr().Get(ctx.time)
     if str(sync) == "noMaterialResponse":
-        return 0.0, (0.0, 0.0)
+        return 0.0, (0.0, 0.0), np.zeros(3)
     inputs = _material_inputs(ctx, prim)
     if inputs is None:
-        return 0.0, (0.0, 0.0)
+        return 0.0, (0.0, 0.0), np.zeros(3)
     albedo = _albedo(ctx, prim, inputs)
     if float(inputs["opacity"][0]) < 1.0:
         ctx.warn(f"{prim.GetPath()}: opacity of a mesh light ignored (its surface is opaque)")
     if _grey(ctx, prim, inputs["emissiveColor"][0]) != 0.0:
         ctx.warn(f"{prim.GetPath()}: emissiveColor of the bound material ignored; "
                  "a mesh light emits what its light inputs (intensity, exposure, color) say")
-    return albedo, (0.0, 0.0)
+    return albedo, (0.0, 0.0), _albedo_colour(inputs, albedo)
 
 
 def _geometry_light_emission(ctx: _Context, prim: Usd.Prim, world: np.ndarray,

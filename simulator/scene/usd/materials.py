@@ -60,8 +60,8 @@ _IGNORED_DEFAULTS = {
 
 
 def _surface(ctx: _Context, prim: Usd.Prim,
-             bind_prim: Usd.Prim | None = None) -> tuple[float, tuple[float, float]] | None:
-    """``(albedo, emission pair)`` of a gprim, or None when opacity 0 removes it.
+             bind_prim: Usd.Prim | None = None) -> tuple[float, tuple[float, float], np.ndarray] | None:
+    """``(albedo, emission pair, albedo colour (3,))`` of a gprim, or None when opacity 0 removes it.
 
     ``bind_prim`` (default ``prim``) is where the material binding is
     resolved: a GeomSubset of ``prim`` for the subset's faces.
@@ -83,7 +83,16 @@ def _surface(ctx: _Context, prim: Usd.Prim,
     radiance = _grey(ctx, prim, rgb)
     if not (math.isfinite(radiance) and radiance >= 0.0):
         raise ctx.error(prim, f"emission {radiance:g} from {source} must be a non-negative number")
-    return albedo, ctx.emission(radiance)
+    return albedo, ctx.emission(radiance), _albedo_colour(inputs, albedo)
+
+
+def _albedo_colour(inputs: dict, albedo: float) -> np.ndarray:
+    """The linear sRGB ``diffuseColor`` whose grey is ``albedo``, shape (3,): ``(a, a, a)`` for a scalar
+    or grey input, and exactly (1, 1, 1) where the grey was read as 1 (spectral transport uplifts it)."""
+    c = np.atleast_1d(np.asarray(inputs["diffuseColor"][0], float))
+    if c.size != 3 or albedo == 1.0 or np.ptp(c) == 0.0:
+        return np.full(3, albedo)
+    return c.copy()
 
 
 def _albedo(ctx: _Context, prim: Usd.Prim, inputs: dict) -> float:
