@@ -8,7 +8,7 @@ through, 0 elsewhere (cosine directions cover the rest under MIS). So every
 reading must equal the one without the portal, and, in a black room lit by a
 uniform sky through an open window, Lambert's closed form
 E = L·∫_window cosθ dω (``simulator.reference.closed_forms.polygon_irradiance``,
-docs/REFERENCES.md §Polygon sources).
+docs/REFERENCES.md §Lambert's polygon formula).
 
 Statistical checks use fixed seeds and |x − truth| ≤ 4σ plus a relative
 slack of 2e-4 where a closed form is the truth: float32 spherical-rectangle
