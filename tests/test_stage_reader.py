@@ -743,10 +743,11 @@ def test_composition_error_is_a_warning(tmp_path):
 
 
 def test_unsupported_light_warns(tmp_path):
-    """Two PortalLights are not read: no light, one summary warning counting them."""
-    s = load_stage(write_stage(tmp_path, 'def PortalLight "Portal"\n{\n}\ndef PortalLight "P2"\n{\n}\n'))
+    """Two PluginLights are not read: no light, one summary warning counting
+    them. (PortalLights are read onto their dome: tests/test_portals_reader.py.)"""
+    s = load_stage(write_stage(tmp_path, 'def PluginLight "Plugin"\n{\n}\ndef PluginLight "P2"\n{\n}\n'))
     assert not s.lights
-    assert [w for w in s.warnings if "not read" in w] == ["s.usda: not read: 2 PortalLight"]
+    assert [w for w in s.warnings if "not read" in w] == ["s.usda: not read: 2 PluginLight"]
 
 
 def test_mesh_light_is_emitting_geometry(tmp_path):

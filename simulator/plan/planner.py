@@ -12,7 +12,10 @@ sensor, in order:
    samples each light once, and is cheapest for small and delta lights;
    ``mis`` adds a cosine-weighted direction, worth its extra ray when a light
    covers a large part of the sensor's sky (a dome, a near panel):
-   ``LARGE_SOURCE_SR`` decides (measured with ``probesim chart``). Before
+   ``LARGE_SOURCE_SR`` decides (measured with ``probesim chart``); and
+   ``mis`` wherever a DomeLight with portals reaches the sensor, since light
+   sampling draws such a dome only through its portals and the cosine
+   directions count the sky seen past them. Before
    either, ``exact`` — each RectLight's visible part in closed form, so
    penumbrae carry no noise — when every light it sees is a RectLight and
    few triangles stand in the way (:mod:`simulator.plan.exact_rule`);
@@ -63,8 +66,11 @@ def probe_method(scene: Scene, requested: str, component: str = "total") -> tupl
             return "path", "surfaces reflect (albedo > 0), so interreflection needs paths"
         return "light", "no surface reflects, so direct light sampling"
     if requested in MC_METHODS:
+        note = ""
+        if requested == "light" and reflects and (portal_dome := _portal_dome(scene, [])):
+            note = f"; light samples the DomeLight {portal_dome} only through its portals: sky seen past them is not counted"
         if requested != "path" and reflects:
-            return requested, f"as requested; direct light only: interreflection is ignored ({requested} does not bounce)"
+            return requested, f"as requested; direct light only: interreflection is ignored ({requested} does not bounce){note}"
         return requested, "as requested"
     raise UserError(f"simulation.method: {requested!r} is not a method (use auto, analytic, exact, light, bsdf, mis or path)")
 
@@ -318,6 +324,11 @@ def _largest_solid_angle(scene: Scene, sensor: Sensor, culled: list[str]) -> flo
     return best
 
 
+def _portal_dome(scene: Scene, culled: list[str]) -> str | None:
+    """The first DomeLight with portals that reaches the sensor (not culled), or None."""
+    return next((l.name for l in scene.lights if l.kind == LightKind.DOME and l.portals and l.name not in culled), None)
+
+
 def _patch_corners(s: Sensor) -> list[np.ndarray]:
     right = patch_width_axis(s.up, s.normal)
     hx, hy = 0.5 * s.size[0] * right, 0.5 * s.size[1] * s.up
@@ -362,6 +373,9 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
                 raise UserError(f"method exact cannot read sensor {s.name!r}: {why} (use light, mis, path or auto)")
             bounces = requested == "path"
             reason = "as requested" + ("" if bounces or not reflects else f"; {requested} ignores the interreflection this sensor sees")
+            if requested == "light" and (portal_dome := _portal_dome(scene, culled)):
+                reason += (f"; light samples the DomeLight {portal_dome} only through its portals: "
+                           "sky seen past them is not counted (mis and path count it)")
             plans.append(SensorPlan(s.name, kind, requested, bounces, reason, lights, culled, geometry))
             continue
         refusal = analytic_refusal(scene, s, bounds)
@@ -378,6 +392,10 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
             if big > LARGE_SOURCE_SR and s.kind in (SensorKind.IRRADIANCE, SensorKind.PATCH):
                 method = "mis"
                 reason = f"no surface it sees reflects ({why}); a light covers {big:.2g} sr of its sky: light and cosine sampling combined"
+            elif portal_dome := _portal_dome(scene, culled):
+                method = "mis"
+                reason = (f"no surface it sees reflects ({why}); the DomeLight {portal_dome} is light-sampled through its "
+                          "portals only: cosine directions count the sky seen past them")
             else:
                 method, reason = "light", f"no surface it sees reflects, so direct light is all ({why}): light sampling"
         else:

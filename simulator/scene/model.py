@@ -23,7 +23,7 @@ from typing import NamedTuple
 import numpy as np
 
 __all__ = [
-    "LightKind", "Light", "LightShaping", "Geometry", "SensorKind", "ColumnGroup", "SensorKindSpec", "SENSOR_SPECS", "SENSOR_KINDS",
+    "LightKind", "Light", "LightShaping", "Portal", "Geometry", "SensorKind", "ColumnGroup", "SensorKindSpec", "SENSOR_SPECS", "SENSOR_KINDS",
     "DEFAULT_PROBE_RESOLUTION", "MAX_PROBE_PIXELS", "patch_width_axis", "Sensor", "Scene",
 ]  # fmt: skip
 
@@ -103,6 +103,16 @@ class Light:
     spectrum: str | float | None = None
     #: linear sRGB ``color`` input (``emission`` holds its BT.709 grey), for spectral transport
     color: tuple[float, float, float] = (1.0, 1.0, 1.0)
+    #: DomeLight only: the UsdLux PortalLights that guide its sampling (see :class:`Portal`)
+    portals: tuple["Portal", ...] = ()
+
+    def __post_init__(self):
+        self.portals = tuple(self.portals)
+        if self.portals and self.kind != LightKind.DOME:
+            raise ValueError(f"{self.name}: only a DomeLight has portals, not a {self.kind.name} light")
+        for p in self.portals:
+            if not isinstance(p, Portal):
+                raise TypeError(f"{self.name}: a portal must be a Portal, not {type(p).__name__}")
 
     @property
     def is_delta(self) -> bool:
@@ -110,6 +120,71 @@ class Light:
         return self.kind == LightKind.POINT or (
             self.kind == LightKind.DISTANT and self.half_angle == 0.0
         )
+
+
+@dataclass(frozen=True)
+class Portal:
+    """A UsdLux PortalLight: a rectangle through which a dome's light is
+    sampled (a *sampling* hint: a dome with portals emits exactly what it
+    emits without them, so no reading depends on its portals).
+
+    The rectangle is ``width × height`` along ``frame[:, 0]`` and
+    ``frame[:, 1]`` about ``position``; it passes the dome's light toward
+    ``-frame[:, 2]`` (UsdLux: a portal emits along its local −Z), so it
+    guides receivers on that side of its plane.
+
+    Attributes
+    ----------
+    name : str
+        Prim path.
+    position : ndarray, shape (3,)
+        Centre, metres.
+    frame : ndarray, shape (3, 3)
+        Columns: unit X, Y, Z axes in the world frame, orthonormal and right-handed.
+    width, height : float
+        World size along X and Y, metres (> 0).
+
+    Raises
+    ------
+    ValueError
+        A size that is not a positive finite number, a position that is not
+        finite, or a frame that is not a right-handed orthonormal basis.
+    """
+
+    name: str
+    position: np.ndarray
+    frame: np.ndarray
+    width: float
+    height: float
+
+    def __post_init__(self):
+        pos = np.asarray(self.position, np.float64).reshape(-1)
+        frame = np.asarray(self.frame, np.float64)
+        if pos.shape != (3,) or not np.all(np.isfinite(pos)):
+            raise ValueError(f"portal {self.name}: position must be 3 finite numbers, not {self.position!r}")
+        if frame.shape != (3, 3) or not np.all(np.isfinite(frame)):
+            raise ValueError(f"portal {self.name}: frame must be a finite 3 x 3 matrix")
+        if not np.allclose(frame.T @ frame, np.eye(3), atol=1e-9) or np.linalg.det(frame) < 0:
+            raise ValueError(f"portal {self.name}: frame must be a right-handed orthonormal basis")
+        for what in ("width", "height"):
+            v = getattr(self, what)
+            if not (isinstance(v, (int, float, np.floating)) and np.isfinite(v) and v > 0):
+                raise ValueError(f"portal {self.name}: {what} must be a positive number of metres, not {v!r}")
+        object.__setattr__(self, "position", pos)
+        object.__setattr__(self, "frame", frame)
+        object.__setattr__(self, "width", float(self.width))
+        object.__setattr__(self, "height", float(self.height))
+
+    def corners(self) -> np.ndarray:
+        """The four corners, shape (4, 3), metres, counter-clockwise about +Z."""
+        hx = 0.5 * self.width * self.frame[:, 0]
+        hy = 0.5 * self.height * self.frame[:, 1]
+        return self.position + np.array([-hx - hy, hx - hy, hx + hy, -hx + hy])
+
+    def faces(self, p) -> bool:
+        """Whether point p (metres) lies on the side the portal passes light
+        toward (strictly in front of its plane along −Z)."""
+        return float((np.asarray(p, float) - self.position) @ self.frame[:, 2]) < 0.0
 
 
 @dataclass

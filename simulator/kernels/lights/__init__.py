@@ -30,6 +30,7 @@ DISK           uniform in area                                        d²/(A·co
 DISTANT        exact (angle 0, delta) or uniform in its cone          1/(2π(1−cosθmax))
 DOME           cosine lobe about the receiver normal                  cosθ/π
 DOME (map)     texel ∝ value·sinθ, uniform in (u, v) inside it        pdf_uv/(2π² sinθ)
+DOME (portal)  portal ∝ projected solid angle Π, then uniform in it   Σ_k (Π_k/ΣΠ)/Ω_k through portals, 0 elsewhere
 CYLINDER       uniform in area on the side, front-facing points       d²/(A·cosθl)
 EMISSIVE       triangle ∝ its power, then uniform in area             P(tri)·d²/(A·|cosθl|)
 =============  =====================================================  ==================

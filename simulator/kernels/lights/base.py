@@ -38,6 +38,20 @@ RAY_INF = wp.constant(1.0e30)
 
 
 @wp.struct
+class PortalRec:
+    """One UsdLux PortalLight of a dome (:class:`simulator.scene.model.Portal`):
+    the rectangle ``corner + [0, width]·ex + [0, height]·ey``, passing the
+    dome's light toward −ez."""
+
+    corner: wp.vec3
+    ex: wp.vec3
+    ey: wp.vec3
+    ez: wp.vec3
+    width: float
+    height: float
+
+
+@wp.struct
 class LightRec:
     """One light on the device (see :class:`simulator.scene.model.Light`)."""
 
@@ -64,6 +78,9 @@ class LightRec:
     shaped: int
     shaping: wp.vec4  # (cone half-angle rad, cone softness, focus, focus tint)
     ies_scale: float  # > 0: × ies_scale·I(θ, φ), I bilinear in map (map_h rows θ 0…180°, map_w columns φ 0…360°)
+    # dome with UsdLux PortalLights (dome.py): sampled through them where they face the receiver
+    n_portals: int
+    portals: wp.array(dtype=PortalRec)
 
 
 @wp.struct

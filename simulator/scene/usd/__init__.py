@@ -79,8 +79,15 @@ Lights
     with a warning that it clips bright sources. It is read into
     ``Light.texture_map`` as luminance grey (BT.709 Y) and scales the dome's
     emission texel by texel (see :mod:`simulator.io.latlong` for the pixel
-    <-> direction map). Portal and plugin lights are not read (counted in
-    the summary warning). A stage with no light at all (no UsdLux light, no
+    <-> direction map). A PortalLight (``inputs:width`` x ``inputs:height``
+    in its local XY plane, times the transform's X and Y scales, passing
+    light toward its local -Z) is read onto the DomeLights whose ``portals``
+    relationship targets it (``Light.portals``, see
+    :mod:`simulator.scene.usd.portals`): it guides the dome's sampling and
+    changes no reading. A portal no dome targets, or of zero size, is
+    ignored with a warning; a negative size, or a ``portals`` target that is
+    missing or not a PortalLight, is an error. Plugin lights are not read
+    (counted in the summary warning). A stage with no light at all (no UsdLux light, no
     emitting triangle) is refused: every reading would be zero.
 Geometry lights
     A Mesh, Cube or Sphere with ``MeshLightAPI`` (or ``LightAPI`` applied
@@ -183,6 +190,7 @@ from simulator.scene.usd.enclosures import sealed_light
 from simulator.scene.usd.instancers import _read_instancer
 from simulator.scene.usd.lights import DOME_TEXTURE_FORMATS, _is_supported_light, _read_light, _require_light  # noqa: F401
 from simulator.scene.usd.materials import DEFAULT_ALBEDO, _finish_warnings
+from simulator.scene.usd.portals import attach_portals, is_portal, read_portal
 from simulator.scene.usd.sensors import DEFAULT_PROBE_RESOLUTION, SENSOR_ATTR_PREFIX, SENSOR_KINDS, _is_sensor, _read_sensor
 from simulator.scene.usd.stage import (
     _check_options,
@@ -344,6 +352,8 @@ def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light],
     geo = _GeometryBuilder()
     lights: list[Light] = []
     sensors: list[Sensor] = []
+    domes: list[tuple[Light, Usd.Prim]] = []
+    portals = {}
     walk = _traverse(stage)
     for prim in walk:
         if _is_sensor(prim):
@@ -355,6 +365,9 @@ def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light],
             _read_instancer(ctx, prim, geo)
         elif prim.IsA(UsdGeom.Gprim):
             _read_gprim(ctx, prim, geo)  # MeshLightAPI prims too: geometry that emits
+        elif is_portal(prim):
+            if (portal := read_portal(ctx, prim)) is not None:
+                portals[portal.name] = portal
         elif prim.HasAPI(UsdLux.LightAPI):
             if not _is_supported_light(prim):
                 ctx.not_read[prim.GetTypeName() or "untyped light"] += 1
@@ -362,4 +375,7 @@ def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light],
             light = _read_light(ctx, prim)
             if light is not None:
                 lights.append(light)
+                if light.kind == LightKind.DOME:
+                    domes.append((light, prim))
+    attach_portals(ctx, stage, domes, portals)
     return geo.build(), lights, sensors
