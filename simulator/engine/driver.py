@@ -26,13 +26,13 @@ from simulator.engine.adaptive import StoppingRule, run_batches
 from simulator.engine.device import DeviceScene, cuda_available, resolve_device, warp, warp_version
 from simulator.engine.fanout import fan_out
 from simulator.engine.methods import COMPONENTS, METHOD_FLAGS
-from simulator.engine.stats import RunningStats
+from simulator.engine.stats import GroupStats, RunningStats
 from simulator.errors import UserError
 from simulator.interrupts import StopFlag
 from simulator.scene.model import MAX_PROBE_PIXELS, Scene, Sensor, SensorKind
 
 __all__ = [
-    "COMPONENTS", "METHOD_FLAGS", "cuda_available", "warp_version", "Engine", "EngineResult", "Progress",
+    "COMPONENTS", "METHOD_FLAGS", "cuda_available", "warp_version", "Engine", "EngineResult", "LightGroups", "Progress",
     "resolve_device",
 ]  # fmt: skip
 
@@ -56,6 +56,32 @@ class Progress:
     samples: int
     elapsed_s: float
     eta_s: float | None
+
+
+@dataclass
+class LightGroups:
+    """Which light group each of the scene's lights belongs to, for one-pass group tallies.
+
+    Attributes
+    ----------
+    light_group : ndarray of int, shape (L,)
+        Per light of ``Engine.scene.lights``: its group in ``[0, n_groups)``,
+        −1 for none (its light counts in the total only).
+    n_groups : int
+        G.
+    levels : ndarray, shape (J, G), optional
+        Dimming vectors the group readings will be recombined into. An
+        adaptive run then stops each sensor when every recombined reading
+        ``d_jᵀ Ê`` meets the target (with its standard error
+        ``sqrt(d_jᵀ C d_j)``); without, when the total does.
+    emissive_group : int
+        Group of the emissive surfaces (−1: none).
+    """
+
+    light_group: np.ndarray
+    n_groups: int
+    levels: np.ndarray | None = None
+    emissive_group: int = -1
 
 
 @dataclass
@@ -98,6 +124,9 @@ class EngineResult:
     methods: list[str] | None = None  #: per sensor, when a plan mixed methods (see run.run_plan)
     unfinished: np.ndarray | None = None
     interrupted: bool = False
+    #: with light groups: each group's reading (G, S, 2) and the covariance of those estimates (S, 2, G, G)
+    group_mean: np.ndarray | None = None
+    group_cov: np.ndarray | None = None
 
 
 class Engine:
@@ -138,6 +167,8 @@ class Engine:
             # compile (or load from the kernel cache) before worker threads launch
             wp.load_module(K, device=self.device)
             self._device_scene = DeviceScene(self.scene, self.sensors, self.device)
+            with wp.ScopedDevice(self.device):  # placeholders for the group-tally arrays of TraceParams
+                self._no_groups = (wp.zeros(1, dtype=wp.int32), wp.zeros(1, dtype=wp.vec2), wp.zeros(1, dtype=wp.vec2d))
             if self._light_mask is not None:
                 self._device_scene.set_light_mask(self._light_mask)
         return self._device_scene
@@ -185,6 +216,11 @@ class Engine:
         p.count_rays = 0
         p.thread = 0
         p.mask_row = -1
+        p.group_tally = 0
+        p.n_groups = 0
+        ig, v2, v2d = self._no_groups
+        p.light_group, p.group_scratch = ig, v2
+        p.group_shift = p.group_sum = p.group_cross = v2d
         return p
 
     # ------------------------------------------------------------ sensors
@@ -192,7 +228,9 @@ class Engine:
     def _launch(self, params, sensor_ids: np.ndarray, first: np.ndarray, count: np.ndarray):
         """Draw count[i] samples of sensor_ids[i], starting at sample first[i].
 
-        Returns (sensors, counts, means, m2s, non_finite) for the batch."""
+        Returns (sensors, counts, means, m2s, non_finite) for the batch, and
+        with group tallies on (``params.group_tally``) the per-sensor group
+        means (S', C, G) and co-moments (S', C, G, G) after them."""
         wp = warp()
         nblk = (count + BLOCK - 1) // BLOCK
         t_sensor = np.repeat(sensor_ids, nblk).astype(np.int32)
@@ -212,6 +250,12 @@ class Engine:
             s1 = wp.empty(n, dtype=wp.vec2d)
             s2 = wp.empty(n, dtype=wp.vec2d)
             bad = wp.empty(n, dtype=wp.int32)
+            n_g = int(params.n_groups)
+            if params.group_tally:
+                params.group_scratch = wp.zeros(n * n_g, dtype=wp.vec2)
+                params.group_shift = wp.zeros(n * n_g, dtype=wp.vec2d)
+                params.group_sum = wp.zeros(n * n_g, dtype=wp.vec2d)
+                params.group_cross = wp.zeros(n * n_g * n_g, dtype=wp.vec2d)
 
             def run(offset: int, dim: int):
                 wp.launch(
@@ -227,7 +271,13 @@ class Engine:
             if params.count_rays:
                 self.rays_traced += int(rec.ray_counts.numpy().sum())
             nonfinite = np.add.reduceat(bad.numpy(), np.flatnonzero(np.r_[True, t_sensor[1:] != t_sensor[:-1]]))
-        return (*out, nonfinite)
+            if not params.group_tally:
+                return (*out, nonfinite)
+            _, _, g_mean, g_m2 = GroupStats.reduce_blocks(
+                t_sensor, t_count, params.group_shift.numpy().reshape(n, n_g, 2), params.group_sum.numpy().reshape(n, n_g, 2),
+                params.group_cross.numpy().reshape(n, n_g, n_g, 2),
+            )  # fmt: skip
+        return (*out, nonfinite, g_mean, g_m2)
 
     def _run_analytic(self, sensor_ids: np.ndarray) -> EngineResult:
         """Closed-form readings (the caller has checked they apply): exact up
@@ -296,6 +346,7 @@ class Engine:
         sensor_ids: np.ndarray | None = None,
         confidence: float = 0.95,
         stop: StopFlag | None = None,
+        groups: LightGroups | None = None,
     ) -> EngineResult:
         """Estimate every sensor with ``method`` (analytic, exact, light, bsdf, mis or path).
 
@@ -314,6 +365,12 @@ class Engine:
         the result holds the whole batches drawn so far, ``interrupted`` is
         True and ``unfinished`` marks the sensors stopped short. Without
         ``stop``, Ctrl-C raises ``KeyboardInterrupt`` once the batch is done.
+
+        ``groups``: also tally every sample's light per light group on the
+        same paths (one pass), giving ``group_mean`` and ``group_cov``; with
+        ``groups.levels`` an adaptive run stops on the recombined readings
+        (see :class:`LightGroups`). Closed-form methods read each group on
+        its own (exact, covariance 0). See :meth:`run_groups`.
         """
         if component not in COMPONENTS:
             raise UserError(f"simulation.component: {component!r} is not one of {', '.join(COMPONENTS)}")
@@ -322,6 +379,8 @@ class Engine:
         if any(s.spec.reader != "estimate" for s in self.sensors):
             raise ValueError("probe sensors are read by Engine.run_probes, not Engine.run")
         ids_all = np.arange(len(self.sensors)) if sensor_ids is None else np.asarray(sensor_ids, np.int64)
+        if groups is not None and method in ("analytic", "exact"):
+            return self._closed_form_groups(method, ids_all, groups)
         if method == "analytic":
             return self._run_analytic(ids_all)
         if method == "exact":
@@ -333,6 +392,10 @@ class Engine:
         params.count_rays = 1 if count_rays else 0
         self.rays_traced = 0  # shadow and path rays, counted when count_rays
         stats = RunningStats(n_s)
+        gstats = None
+        if groups is not None:
+            gstats = GroupStats(n_s, groups.n_groups)
+            self._set_groups(params, groups)
         seconds = np.zeros(n_s)
         nonfinite = np.zeros(n_s, np.int64)
         adaptive = rel_error is not None
@@ -347,11 +410,18 @@ class Engine:
 
         def step(ids, first, count):
             tb = time.perf_counter()
-            sens, cnt, mean, m2, bad = self._launch(params, ids, first, count)
+            sens, cnt, mean, m2, bad, *grp = self._launch(params, ids, first, count)
             dt = time.perf_counter() - tb
             stats.merge(sens, cnt, mean, m2)
+            if gstats is not None:
+                gstats.merge(sens, cnt, *grp)
             seconds[sens] += dt * cnt / cnt.sum()
             nonfinite[sens] += bad
+
+        def measure():
+            if gstats is None or groups.levels is None:
+                return stats.mean, stats.stderr()
+            return _recombined(gstats.mean, gstats.cov(), groups.levels)
 
         def report(count, active, elapsed):
             if progress is None:
@@ -365,7 +435,7 @@ class Engine:
         _, met = run_batches(
             step, active, want, cap, block=BLOCK,
             rule=StoppingRule(rel_error, abs_error, confidence) if adaptive else None,
-            measure=lambda: (stats.mean, stats.stderr()), time_limit_s=time_limit_s, t_start=t0, report=report,
+            measure=measure, time_limit_s=time_limit_s, t_start=t0, report=report,
             stop=stop,
         )  # fmt: skip
         wall = time.perf_counter() - t0
@@ -388,7 +458,58 @@ class Engine:
             warnings=warnings,
             unfinished=active.copy(),
             interrupted=stop is not None and stop.requested,
+            group_mean=None if gstats is None else np.transpose(gstats.mean, (2, 0, 1)).copy(),
+            group_cov=None if gstats is None else gstats.cov(),
         )
+
+    def run_groups(self, method: str, groups: LightGroups, **kw) -> EngineResult:
+        """Each light group's reading of every sensor, and their covariance, from one pass.
+
+        Every sample's light is tallied per group as the kernel adds it up
+        (``light_contribution``), so the groups share paths: the pass costs
+        about one :meth:`run`, and the per-sample group vectors give the full
+        covariance between groups. ``mean`` and ``stderr`` are the total's
+        (all lights at their authored level); ``group_mean`` (G, S, 2) and
+        ``group_cov`` (S, 2, G, G) the groups'. Keywords as for :meth:`run`.
+        """
+        return self.run(method, groups=groups, **kw)
+
+    def _set_groups(self, params, groups: LightGroups) -> None:
+        wp = warp()
+        n_l = int(self._dev.rec.n_lights)
+        lg = np.full(max(n_l, 1), -1, np.int32)
+        lg[: len(groups.light_group)] = groups.light_group
+        if self.emissive_light >= 0:
+            lg[self.emissive_light] = groups.emissive_group
+        params.group_tally = 1
+        params.n_groups = int(groups.n_groups)
+        with wp.ScopedDevice(self.device):
+            params.light_group = wp.array(lg, dtype=wp.int32)
+
+    def _closed_form_groups(self, method: str, ids: np.ndarray, groups: LightGroups) -> EngineResult:
+        """Closed-form readings per light group: each group's lights alone (exact, so the covariance is 0)."""
+        from dataclasses import replace
+
+        n_s, n_g = len(self.sensors), groups.n_groups
+        g_mean = np.zeros((n_g, n_s, 2))
+        wall = 0.0
+        for g in range(n_g):
+            keep = np.flatnonzero(np.asarray(groups.light_group) == g)
+            if not len(keep):
+                continue
+            sub = replace(self.scene, lights=[self.scene.lights[i] for i in keep])
+            eng = Engine(sub, self.sensors, device=self.device, threads=self.threads)
+            if self._light_mask is not None:
+                eng.set_light_mask(self._light_mask[:, keep])
+            r = eng.run(method, samples=0, seed=0, sensor_ids=ids)
+            g_mean[g] = r.mean
+            wall += r.wall_s
+        return EngineResult(
+            method=method, device=self.device, mean=g_mean.sum(axis=0), stderr=np.zeros((n_s, 2)),
+            samples=np.zeros(n_s, np.int64), seconds=np.full(n_s, wall / max(len(ids), 1)), target_met=None,
+            non_finite=np.zeros(n_s, np.int64), wall_s=wall, warnings=list(self.warnings), group_mean=g_mean,
+            group_cov=np.zeros((n_s, 2, n_g, n_g)),
+        )  # fmt: skip
 
     # ------------------------------------------------------------ probes
 
@@ -557,3 +678,14 @@ class Engine:
                                       target_met))  # fmt: skip
             out[-1].interrupted = bool(active[0])
         return out
+
+
+def _recombined(mean: np.ndarray, cov: np.ndarray, levels: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Readings ``d_jᵀ x̄`` and standard errors ``sqrt(d_jᵀ C d_j)`` of the dimming vectors ``levels`` (J, G),
+    from group means (S, C, G) and covariance (S, C, G, G); both (S, J·C), the stopping rule's channels."""
+    d = np.asarray(levels, np.float64)
+    val = np.einsum("jg,scg->sjc", d, mean)
+    with np.errstate(invalid="ignore"):
+        var = np.einsum("jg,scgh,jh->sjc", d, cov, d)
+    se = np.sqrt(np.where(np.isnan(var), np.inf, np.maximum(var, 0.0)))
+    return val.reshape(len(val), -1), se.reshape(len(se), -1)

@@ -113,6 +113,14 @@ class TraceParams:
     count_rays: int  # 1: count traced rays per thread in scene.ray_counts (benchmarks)
     thread: int  # set by the kernel for each thread
     mask_row: int  # set by the kernel: the sensor whose light mask applies at vertex 0, −1 for none
+    # -- light-group tallies (see light_contribution and fold_group_sample); unused while group_tally is 0
+    group_tally: int  # 1: tally each sample's light per group as well as its total
+    n_groups: int  # G
+    light_group: wp.array(dtype=wp.int32)  # per light record: its group in [0, G), −1 for none
+    group_scratch: wp.array(dtype=wp.vec2)  # (threads × G): this sample's light per group
+    group_shift: wp.array(dtype=wp.vec2d)  # (threads × G): K_g, the thread's first sample per group
+    group_sum: wp.array(dtype=wp.vec2d)  # (threads × G): Σ(x_g − K_g)
+    group_cross: wp.array(dtype=wp.vec2d)  # (threads × G × G): Σ(x_g − K_g)(x_h − K_h), h ≤ g (lower triangle)
 
 
 @wp.func
@@ -476,8 +484,51 @@ def light_contribution(scene: SceneRec, params: TraceParams, li: int, value: wp.
     """Light ``li``'s share ``value`` (W and lm channels) of one sample, as
     the trace tallies it. Every place a sample adds emitted light goes
     through here, so per-light tallies (light groups) and per-light scalings
-    have one hook; today it passes the value on unchanged."""
+    have one hook. With ``params.group_tally`` the value is also added to
+    this sample's slot of the light's group, ``group_scratch[thread·G +
+    group(li)]`` (a light in no group, or ``li`` = −1, adds to none); the
+    value itself passes on unchanged."""
+    if params.group_tally != 0 and li >= 0:
+        g = params.light_group[li]
+        if g >= 0:
+            k = params.thread * params.n_groups + g
+            params.group_scratch[k] = params.group_scratch[k] + value
     return value
+
+
+@wp.func
+def clear_group_sample(params: TraceParams, t: int):
+    """Zero thread ``t``'s group slots before a sample."""
+    for g in range(params.n_groups):
+        params.group_scratch[t * params.n_groups + g] = wp.vec2(0.0, 0.0)
+
+
+@wp.func
+def fold_group_sample(params: TraceParams, t: int, first: int, keep: int):
+    """Add thread ``t``'s sample, per group, to its shifted sums.
+
+    Notes
+    -----
+    With x_g the sample's light from group g and K_g the thread's first
+    sample of it, the thread keeps S_g = Σ(x_g − K_g) and the lower triangle
+    of P_gh = Σ(x_g − K_g)(x_h − K_h) (per channel, float64), from which the
+    host forms each block's mean and co-moment (:mod:`simulator.engine.stats`).
+    A non-finite sample (``keep`` 0) counts as 0 in every group, as it does
+    in the total."""
+    n_g = params.n_groups
+    base = t * n_g
+    for g in range(n_g):
+        if keep == 0:
+            params.group_scratch[base + g] = wp.vec2(0.0, 0.0)
+        if first != 0:
+            params.group_shift[base + g] = wp.vec2d(params.group_scratch[base + g])
+    for g in range(n_g):
+        dg = wp.vec2d(params.group_scratch[base + g]) - params.group_shift[base + g]
+        params.group_sum[base + g] = params.group_sum[base + g] + dg
+        for h in range(g + 1):
+            dh = wp.vec2d(params.group_scratch[base + h]) - params.group_shift[base + h]
+            k = (base + g) * n_g + h
+            params.group_cross[k] = params.group_cross[k] + wp.cw_mul(dg, dh)
 
 
 @wp.func
@@ -751,7 +802,9 @@ def estimate_kernel(
     writes shifted sums Σ(x − K) and Σ(x − K)² with K its first sample, so
     that a constant estimator (a lone point light) has exactly zero variance
     and float64 accumulation does not cancel. Non-finite samples are counted
-    in ``out_bad`` and left out of the sums (the host reports them)."""
+    in ``out_bad`` and left out of the sums (the host reports them).
+    With ``params.group_tally`` the same samples are also summed per light
+    group (:func:`fold_group_sample`); off, that costs one branch a sample."""
     t = wp.tid() + offset
     sid = thread_sensor[t]
     first = thread_first_sample[t]
@@ -765,10 +818,16 @@ def estimate_kernel(
     prm.thread = t
     prm.mask_row = wp.where(s.cull != 0, sid, -1)
     for j in range(thread_count[t]):
+        if prm.group_tally != 0:
+            clear_group_sample(prm, t)
         v = sample_sensor(scene, s, prm, wp.rand_init(key, first + j))
+        keep = int(1)
         if not (wp.isfinite(v[0]) and wp.isfinite(v[1])):
             bad += 1
+            keep = 0
             v = wp.vec2(0.0, 0.0)
+        if prm.group_tally != 0:
+            fold_group_sample(prm, t, wp.where(j == 0, 1, 0), keep)
         x = wp.vec2d(wp.float64(v[0]), wp.float64(v[1]))
         if j == 0:
             shift = x

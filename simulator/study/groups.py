@@ -56,10 +56,7 @@ import numpy as np
 
 from simulator.scene.model import Geometry, Scene, Sensor
 
-__all__ = ["GroupReadings", "trace_groups", "group_scene", "derive_seed", "group_targets", "MAX_GROUP_REL_ERROR"]
-
-#: loosest relative target a group trace is given
-MAX_GROUP_REL_ERROR = 0.5
+__all__ = ["GroupReadings", "trace_groups", "group_scene", "derive_seed"]
 
 
 def derive_seed(*parts) -> int:
@@ -84,8 +81,9 @@ class GroupReadings:
     cov : ndarray, shape (S, 2, G, G)
         Covariance of the group estimates per sensor and channel.
     samples : ndarray, shape (G, S), int64
+        Samples per sensor (one pass: the same for every group).
     trace_s : ndarray, shape (G,)
-        Wall-clock seconds per group trace.
+        Wall-clock seconds of the pass, shared evenly among the groups (their sum is the pass's time).
     """
 
     names: list[str]
@@ -112,56 +110,9 @@ def group_scene(scene: Scene, light_names: list[str]) -> Scene:
     return replace(scene, geometry=geom, lights=[l for l in scene.lights if l.name in keep], sensors=[], warnings=[])
 
 
-def group_targets(pilot: np.ndarray, scenarios: list[dict[str, float]], names: list[str], rel_error: float) -> np.ndarray:
-    """Per-group, per-sensor relative targets ``rel_g`` (G, S) from pilot readings (see Notes of the module).
-
-    Parameters
-    ----------
-    pilot : ndarray, shape (G, S, 2)
-        Pilot group readings.
-    scenarios : list of dict
-        Dimming vectors (group name → level) of the trace group.
-    names : list of str
-        Group order of ``pilot``.
-    rel_error : float
-        The recombined readings' target.
-    """
-    m = np.abs(pilot).max(axis=2)  # both channels are proportional for grey scenes; take the larger
-    d = np.array([[float(sc.get(n, 0.0)) for n in names] for sc in scenarios])  # (J, G)
-    e = np.einsum("jg,gs->js", d, m)  # (J, S)
-    out = np.full(m.shape, np.inf)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        for g in range(len(names)):
-            lit = d[:, g] > 0
-            if not lit.any():
-                continue
-            ratio = e[lit] / (d[lit, g][:, None] * m[g][None, :])  # (J_lit, S), >= 1
-            out[g] = np.nanmin(np.where(np.isfinite(ratio), ratio, np.inf), axis=0)
-    rel = rel_error * np.sqrt(np.maximum(out, 1.0))
-    steps = np.floor(2.0 * np.log2(np.minimum(rel, MAX_GROUP_REL_ERROR) / rel_error) + 1e-9)
-    return np.minimum(rel_error * 2.0 ** (np.maximum(steps, 0.0) / 2.0), MAX_GROUP_REL_ERROR)
-
-
-def _run_targets(engine, plan, sim, rel: np.ndarray):
-    """Like :func:`simulator.pipeline.run_plan`, with a relative target per sensor (run in groups of equal target)."""
-    n = len(plan.sensors)
-    mean, stderr, samples = np.zeros((n, 2)), np.zeros((n, 2)), np.zeros(n, np.int64)
-    engine.set_light_mask(plan.light_mask([l.name for l in engine.scene.lights]))
-    for method, ids in plan.groups().items():
-        for r in np.unique(rel[ids]) if method != "analytic" else [None]:
-            sub = ids if r is None else ids[rel[ids] == r]
-            res = engine.run(
-                method, samples=sim.samples, seed=sim.seed, rel_error=None if r is None else float(r), abs_error=sim.abs_error,
-                max_samples=sim.sample_cap, time_limit_s=None, max_depth=sim.max_depth, component=sim.component,
-                sensor_ids=sub, confidence=sim.confidence,
-            )  # fmt: skip
-            mean[sub], stderr[sub], samples[sub] = res.mean[sub], res.stderr[sub], res.samples[sub]
-    return mean, stderr, samples
-
-
-def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str]], sim, seeds: dict[str, int],
+def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str]], sim, seed: int,
                  threads: int = 0, scenarios: list[dict[str, float]] | None = None) -> GroupReadings:  # fmt: skip
-    """Trace each light group's contribution to every sensor.
+    """Trace every light group's contribution to every sensor in one pass.
 
     Parameters
     ----------
@@ -171,56 +122,47 @@ def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str
     groups : dict of str to list of str
         Group name → light prim paths, in the order the result keeps.
     sim : SimulationConfig-like
-        Samples, method, adaptive target; its ``seed`` is replaced per group.
-    seeds : dict of str to int
-        Seed per group (independent streams).
+        Samples, method, adaptive target; its ``seed`` is replaced by ``seed``.
+    seed : int
+        Seed of the pass (all groups share its paths).
     threads : int
         CPU worker threads of the engine; 0 = all cores.
     scenarios : list of dict, optional
         The dimming vectors these readings will be recombined into. With an
-        adaptive ``sim``, each group's target follows from them (see Notes of
-        the module); without, every group must meet ``rel_error`` on its own.
+        adaptive ``sim`` a sensor stops when every one of them meets
+        ``rel_error`` (see Notes of the module); without, when the total does.
 
     Returns
     -------
     GroupReadings
-        With a diagonal covariance (independent traces; see Notes of the module).
+        With the full covariance between groups (shared paths).
     """
-    from simulator.engine.driver import Engine
-    from simulator.pipeline import run_plan
+    from simulator.engine.driver import Engine, LightGroups
     from simulator.plan.planner import make_plan
 
     names = list(groups)
     n_g, n_s = len(names), len(sensors)
-    mean = np.zeros((n_g, n_s, 2))
-    stderr = np.zeros((n_g, n_s, 2))
-    samples = np.zeros((n_g, n_s), np.int64)
-    trace_s = np.zeros(n_g)
-    runs = []
-    for k, name in enumerate(names):
-        sub = group_scene(scene, groups[name])
-        t0 = time.perf_counter()
-        engine = Engine(sub, sensors, device=sim.device, threads=threads)
-        plan = make_plan(sub, sensors, sim.method, sim.component)
-        runs.append((engine, plan, replace(sim, seed=int(seeds[name]))))
-        trace_s[k] = time.perf_counter() - t0
+    owner = {l: k for k, n in enumerate(names) for l in groups[n]}
+    t0 = time.perf_counter()
+    sub = group_scene(scene, list(owner))
+    engine = Engine(sub, sensors, device=sim.device, threads=threads)
+    plan = make_plan(sub, sensors, sim.method, sim.component)
+    light_group = np.array([owner[l.name] for l in sub.lights], np.int64)
+    levels = None
     if sim.adaptive and scenarios:
-        for k, (engine, plan, s) in enumerate(runs):
-            t0 = time.perf_counter()
-            mean[k] = run_plan(engine, plan, replace(s, rel_error=None)).mean
-            trace_s[k] += time.perf_counter() - t0
-        rel = group_targets(mean, scenarios, names, sim.rel_error)
-        for k, (engine, plan, s) in enumerate(runs):
-            t0 = time.perf_counter()
-            mean[k], stderr[k], samples[k] = _run_targets(engine, plan, s, rel[k])
-            trace_s[k] += time.perf_counter() - t0
-    else:
-        for k, (engine, plan, s) in enumerate(runs):
-            t0 = time.perf_counter()
-            res = run_plan(engine, plan, s)
-            trace_s[k] += time.perf_counter() - t0
-            mean[k], stderr[k], samples[k] = res.mean, res.stderr, res.samples
+        levels = np.array([[float(sc.get(n, 0.0)) for n in names] for sc in scenarios])
+    lg = LightGroups(light_group, n_g, levels)
+    mean = np.zeros((n_g, n_s, 2))
     cov = np.zeros((n_s, 2, n_g, n_g))
-    idx = np.arange(n_g)
-    cov[:, :, idx, idx] = np.transpose(stderr**2, (1, 2, 0))
-    return GroupReadings(names, mean, stderr, cov, samples, trace_s)
+    samples = np.zeros(n_s, np.int64)
+    engine.set_light_mask(plan.light_mask([l.name for l in sub.lights]))
+    for method, ids in plan.groups().items():
+        r = engine.run_groups(
+            method, lg, samples=sim.samples, seed=int(seed), rel_error=sim.rel_error, abs_error=sim.abs_error,
+            max_samples=sim.sample_cap, time_limit_s=None, max_depth=sim.max_depth, component=sim.component,
+            sensor_ids=ids, confidence=sim.confidence,
+        )  # fmt: skip
+        mean[:, ids], cov[ids], samples[ids] = r.group_mean[:, ids], r.group_cov[ids], r.samples[ids]
+    stderr = np.sqrt(np.maximum(np.transpose(np.diagonal(cov, axis1=2, axis2=3), (2, 0, 1)), 0.0))
+    trace_s = np.full(n_g, (time.perf_counter() - t0) / max(n_g, 1))
+    return GroupReadings(names, mean, stderr, cov, np.broadcast_to(samples, (n_g, n_s)).copy(), trace_s)
