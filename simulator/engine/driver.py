@@ -33,7 +33,7 @@ from simulator.scene.model import MAX_PROBE_PIXELS, Scene, Sensor, SensorKind
 
 __all__ = [
     "COMPONENTS", "METHOD_FLAGS", "cuda_available", "warp_version", "Engine", "EngineResult", "LightGroups", "Progress",
-    "resolve_device",
+    "resolve_device", "load_kernels",
 ]  # fmt: skip
 
 #: samples one kernel thread draws for one sensor (a block)
@@ -56,6 +56,15 @@ class Progress:
     samples: int
     elapsed_s: float
     eta_s: float | None
+
+
+def load_kernels(device: str = "cpu") -> None:
+    """Compile (or load from the kernel cache) the estimator module on ``device`` now: a one-time
+    cost of the process that timings of a trace can then leave out."""
+    wp = warp()
+    from simulator.kernels import estimators as K
+
+    wp.load_module(K, device=resolve_device(device))
 
 
 @dataclass

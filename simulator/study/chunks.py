@@ -138,12 +138,13 @@ def compute_chunk(spec: ChunkSpec) -> dict:
                       scenarios=[dict(lv) for lv in spec.levels])  # fmt: skip
     return {
         "id": spec.id, "names": gr.names, "mean": gr.mean, "stderr": gr.stderr, "cov": gr.cov, "samples": gr.samples,
-        "trace_s": gr.trace_s, "wall_s": time.perf_counter() - t0, "host": socket.gethostname(), "pid": os.getpid(),
+        "trace_s": gr.trace_s, "trace_cpu_s": gr.trace_cpu_s, "wall_s": time.perf_counter() - t0, "host": socket.gethostname(), "pid": os.getpid(),
     }  # fmt: skip
 
 
 def readings_of(result: dict) -> GroupReadings:
-    return GroupReadings(list(result["names"]), result["mean"], result["stderr"], result["cov"], result["samples"], result["trace_s"])
+    return GroupReadings(list(result["names"]), result["mean"], result["stderr"], result["cov"], result["samples"], result["trace_s"],
+                         float(result.get("trace_cpu_s", 0.0)))  # fmt: skip
 
 
 class ChunkStore:
@@ -183,7 +184,7 @@ class ChunkStore:
         """Write a chunk, then its manifest entry, each atomically."""
         buf = io.BytesIO()
         np.savez(buf, names=np.array(result["names"]), mean=result["mean"], stderr=result["stderr"], cov=result["cov"],
-                 samples=result["samples"], trace_s=result["trace_s"])  # fmt: skip
+                 samples=result["samples"], trace_s=result["trace_s"], trace_cpu_s=np.float64(result.get("trace_cpu_s", 0.0)))  # fmt: skip
         data = buf.getvalue()
         name = f"{result['id']}.npz"
         atomic_write(self.dir / name, data)
