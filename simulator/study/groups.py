@@ -114,6 +114,40 @@ def group_scene(scene: Scene, light_names: list[str]) -> Scene:
     return replace(scene, geometry=geom, lights=[l for l in scene.lights if l.name in keep], sensors=[], warnings=[])
 
 
+#: methods that read direct light only: a group whose light has a closed form there may be read in it
+_DIRECT_METHODS = ("light", "mis", "bsdf")
+
+
+def _closed_forms_of_groups(sub: Scene, sensors: list[Sensor], names: list[str], groups: dict[str, list[str]], plan, sim,
+                            threads: int, mean: np.ndarray, cov: np.ndarray) -> None:  # fmt: skip
+    """Where the pass read a sensor by direct-light sampling, read each group that has a closed form
+    there on its own (the planner's choice for that group's lights alone), in place of its sampled
+    estimate: ``mean[g, s]`` exact, its covariance row and column 0. The sampled estimate held
+    direct light only (the method does not bounce), so the exact value replaces it wholly."""
+    from simulator.engine.driver import Engine
+    from simulator.plan.planner import make_plan
+
+    direct = np.array([i for i, sp in enumerate(plan.sensors) if sp.method in _DIRECT_METHODS], np.int64)
+    if not len(direct) or len(names) < 2:
+        return  # one group: the union's plan is that group's own
+    ss = [sensors[i] for i in direct]
+    for k, n in enumerate(names):
+        keep = set(groups[n])
+        gs = replace(sub, lights=[l for l in sub.lights if l.name in keep])
+        gp = make_plan(gs, ss, "auto", sim.component)
+        closed = {m: ids for m, ids in gp.groups().items() if m in ("analytic", "exact")}
+        if not closed:
+            continue
+        eng = Engine(gs, ss, device=sim.device, threads=threads)
+        eng.set_light_mask(gp.light_mask([l.name for l in gs.lights]))
+        for m, ids in closed.items():
+            r = eng.run(m, samples=0, seed=0, sensor_ids=ids, component=sim.component)
+            rows = direct[ids]
+            mean[k, rows] = r.mean[ids]
+            cov[rows, :, k, :] = 0.0
+            cov[rows, :, :, k] = 0.0
+
+
 def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str]], sim, seed: int,
                  threads: int = 0, scenarios: list[dict[str, float]] | None = None) -> GroupReadings:  # fmt: skip
     """Trace every light group's contribution to every sensor in one pass.
@@ -168,6 +202,8 @@ def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str
             sensor_ids=ids, confidence=sim.confidence,
         )  # fmt: skip
         mean[:, ids], cov[ids], samples[ids] = r.group_mean[:, ids], r.group_cov[ids], r.samples[ids]
+    if sim.method == "auto":
+        _closed_forms_of_groups(sub, sensors, names, groups, plan, sim, threads, mean, cov)
     stderr = np.sqrt(np.maximum(np.transpose(np.diagonal(cov, axis1=2, axis2=3), (2, 0, 1)), 0.0))
     trace_s = np.full(n_g, (time.perf_counter() - t0) / max(n_g, 1))
     return GroupReadings(names, mean, stderr, cov, np.broadcast_to(samples, (n_g, n_s)).copy(), trace_s, time.process_time() - c0)
