@@ -1,9 +1,10 @@
-"""Light groups: each group's contribution traced once per sensor, recombined for any dimming vector.
+"""Light groups: every group's contribution traced in one pass per sensor, recombined for any dimming vector.
 
 Light transport is linear in emission: the reading of a sensor with group
 ``g`` at level ``d_g`` is ``E(d) = Σ_g d_g · E_g``, where ``E_g`` is the
 reading with only group ``g`` lit at its authored emission. So a study
-traces each group once and every dimming scenario is a weighted sum.
+traces the groups of a trace group once and every dimming scenario is a
+weighted sum.
 
 Notes
 -----
@@ -13,37 +14,54 @@ and channel), the recombined estimate and its standard error are
 .. math:: \\hat E(d) = d^\\top \\hat E, \\qquad
           \\sigma(d) = \\sqrt{d^\\top C\\, d}.
 
-:func:`trace_groups` traces each group as its own run: a copy of the scene
-holding only that group's lights, read by the usual per-sensor plan, with a
-seed of its own. The groups' random streams are independent, so ``C`` is
-diagonal (``C_gg = σ_g²``; the covariance between groups is zero). The cost
-is one run per group. A one-pass kernel that tallies each sample's
-contribution per light group (the light index of each next-event estimate
-and of each emitter a path hits) would trace all groups on shared paths for
-about the cost of one run, and its per-sample group vectors would give the
-full covariance; :class:`GroupReadings` is the interface it would fill.
+One pass. :func:`trace_groups` traces a copy of the scene holding the
+lights of all the groups (no emissive surfaces, no light of no group) once,
+by the per-sensor plan of that union of lights. The estimator kernel tallies
+every emitted-light contribution to a sample (each next-event estimate, each
+light a direction hits, each emitter a path meets) into the slot of its
+light's group as well as into the total (``light_contribution`` in
+:mod:`simulator.kernels.estimators`), so each sample is a vector
+``x = (x_1 … x_G)`` per channel with ``Σ_g x_g`` the sample itself. Each
+kernel thread keeps shifted sums ``Σ(x_g − K_g)`` and the lower triangle of
+``Σ(x_g − K_g)(x_h − K_h)`` (float64, K its first sample), merged on the
+host by the multivariate pairwise update
+(:class:`simulator.engine.stats.GroupStats`); ``C = M / (n(n − 1))`` with
+``M`` the co-moment matrix. The groups share every path, so ``C`` is the
+full covariance: negative where one direction reaches either one group or
+another (the sky through the window, or a lamp on the ceiling), positive
+where one path carries both groups' interreflected light. The sum of the
+group means equals the pass's total to float32 rounding (tested to 1e-5).
+
+Exactness where a closed form applies: sensors the union's plan reads in
+closed form (``analytic``, ``exact``) are read per group in it (standard
+error and covariance 0), and where the pass samples direct light only
+(``light``, ``mis``), a group whose own lights have a closed form at that
+sensor is read in it in place of its sampled estimate.
 
 Adaptive targets. With ``rel_error`` set and the trace group's scenarios
-given, the target is the recombined reading's, not each group's own: a pilot
-of ``samples`` per sensor and group estimates the group readings ``m_g``;
-in scenario ``j`` the half-width budget ``rel·E_j`` is shared in proportion
-to the contributions ``w_jg = d_jg·m_g / E_j`` (which sum to 1), so that
-``Σ_g (d_jg·σ_g)² ≤ (rel·E_j / z)²`` holds when each group meets
+given, a sensor stops when the recombined reading of every scenario meets
+the target, ``z·sqrt(dᵀCd) ≤ max(rel·|dᵀÊ|, abs)`` in both channels (the
+engine's stopping rule over the J scenarios as 2J channels;
+:class:`simulator.engine.driver.LightGroups`); without scenarios, when the
+total does. Every scenario's target is met as a run's would be (up to the
+sample cap); the pass draws the samples of the sensor's hardest scenario, and
+the easier scenarios come out more precise than asked.
 
-.. math:: z\\,\\sigma_g \\le \\mathrm{rel}_g\\, m_g, \\qquad
-          \\mathrm{rel}_g = \\mathrm{rel} \\cdot \\min_j \\sqrt{E_j / (d_{jg}\\, m_g)} \\;\\ge\\; \\mathrm{rel}.
-
-A group that gives a tenth of a sensor's light may stop at √10 times the
-relative error, about a tenth of the samples. Targets are rounded down to
-steps of √2 (sensors with one step are run together) and capped at
-:data:`MAX_GROUP_REL_ERROR`. The pilot is an estimate, so the recombined
-target is met approximately, as an adaptive run's is.
-
-The engine's light mask (``Engine.set_light_mask``) only culls next-event
-estimates at a sensor's first vertex (it is the planner's "light wholly
-behind the sensor" switch); light a masked group sends by interreflection
-or that a cosine-sampled ray hits would still be counted, so it cannot
-switch a group off. That is why a group is traced on its own scene copy.
+Cost (the bundled ``configs/studies/office_study.toml``, 54 sensors, first
+trace group 12 scenarios over 3 groups; 2-core CPU shared with other work,
+so wall times varied up to 2× between repeats; CPU seconds of the process
+are steadier). At a fixed budget of 1024 samples per sensor, the pass cost
+1.04–1.06× the CPU time of one run of a scenario with all three groups lit
+(the tallies' overhead), where one run per group cost 1.32×. Adaptive (5%,
+at most 4096 samples), the pass cost 1.15–1.27× the CPU time of one run of
+the hardest scenario with all groups lit: it drew 1.16× that run's samples,
+since its hardest scenario (sky without the window row) asks more. One run
+per group, whose groups could stop apart (a group with a small share of a
+sensor's light stopped early, the sky alone ran to the cap), cost 0.73×
+there, its recombined targets met only approximately and without the
+covariance. ``probesim study`` records these figures in ``study.json``
+(``cost``: wall and CPU seconds per trace group against the single run,
+samples and time per sample).
 """
 
 from __future__ import annotations
