@@ -176,8 +176,8 @@ class Engine:
             # compile (or load from the kernel cache) before worker threads launch
             wp.load_module(K, device=self.device)
             self._device_scene = DeviceScene(self.scene, self.sensors, self.device)
-            with wp.ScopedDevice(self.device):  # placeholders for the group-tally arrays of TraceParams
-                self._no_groups = (wp.zeros(1, dtype=wp.int32), wp.zeros(1, dtype=wp.vec2), wp.zeros(1, dtype=wp.vec2d))
+            with wp.ScopedDevice(self.device):  # placeholder for TraceParams.group_state while tallies are off
+                self._no_groups = wp.zeros(1, dtype=wp.vec2d)
             if self._light_mask is not None:
                 self._device_scene.set_light_mask(self._light_mask)
         return self._device_scene
@@ -227,9 +227,7 @@ class Engine:
         p.mask_row = -1
         p.group_tally = 0
         p.n_groups = 0
-        ig, v2, v2d = self._no_groups
-        p.light_group, p.group_scratch = ig, v2
-        p.group_shift = p.group_sum = p.group_cross = v2d
+        p.group_state = self._no_groups
         return p
 
     # ------------------------------------------------------------ sensors
@@ -260,11 +258,9 @@ class Engine:
             s2 = wp.empty(n, dtype=wp.vec2d)
             bad = wp.empty(n, dtype=wp.int32)
             n_g = int(params.n_groups)
+            width = n_g * (n_g + 3)
             if params.group_tally:
-                params.group_scratch = wp.zeros(n * n_g, dtype=wp.vec2)
-                params.group_shift = wp.zeros(n * n_g, dtype=wp.vec2d)
-                params.group_sum = wp.zeros(n * n_g, dtype=wp.vec2d)
-                params.group_cross = wp.zeros(n * n_g * n_g, dtype=wp.vec2d)
+                params.group_state = wp.zeros(n * width, dtype=wp.vec2d)
 
             def run(offset: int, dim: int):
                 wp.launch(
@@ -282,9 +278,9 @@ class Engine:
             nonfinite = np.add.reduceat(bad.numpy(), np.flatnonzero(np.r_[True, t_sensor[1:] != t_sensor[:-1]]))
             if not params.group_tally:
                 return (*out, nonfinite)
+            st = params.group_state.numpy().reshape(n, width, 2)
             _, _, g_mean, g_m2 = GroupStats.reduce_blocks(
-                t_sensor, t_count, params.group_shift.numpy().reshape(n, n_g, 2), params.group_sum.numpy().reshape(n, n_g, 2),
-                params.group_cross.numpy().reshape(n, n_g, n_g, 2),
+                t_sensor, t_count, st[:, n_g : 2 * n_g], st[:, 2 * n_g : 3 * n_g], st[:, 3 * n_g :].reshape(n, n_g, n_g, 2),
             )  # fmt: skip
         return (*out, nonfinite, g_mean, g_m2)
 
@@ -493,7 +489,7 @@ class Engine:
         params.group_tally = 1
         params.n_groups = int(groups.n_groups)
         with wp.ScopedDevice(self.device):
-            params.light_group = wp.array(lg, dtype=wp.int32)
+            self._dev.rec.light_group = wp.array(lg, dtype=wp.int32)
 
     def _closed_form_groups(self, method: str, ids: np.ndarray, groups: LightGroups) -> EngineResult:
         """Closed-form readings per light group: each group's lights alone (exact, so the covariance is 0)."""

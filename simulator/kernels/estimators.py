@@ -113,14 +113,13 @@ class TraceParams:
     count_rays: int  # 1: count traced rays per thread in scene.ray_counts (benchmarks)
     thread: int  # set by the kernel for each thread
     mask_row: int  # set by the kernel: the sensor whose light mask applies at vertex 0, −1 for none
-    # -- light-group tallies (see light_contribution and fold_group_sample); unused while group_tally is 0
+    # -- light-group tallies (see light_contribution and fold_group_sample); unused while group_tally is 0.
+    # Groups of the light records: SceneRec.light_group. One array holds a thread's state, G·(G + 3)
+    # slots from thread·G·(G + 3): this sample's light per group (G), K_g the thread's first sample
+    # per group (G), Σ(x_g − K_g) (G), Σ(x_g − K_g)(x_h − K_h) at g·G + h, h ≤ g (G × G).
     group_tally: int  # 1: tally each sample's light per group as well as its total
     n_groups: int  # G
-    light_group: wp.array(dtype=wp.int32)  # per light record: its group in [0, G), −1 for none
-    group_scratch: wp.array(dtype=wp.vec2)  # (threads × G): this sample's light per group
-    group_shift: wp.array(dtype=wp.vec2d)  # (threads × G): K_g, the thread's first sample per group
-    group_sum: wp.array(dtype=wp.vec2d)  # (threads × G): Σ(x_g − K_g)
-    group_cross: wp.array(dtype=wp.vec2d)  # (threads × G × G): Σ(x_g − K_g)(x_h − K_h), h ≤ g (lower triangle)
+    group_state: wp.array(dtype=wp.vec2d)  # (threads × G·(G + 3))
 
 
 @wp.func
@@ -485,22 +484,23 @@ def light_contribution(scene: SceneRec, params: TraceParams, li: int, value: wp.
     the trace tallies it. Every place a sample adds emitted light goes
     through here, so per-light tallies (light groups) and per-light scalings
     have one hook. With ``params.group_tally`` the value is also added to
-    this sample's slot of the light's group, ``group_scratch[thread·G +
-    group(li)]`` (a light in no group, or ``li`` = −1, adds to none); the
-    value itself passes on unchanged."""
+    this sample's slot of the light's group (``scene.light_group[li]``; a
+    light in no group, or ``li`` = −1, adds to none), in the thread's state
+    (see :class:`TraceParams`); the value itself passes on unchanged."""
     if params.group_tally != 0 and li >= 0:
-        g = params.light_group[li]
+        g = scene.light_group[li]
         if g >= 0:
-            k = params.thread * params.n_groups + g
-            params.group_scratch[k] = params.group_scratch[k] + value
+            k = params.thread * params.n_groups * (params.n_groups + 3) + g
+            params.group_state[k] = params.group_state[k] + wp.vec2d(value)
     return value
 
 
 @wp.func
 def clear_group_sample(params: TraceParams, t: int):
-    """Zero thread ``t``'s group slots before a sample."""
+    """Zero thread ``t``'s per-group slots of this sample."""
+    base = t * params.n_groups * (params.n_groups + 3)
     for g in range(params.n_groups):
-        params.group_scratch[t * params.n_groups + g] = wp.vec2(0.0, 0.0)
+        params.group_state[base + g] = wp.vec2d(wp.float64(0.0), wp.float64(0.0))
 
 
 @wp.func
@@ -516,19 +516,23 @@ def fold_group_sample(params: TraceParams, t: int, first: int, keep: int):
     A non-finite sample (``keep`` 0) counts as 0 in every group, as it does
     in the total."""
     n_g = params.n_groups
-    base = t * n_g
+    x0 = t * n_g * (n_g + 3)  # this sample's light per group
+    k0 = x0 + n_g  # shifts
+    s0 = k0 + n_g  # sums
+    p0 = s0 + n_g  # cross sums
+    st = params.group_state
     for g in range(n_g):
         if keep == 0:
-            params.group_scratch[base + g] = wp.vec2(0.0, 0.0)
+            st[x0 + g] = wp.vec2d(wp.float64(0.0), wp.float64(0.0))
         if first != 0:
-            params.group_shift[base + g] = wp.vec2d(params.group_scratch[base + g])
+            st[k0 + g] = st[x0 + g]
+        st[x0 + g] = st[x0 + g] - st[k0 + g]  # from here on the slot holds x_g − K_g
     for g in range(n_g):
-        dg = wp.vec2d(params.group_scratch[base + g]) - params.group_shift[base + g]
-        params.group_sum[base + g] = params.group_sum[base + g] + dg
+        dg = st[x0 + g]
+        st[s0 + g] = st[s0 + g] + dg
         for h in range(g + 1):
-            dh = wp.vec2d(params.group_scratch[base + h]) - params.group_shift[base + h]
-            k = (base + g) * n_g + h
-            params.group_cross[k] = params.group_cross[k] + wp.cw_mul(dg, dh)
+            k = p0 + g * n_g + h
+            st[k] = st[k] + wp.cw_mul(dg, st[x0 + h])
 
 
 @wp.func

@@ -85,6 +85,7 @@ class SceneRec:
     eps: float  # ray-origin offset relative to max(1 m, |p|∞)
     ray_counts: wp.array(dtype=wp.int32)  # per kernel thread, when TraceParams.count_rays
     light_mask: wp.array(dtype=wp.int32)  # (sensors × n_lights): 0 = light culled for that sensor
+    light_group: wp.array(dtype=wp.int32)  # per light record: its light group, −1 for none (TraceParams.group_tally)
 
 
 @wp.struct
