@@ -106,3 +106,23 @@ def test_replicas_scatter_as_the_reported_covariance():
         var_diag = np.einsum("g,scgg,g->sc", d, c_bar, d)
         worst_diag = max(worst_diag, float(np.max(np.maximum(ss / var_diag / hi, lo / (ss / var_diag)))))
     assert worst_diag > 1.0  # the diagonal-only covariance fails somewhere: the test can tell
+
+
+def test_a_batch_too_big_for_one_launch_is_split_without_changing_it(monkeypatch):
+    """With the group state capped (``GROUP_STATE_BYTES``: room for 2 kernel threads) each
+    batch is drawn in several launches; the samples are the same (one random stream per
+    sample), so the group means agree with one launch's to 1e-9 relative and the
+    covariance to 1e-6 (only the blocks' float64 shifts differ)."""
+    import simulator.engine.driver as D
+
+    scene = _office()
+    sensors = _sensors()[:2]
+    lg = LightGroups(_group_of(scene), 4)
+    eng = Engine(scene, sensors)
+    one = eng.run_groups("path", lg, samples=200, seed=8)
+    monkeypatch.setattr(D, "GROUP_STATE_BYTES", 2 * 16 * 4 * 7)
+    assert len(D._split_batch(np.arange(2), np.zeros(2), np.full(2, 200), 2 * D.BLOCK)) > 2
+    split = eng.run_groups("path", lg, samples=200, seed=8)
+    assert np.array_equal(split.samples, one.samples)
+    assert np.allclose(split.group_mean, one.group_mean, rtol=1e-9, atol=0)
+    assert np.allclose(split.group_cov, one.group_cov, rtol=1e-6, atol=1e-12 * np.abs(one.group_cov).max())

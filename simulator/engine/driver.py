@@ -45,6 +45,9 @@ SAMPLES_PER_LAUNCH = 1 << 18
 PASS_BLOCK = 16
 #: probe kernel threads per launch: bounds the float64 sums held at once (~900 B each)
 THREADS_PER_LAUNCH = 1 << 16
+#: most bytes of light-group state (16·G·(G + 3) per kernel thread) one launch holds; a batch
+#: that needs more is drawn in several launches (only with many groups: G = 20 fits 36,000 threads)
+GROUP_STATE_BYTES = 1 << 28
 
 
 @dataclass
@@ -414,14 +417,19 @@ class Engine:
             want = np.minimum(want, per)
 
         def step(ids, first, count):
-            tb = time.perf_counter()
-            sens, cnt, mean, m2, bad, *grp = self._launch(params, ids, first, count)
-            dt = time.perf_counter() - tb
-            stats.merge(sens, cnt, mean, m2)
+            parts = [(ids, first, count)]
             if gstats is not None:
-                gstats.merge(sens, cnt, *grp)
-            seconds[sens] += dt * cnt / cnt.sum()
-            nonfinite[sens] += bad
+                width = groups.n_groups * (groups.n_groups + 3)
+                parts = _split_batch(ids, first, count, max(1, GROUP_STATE_BYTES // (16 * width)) * BLOCK)
+            for p_ids, p_first, p_count in parts:
+                tb = time.perf_counter()
+                sens, cnt, mean, m2, bad, *grp = self._launch(params, p_ids, p_first, p_count)
+                dt = time.perf_counter() - tb
+                stats.merge(sens, cnt, mean, m2)
+                if gstats is not None:
+                    gstats.merge(sens, cnt, *grp)
+                seconds[sens] += dt * cnt / cnt.sum()
+                nonfinite[sens] += bad
 
         def measure():
             if gstats is None or groups.levels is None:
@@ -694,3 +702,22 @@ def _recombined(mean: np.ndarray, cov: np.ndarray, levels: np.ndarray) -> tuple[
         var = np.einsum("jg,scgh,jh->sjc", d, cov, d)
     se = np.sqrt(np.where(np.isnan(var), np.inf, np.maximum(var, 0.0)))
     return val.reshape(len(val), -1), se.reshape(len(se), -1)
+
+
+def _split_batch(ids: np.ndarray, first: np.ndarray, count: np.ndarray, max_samples: int) -> list[tuple]:
+    """A batch ``(ids, first, count)`` cut into launches of at most ``max_samples`` samples (a multiple
+    of ``BLOCK``), each sensor at most once per launch, samples in order (the random streams are
+    per sample, so the cut changes no sample)."""
+    out, cur, room = [], ([], [], []), max_samples
+    for i, f, c in zip(ids, first, count):
+        f, c = int(f), int(c)
+        while c > 0:
+            take = min(c, room)
+            cur[0].append(i), cur[1].append(f), cur[2].append(take)
+            f, c, room = f + take, c - take, room - -(-take // BLOCK) * BLOCK
+            if room <= 0:
+                out.append(cur)
+                cur, room = ([], [], []), max_samples
+    if cur[0]:
+        out.append(cur)
+    return [(np.asarray(a, np.int64), np.asarray(b, np.int64), np.asarray(c, np.int64)) for a, b, c in out]
