@@ -53,9 +53,10 @@ so wall times varied up to 2× between repeats; CPU seconds of the process
 are steadier). At a fixed budget of 1024 samples per sensor, the pass cost
 0.99–1.01× the CPU time of one run of a scenario with all three groups lit
 (the tallies' overhead is within the noise), where one run per group cost
-1.32×. Adaptive (5%, at most 4096 samples), the pass cost 1.10–1.17× the CPU time of one run of
-the hardest scenario with all groups lit: it drew 1.16× that run's samples,
-since its hardest scenario (sky without the window row) asks more. One run
+1.32×. Adaptive (5%, at most 4096 samples), the pass cost 1.10–1.17× the
+CPU time of one run of the hardest scenario with all groups lit: it drew
+1.16× that run's samples, since its hardest scenario (sky without the
+window row) asks more. One run
 per group, whose groups could stop apart (a group with a small share of a
 sensor's light stopped early, the sky alone ran to the cap), cost 0.73×
 there, its recombined targets met only approximately and without the
