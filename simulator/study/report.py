@@ -214,10 +214,13 @@ def cost(res) -> dict:
     samples = (r["trace_group_samples"] / r["samples"]) if r.get("samples") else None
     key0 = res.trace_groups[0].key if res.trace_groups else None
     per_sample = (by_tg[key0]["trace_s"] / ref / samples) if (samples and ref and key0 in by_tg) else None
+    cpu0 = by_tg[key0]["cpu_over_single_run"] if key0 in by_tg else None
+    per_sample_cpu = (cpu0 / samples) if (samples and cpu0) else None
     return {"trace_s_per_scenario": per, "single_run_s": ref, "single_run_cpu_s": ref_cpu, "per_scenario_over_single_run": (per / ref) if ref else None,
             "study_trace_over_single_run": (res.timings_s.get("trace_in_chunks", 0.0) / ref) if ref else None,
             "trace_groups": by_tg, "first_trace_group_samples_over_single_run": samples,
             "first_trace_group_time_per_sample_over_single_run": per_sample,
+            "first_trace_group_cpu_per_sample_over_single_run": per_sample_cpu,
             "note": "all light groups of a trace group are traced in one pass (each sample's light tallied per group), "
                     "so a trace group costs about one single run whatever its number of groups and dimming scenarios; "
                     "an adaptive pass stops a sensor when all its scenarios meet the target, so it draws the samples "
