@@ -125,3 +125,27 @@ def test_a_group_with_a_closed_form_is_read_exactly_in_a_sampled_pass():
     tube = Engine(replace(scene, lights=[cyl]), sensors).run("light", samples=4096, seed=3)
     assert np.all(gr.stderr[1] > 0)
     assert np.all(np.abs(gr.mean[1] - tube.mean) <= 4 * np.sqrt(gr.stderr[1] ** 2 + tube.stderr**2) + 1e-9 * np.abs(tube.mean))
+
+
+def test_the_single_run_stands_for_the_hardest_of_the_scenarios_with_most_groups_lit():
+    """The cost figure's single run: among the scenarios lighting the most groups, the one
+    whose own target asks the most samples, Σ_s n_s·max_c(σ/|E|)² from the pass. Two groups
+    with readings 10 and 1 and variances 1 and 4: d = (1, 1) has (σ/E)² = 5/121 = 0.041,
+    d = (0.1, 1) 4.01/1.21 = 3.3, so the dimmer one is chosen; d = (0, 1), 4/1 = 4, asks
+    more still but lights one group only (a run of it would trace fewer lights), so it is
+    not; without a target the first of the most-lit is."""
+    from types import SimpleNamespace
+
+    from simulator.study.runner import _reference_scenario
+    from simulator.study.scenarios import Scenario
+
+    mean = np.array([[[10.0, 10.0]], [[1.0, 1.0]]])
+    cov = np.zeros((1, 2, 2, 2))
+    cov[0, :, 0, 0], cov[0, :, 1, 1] = 1.0, 4.0
+    res = {"c": {"names": ["a", "b"], "mean": mean, "stderr": np.sqrt(np.array([[[1.0, 1.0]], [[4.0, 4.0]]])), "cov": cov,
+                 "samples": np.full((2, 1), 100), "trace_s": np.zeros(2)}}  # fmt: skip
+    first = [Scenario("b_only", {"a": 0.0, "b": 1.0}, None, ()), Scenario("full", {"a": 1.0, "b": 1.0}, None, ()),
+             Scenario("dim_a", {"a": 0.1, "b": 1.0}, None, ())]  # fmt: skip
+    specs = [SimpleNamespace(id="c")]
+    assert _reference_scenario(first, specs, res, adaptive=True).name == "dim_a"
+    assert _reference_scenario(first, specs, res, adaptive=False).name == "full"
