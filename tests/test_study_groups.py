@@ -131,7 +131,7 @@ def test_the_single_run_stands_for_the_hardest_of_the_scenarios_with_most_groups
     """The cost figure's single run: among the scenarios lighting the most groups, the one
     whose own target asks the most samples, Σ_s n_s·max_c(σ/|E|)² from the pass. Two groups
     with readings 10 and 1 and variances 1 and 4: d = (1, 1) has (σ/E)² = 5/121 = 0.041,
-    d = (0.1, 1) 4.01/1.21 = 3.3, so the dimmer one is chosen; d = (0, 1), 4/1 = 4, asks
+    d = (0.1, 1) 4.01/4 = 1.0, so the dimmer one is chosen; d = (0, 1), 4/1 = 4, asks
     more still but lights one group only (a run of it would trace fewer lights), so it is
     not; without a target the first of the most-lit is."""
     from types import SimpleNamespace
