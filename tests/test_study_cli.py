@@ -27,6 +27,10 @@ def _write(tmp_path, text):
     ('candidates = "wp"', 'candidates = "wp"\nregion = [7, 0, 8, 1]', "zone[0].region: no 'wp' candidate lies inside it"),
     ("k = 2", "k = 0", "placement.k: Input should be greater than or equal to 1"),
     ("[compute]", "[compute]\nscheduler = \"localhost\"", "compute.scheduler: expected an address"),
+    ('lights = ["/Office/Lights/CorridorRow"]', 'collection = "/Office/Lights.collection:corridorSide"',
+     "group[1].collection: no collection '/Office/Lights.collection:corridorSide' in the stage office.usda "
+     "(collections: /Office/Lights.collection:windowSide, /Office/Lights.collection:rowEnds)"),
+    ('name = "sky"\nlights = ["/Office/Sky"]', 'name = "sky"', "group[2]: give lights (prim paths or patterns) or a collection"),
 ])  # fmt: skip
 def test_mistakes_are_one_line_and_write_nothing(tmp_path, capsys, old, new, message):
     assert old in TINY

@@ -60,3 +60,20 @@ def test_group_errors():
     scene = _office()
     with pytest.raises(UserError, match=r"s.toml: group\[1\].lights\[0\]: /Office/Lights/WindowRow/Luminaire_1 is already in group 'a'"):
         resolve_groups(scene, [GroupSpec(name="a", lights=["/Office/Lights"]), GroupSpec(name="b", lights=["/Office/Lights/WindowRow/*"])], "s.toml")
+
+
+def test_groups_from_usd_collections():
+    """A group may name a UsdCollectionAPI collection (stages/office.usda): ``rowEnds``
+    includes both rows and excludes each row's Luminaire_2; ``windowSide`` includes the
+    WindowRow scope (expandPrims: its three luminaires), and with patterns the group is
+    their union; a light that two groups' collections hold is refused, naming the key."""
+    scene = _office()
+    lum = "/Office/Lights/{}/Luminaire_{}".format
+    groups, unassigned = resolve_groups(scene, [GroupSpec(name="ends", collection="/Office/Lights.collection:rowEnds")], "s.toml")
+    assert groups["ends"] == [lum(r, i) for r in ("WindowRow", "CorridorRow") for i in (1, 3)]
+    assert lum("WindowRow", 2) in unassigned and lum("CorridorRow", 2) in unassigned
+    groups, _ = resolve_groups(scene, [GroupSpec(name="w", lights=["/Office/Sky"], collection="/Office/Lights.collection:windowSide")], "s.toml")
+    assert groups["w"] == ["/Office/Sky"] + [lum("WindowRow", i) for i in (1, 2, 3)]
+    with pytest.raises(UserError, match=r"s.toml: group\[1\].collection: /Office/Lights/WindowRow/Luminaire_1 is already in group 'ends'"):
+        resolve_groups(scene, [GroupSpec(name="ends", collection="/Office/Lights.collection:rowEnds"),
+                               GroupSpec(name="w", collection="/Office/Lights.collection:windowSide")], "s.toml")  # fmt: skip

@@ -60,7 +60,12 @@ def closing_note(res) -> list[str]:
     ref = res.reference
     cost = f"tracing {t['trace_in_chunks']:.2f} s, {per:.3f} s per scenario"
     if ref:
-        cost += (f" against {ref['wall_s']:.2f} s for a single run of {ref['scenario']!r} ({per / ref['wall_s']:.2f}x per scenario); "
+        tg0 = res.trace_groups[0]
+        s0 = sum(v for k, v in res.chunk_trace_s.items() if k[0] == tg0.key)
+        c0 = sum(v for k, v in res.chunk_trace_cpu_s.items() if k[0] == tg0.key)
+        cpu = f", CPU time {c0 / ref['cpu_s']:.2f}x" if ref.get("cpu_s") else ""
+        cost += (f" against {ref['wall_s']:.2f} s for a single run of {ref['scenario']!r} ({per / ref['wall_s']:.2f}x per scenario; "
+                 f"its trace group's {len(tg0.scenarios)} scenarios {s0:.2f} s, {s0 / ref['wall_s']:.2f}x{cpu}); "
                  f"recombined vs that run: {ref['sensors_within_4_sigma']}/{ref['sensors']} sensors within 4 sigma")
     lines.append(f"wall time {t['total']:.1f} s (setup {t['setup']:.1f} s, chunks {t['chunks']:.1f} s); {cost}")
     pl = res.placement

@@ -126,6 +126,7 @@ class DeviceScene:
         rec.ray_counts = wp.zeros(1, dtype=wp.int32)
         rec.light_mask = wp.ones(max(1, n_sensors * (len(scene.lights) + 1)), dtype=wp.int32)
         self._upload_hero(wp, rec, None)
+        rec.light_group = wp.full(len(scene.lights) + 1, -1, dtype=wp.int32)  # no groups until a run tallies them
         n_tri = g.n_triangles
         pts = g.points.astype(np.float32) if n_tri else np.zeros((3, 3), np.float32)
         tris = g.triangles.astype(np.int32) if n_tri else np.array([[0, 1, 2]], np.int32)

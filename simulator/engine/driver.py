@@ -26,14 +26,14 @@ from simulator.engine.adaptive import StoppingRule, run_batches
 from simulator.engine.device import DeviceScene, cuda_available, resolve_device, warp, warp_version
 from simulator.engine.fanout import fan_out
 from simulator.engine.methods import COMPONENTS, METHOD_FLAGS
-from simulator.engine.stats import RunningStats
+from simulator.engine.stats import GroupStats, RunningStats
 from simulator.errors import UserError
 from simulator.interrupts import StopFlag
 from simulator.scene.model import MAX_PROBE_PIXELS, Scene, Sensor, SensorKind
 
 __all__ = [
-    "COMPONENTS", "METHOD_FLAGS", "cuda_available", "warp_version", "Engine", "EngineResult", "Progress",
-    "resolve_device",
+    "COMPONENTS", "METHOD_FLAGS", "cuda_available", "warp_version", "Engine", "EngineResult", "LightGroups", "Progress",
+    "resolve_device", "load_kernels",
 ]  # fmt: skip
 
 #: samples one kernel thread draws for one sensor (a block)
@@ -45,6 +45,9 @@ SAMPLES_PER_LAUNCH = 1 << 18
 PASS_BLOCK = 16
 #: probe kernel threads per launch: bounds the float64 sums held at once (~900 B each)
 THREADS_PER_LAUNCH = 1 << 16
+#: most bytes of light-group state (16·G·(G + 3) per kernel thread) one launch holds; a batch
+#: that needs more is drawn in several launches (only with many groups: G = 20 fits 36,000 threads)
+GROUP_STATE_BYTES = 1 << 28
 
 
 @dataclass
@@ -56,6 +59,41 @@ class Progress:
     samples: int
     elapsed_s: float
     eta_s: float | None
+
+
+def load_kernels(device: str = "cpu") -> None:
+    """Compile (or load from the kernel cache) the estimator module on ``device`` now: a one-time
+    cost of the process that timings of a trace can then leave out."""
+    wp = warp()
+    from simulator.kernels import estimators as K
+
+    wp.load_module(K, device=resolve_device(device))
+
+
+@dataclass
+class LightGroups:
+    """Which light group each of the scene's lights belongs to, for one-pass group tallies.
+
+    Attributes
+    ----------
+    light_group : ndarray of int, shape (L,)
+        Per light of ``Engine.scene.lights``: its group in ``[0, n_groups)``,
+        −1 for none (its light counts in the total only).
+    n_groups : int
+        G.
+    levels : ndarray, shape (J, G), optional
+        Dimming vectors the group readings will be recombined into. An
+        adaptive run then stops each sensor when every recombined reading
+        ``d_jᵀ Ê`` meets the target (with its standard error
+        ``sqrt(d_jᵀ C d_j)``); without, when the total does.
+    emissive_group : int
+        Group of the emissive surfaces (−1: none).
+    """
+
+    light_group: np.ndarray
+    n_groups: int
+    levels: np.ndarray | None = None
+    emissive_group: int = -1
 
 
 @dataclass
@@ -108,6 +146,9 @@ class EngineResult:
     responses: list[str] | None = None
     response_mean: np.ndarray | None = None
     response_stderr: np.ndarray | None = None
+    #: with light groups: each group's reading (G, S, 2) and the covariance of those estimates (S, 2, G, G)
+    group_mean: np.ndarray | None = None
+    group_cov: np.ndarray | None = None
 
 
 class Engine:
@@ -148,6 +189,8 @@ class Engine:
             # compile (or load from the kernel cache) before worker threads launch
             wp.load_module(K, device=self.device)
             self._device_scene = DeviceScene(self.scene, self.sensors, self.device)
+            with wp.ScopedDevice(self.device):  # placeholder for TraceParams.group_state while tallies are off
+                self._no_groups = wp.zeros(1, dtype=wp.vec2d)
             if self._light_mask is not None:
                 self._device_scene.set_light_mask(self._light_mask)
             if self._hero is not None:
@@ -220,6 +263,9 @@ class Engine:
         p.spectral = 1 if self._hero is not None else 0
         p.hero = warp().vec4i(0, 0, 0, 0)
         p.tint = warp().vec4(1.0, 1.0, 1.0, 1.0)
+        p.group_tally = 0
+        p.n_groups = 0
+        p.group_state = self._no_groups
         return p
 
     # ------------------------------------------------------------ sensors
@@ -228,7 +274,10 @@ class Engine:
         """Draw count[i] samples of sensor_ids[i], starting at sample first[i].
 
         Returns (sensors, counts, means, m2s, non_finite, response_means,
-        response_m2s) for the batch; the last two are None for grey transport."""
+        response_m2s, group_means, group_m2s) for the batch: the responses are
+        None for grey transport; with group tallies on (``params.group_tally``)
+        the per-sensor group means (S', C, G) and co-moments (S', C, G, G),
+        else None."""
         wp = warp()
         nblk = (count + BLOCK - 1) // BLOCK
         t_sensor = np.repeat(sensor_ids, nblk).astype(np.int32)
@@ -253,6 +302,10 @@ class Engine:
             r_shift, r_s1, r_s2 = (wp.zeros(r_shape, dtype=wp.float64) for _ in range(3))
             if n_resp:
                 rec.response_lanes = wp.zeros(n, dtype=wp.vec4)
+            n_g = int(params.n_groups)
+            width = n_g * (n_g + 3)
+            if params.group_tally:
+                params.group_state = wp.zeros(n * width, dtype=wp.vec2d)
 
             def run(offset: int, dim: int):
                 wp.launch(
@@ -272,7 +325,13 @@ class Engine:
             if n_resp:
                 _, _, r_mean, r_m2 = RunningStats.reduce_blocks(t_sensor, t_count, r_shift.numpy(), r_s1.numpy(),
                                                                 r_s2.numpy())
-        return (*out, nonfinite, r_mean, r_m2)
+            if not params.group_tally:
+                return (*out, nonfinite, r_mean, r_m2, None, None)
+            st = params.group_state.numpy().reshape(n, width, 2)
+            _, _, g_mean, g_m2 = GroupStats.reduce_blocks(
+                t_sensor, t_count, st[:, n_g : 2 * n_g], st[:, 2 * n_g : 3 * n_g], st[:, 3 * n_g :].reshape(n, n_g, n_g, 2),
+            )  # fmt: skip
+        return (*out, nonfinite, r_mean, r_m2, g_mean, g_m2)
 
     def _run_analytic(self, sensor_ids: np.ndarray) -> EngineResult:
         """Closed-form readings (the caller has checked they apply): exact up
@@ -341,6 +400,7 @@ class Engine:
         sensor_ids: np.ndarray | None = None,
         confidence: float = 0.95,
         stop: StopFlag | None = None,
+        groups: LightGroups | None = None,
     ) -> EngineResult:
         """Estimate every sensor with ``method`` (analytic, exact, light, bsdf, mis or path).
 
@@ -359,6 +419,12 @@ class Engine:
         the result holds the whole batches drawn so far, ``interrupted`` is
         True and ``unfinished`` marks the sensors stopped short. Without
         ``stop``, Ctrl-C raises ``KeyboardInterrupt`` once the batch is done.
+
+        ``groups``: also tally every sample's light per light group on the
+        same paths (one pass), giving ``group_mean`` and ``group_cov``; with
+        ``groups.levels`` an adaptive run stops on the recombined readings
+        (see :class:`LightGroups`). Closed-form methods read each group on
+        its own (exact, covariance 0). See :meth:`run_groups`.
         """
         if component not in COMPONENTS:
             raise UserError(f"simulation.component: {component!r} is not one of {', '.join(COMPONENTS)}")
@@ -367,6 +433,8 @@ class Engine:
         if any(s.spec.reader != "estimate" for s in self.sensors):
             raise ValueError("probe sensors are read by Engine.run_probes, not Engine.run")
         ids_all = np.arange(len(self.sensors)) if sensor_ids is None else np.asarray(sensor_ids, np.int64)
+        if groups is not None and method in ("analytic", "exact"):
+            return self._closed_form_groups(method, ids_all, groups)
         if method == "analytic":
             return self._run_analytic(ids_all)
         if method == "exact":
@@ -380,6 +448,10 @@ class Engine:
         stats = RunningStats(n_s)
         n_resp = self._dev.n_responses if params.spectral else 0
         rstats = RunningStats(n_s, n_resp) if n_resp else None
+        gstats = None
+        if groups is not None:
+            gstats = GroupStats(n_s, groups.n_groups)
+            self._set_groups(params, groups)
         seconds = np.zeros(n_s)
         nonfinite = np.zeros(n_s, np.int64)
         adaptive = rel_error is not None
@@ -393,14 +465,26 @@ class Engine:
             want = np.minimum(want, per)
 
         def step(ids, first, count):
-            tb = time.perf_counter()
-            sens, cnt, mean, m2, bad, r_mean, r_m2 = self._launch(params, ids, first, count)
-            dt = time.perf_counter() - tb
-            stats.merge(sens, cnt, mean, m2)
-            if rstats is not None:
-                rstats.merge(sens, cnt, r_mean, r_m2)
-            seconds[sens] += dt * cnt / cnt.sum()
-            nonfinite[sens] += bad
+            parts = [(ids, first, count)]
+            if gstats is not None:
+                width = groups.n_groups * (groups.n_groups + 3)
+                parts = _split_batch(ids, first, count, max(1, GROUP_STATE_BYTES // (16 * width)) * BLOCK)
+            for p_ids, p_first, p_count in parts:
+                tb = time.perf_counter()
+                sens, cnt, mean, m2, bad, r_mean, r_m2, g_mean, g_m2 = self._launch(params, p_ids, p_first, p_count)
+                dt = time.perf_counter() - tb
+                stats.merge(sens, cnt, mean, m2)
+                if rstats is not None:
+                    rstats.merge(sens, cnt, r_mean, r_m2)
+                if gstats is not None:
+                    gstats.merge(sens, cnt, g_mean, g_m2)
+                seconds[sens] += dt * cnt / cnt.sum()
+                nonfinite[sens] += bad
+
+        def measure():
+            if gstats is None or groups.levels is None:
+                return stats.mean, stats.stderr()
+            return _recombined(gstats.mean, gstats.cov(), groups.levels)
 
         def report(count, active, elapsed):
             if progress is None:
@@ -414,7 +498,7 @@ class Engine:
         _, met = run_batches(
             step, active, want, cap, block=BLOCK,
             rule=StoppingRule(rel_error, abs_error, confidence) if adaptive else None,
-            measure=lambda: (stats.mean, stats.stderr()), time_limit_s=time_limit_s, t_start=t0, report=report,
+            measure=measure, time_limit_s=time_limit_s, t_start=t0, report=report,
             stop=stop,
         )  # fmt: skip
         wall = time.perf_counter() - t0
@@ -440,7 +524,58 @@ class Engine:
             responses=None if rstats is None else [r.name for r in self._hero.responses],
             response_mean=None if rstats is None else rstats.mean.copy(),
             response_stderr=None if rstats is None else rstats.stderr(),
+            group_mean=None if gstats is None else np.transpose(gstats.mean, (2, 0, 1)).copy(),
+            group_cov=None if gstats is None else gstats.cov(),
         )
+
+    def run_groups(self, method: str, groups: LightGroups, **kw) -> EngineResult:
+        """Each light group's reading of every sensor, and their covariance, from one pass.
+
+        Every sample's light is tallied per group as the kernel adds it up
+        (``light_contribution``), so the groups share paths: the pass costs
+        about one :meth:`run`, and the per-sample group vectors give the full
+        covariance between groups. ``mean`` and ``stderr`` are the total's
+        (all lights at their authored level); ``group_mean`` (G, S, 2) and
+        ``group_cov`` (S, 2, G, G) the groups'. Keywords as for :meth:`run`.
+        """
+        return self.run(method, groups=groups, **kw)
+
+    def _set_groups(self, params, groups: LightGroups) -> None:
+        wp = warp()
+        n_l = int(self._dev.rec.n_lights)
+        lg = np.full(max(n_l, 1), -1, np.int32)
+        lg[: len(groups.light_group)] = groups.light_group
+        if self.emissive_light >= 0:
+            lg[self.emissive_light] = groups.emissive_group
+        params.group_tally = 1
+        params.n_groups = int(groups.n_groups)
+        with wp.ScopedDevice(self.device):
+            self._dev.rec.light_group = wp.array(lg, dtype=wp.int32)
+
+    def _closed_form_groups(self, method: str, ids: np.ndarray, groups: LightGroups) -> EngineResult:
+        """Closed-form readings per light group: each group's lights alone (exact, so the covariance is 0)."""
+        from dataclasses import replace
+
+        n_s, n_g = len(self.sensors), groups.n_groups
+        g_mean = np.zeros((n_g, n_s, 2))
+        wall = 0.0
+        for g in range(n_g):
+            keep = np.flatnonzero(np.asarray(groups.light_group) == g)
+            if not len(keep):
+                continue
+            sub = replace(self.scene, lights=[self.scene.lights[i] for i in keep])
+            eng = Engine(sub, self.sensors, device=self.device, threads=self.threads)
+            if self._light_mask is not None:
+                eng.set_light_mask(self._light_mask[:, keep])
+            r = eng.run(method, samples=0, seed=0, sensor_ids=ids)
+            g_mean[g] = r.mean
+            wall += r.wall_s
+        return EngineResult(
+            method=method, device=self.device, mean=g_mean.sum(axis=0), stderr=np.zeros((n_s, 2)),
+            samples=np.zeros(n_s, np.int64), seconds=np.full(n_s, wall / max(len(ids), 1)), target_met=None,
+            non_finite=np.zeros(n_s, np.int64), wall_s=wall, warnings=list(self.warnings), group_mean=g_mean,
+            group_cov=np.zeros((n_s, 2, n_g, n_g)),
+        )  # fmt: skip
 
     # ------------------------------------------------------------ probes
 
@@ -613,3 +748,33 @@ class Engine:
                                       target_met))  # fmt: skip
             out[-1].interrupted = bool(active[0])
         return out
+
+
+def _recombined(mean: np.ndarray, cov: np.ndarray, levels: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Readings ``d_jᵀ x̄`` and standard errors ``sqrt(d_jᵀ C d_j)`` of the dimming vectors ``levels`` (J, G),
+    from group means (S, C, G) and covariance (S, C, G, G); both (S, J·C), the stopping rule's channels."""
+    d = np.asarray(levels, np.float64)
+    val = np.einsum("jg,scg->sjc", d, mean)
+    with np.errstate(invalid="ignore"):
+        var = np.einsum("jg,scgh,jh->sjc", d, cov, d)
+    se = np.sqrt(np.where(np.isnan(var), np.inf, np.maximum(var, 0.0)))
+    return val.reshape(len(val), -1), se.reshape(len(se), -1)
+
+
+def _split_batch(ids: np.ndarray, first: np.ndarray, count: np.ndarray, max_samples: int) -> list[tuple]:
+    """A batch ``(ids, first, count)`` cut into launches of at most ``max_samples`` samples (a multiple
+    of ``BLOCK``), each sensor at most once per launch, samples in order (the random streams are
+    per sample, so the cut changes no sample)."""
+    out, cur, room = [], ([], [], []), max_samples
+    for i, f, c in zip(ids, first, count):
+        f, c = int(f), int(c)
+        while c > 0:
+            take = min(c, room)
+            cur[0].append(i), cur[1].append(f), cur[2].append(take)
+            f, c, room = f + take, c - take, room - -(-take // BLOCK) * BLOCK
+            if room <= 0:
+                out.append(cur)
+                cur, room = ([], [], []), max_samples
+    if cur[0]:
+        out.append(cur)
+    return [(np.asarray(a, np.int64), np.asarray(b, np.int64), np.asarray(c, np.int64)) for a, b, c in out]

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["RunningStats", "Z95", "z_for_confidence"]
+__all__ = ["RunningStats", "GroupStats", "Z95", "z_for_confidence"]
 
 #: two-sided 95% normal quantile, for confidence half-widths
 Z95 = 1.959963984540054
@@ -97,3 +97,100 @@ class RunningStats:
         with np.errstate(invalid="ignore", divide="ignore"):
             se = np.sqrt(self.m2 / (n * (n - 1.0)))
         return np.where(n > 1, se, np.inf)
+
+
+class GroupStats:
+    """Count, mean vector and co-moment matrix per sensor and channel: the light groups' joint statistics.
+
+    Each sample of a sensor is a vector x (G,) per channel, its light from
+    each of G groups; the estimates of the group readings are the means
+    x̄_g, and their covariance is ``M / (n (n − 1))`` with M the co-moment
+    Σ(x − x̄)(x − x̄)ᵀ.
+
+    Parameters
+    ----------
+    n_sensors : int
+    n_groups : int
+    n_channels : int
+        2: radiometric and photometric.
+
+    Attributes
+    ----------
+    count : ndarray, shape (S,)
+    mean : ndarray, shape (S, C, G)
+    comoment : ndarray, shape (S, C, G, G)
+
+    Notes
+    -----
+    Blocks merge by the multivariate form of the pairwise update (Chan,
+    Golub, LeVeque 1983): for blocks a, b with n = n_a + n_b and
+    δ = x̄_b − x̄_a,
+
+        M = M_a + M_b + δ δᵀ · n_a n_b / n,
+
+    so a group with a constant estimator keeps exactly zero variance and zero
+    covariance with every other group.
+    """
+
+    def __init__(self, n_sensors: int, n_groups: int, n_channels: int = 2):
+        self.count = np.zeros(n_sensors, np.int64)
+        self.mean = np.zeros((n_sensors, n_channels, n_groups))
+        self.comoment = np.zeros((n_sensors, n_channels, n_groups, n_groups))
+
+    def merge(self, sensor: np.ndarray, count: np.ndarray, mean: np.ndarray, comoment: np.ndarray) -> None:
+        """Merge one block per sensor (``sensor`` has no repeats); ``mean`` (B, C, G), ``comoment`` (B, C, G, G)."""
+        na = self.count[sensor].astype(np.float64)[:, None, None]
+        nb = count.astype(np.float64)[:, None, None]
+        n = na + nb
+        delta = mean - self.mean[sensor]
+        first = (na == 0)[..., None]
+        self.mean[sensor] = np.where(first[..., 0], mean, self.mean[sensor] + delta * (nb / n))
+        outer = delta[..., :, None] * delta[..., None, :] * (na * nb / n)[..., None]
+        self.comoment[sensor] = np.where(first, comoment, self.comoment[sensor] + comoment + outer)
+        self.count[sensor] += count
+
+    @staticmethod
+    def reduce_blocks(block_sensor: np.ndarray, block_count: np.ndarray, shift: np.ndarray, s1: np.ndarray,
+                      cross: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:  # fmt: skip
+        """Collapse kernel-thread blocks into one block per sensor.
+
+        Parameters
+        ----------
+        block_sensor, block_count : ndarray, shape (B,)
+            As for :meth:`RunningStats.reduce_blocks` (blocks of one sensor contiguous).
+        shift, s1 : ndarray, shape (B, G, C)
+            K_g and Σ(x_g − K_g) per block.
+        cross : ndarray, shape (B, G, G, C)
+            Σ(x_g − K_g)(x_h − K_h), filled for h ≤ g (the lower triangle).
+
+        Returns
+        -------
+        sensors, counts : ndarray, shape (S',)
+        means : ndarray, shape (S', C, G)
+        comoments : ndarray, shape (S', C, G, G)
+        """
+        cnt = block_count.astype(np.float64)
+        s1 = np.transpose(s1, (0, 2, 1))  # (B, C, G)
+        low = np.transpose(cross, (0, 3, 1, 2))  # (B, C, G, G)
+        diag = np.einsum("bcgg->bcg", low)
+        p = low + np.transpose(low, (0, 1, 3, 2)) - np.einsum("bcg,gh->bcgh", diag, np.eye(low.shape[-1]))
+        bmean = np.transpose(shift, (0, 2, 1)) + s1 / cnt[:, None, None]
+        bm = p - s1[..., :, None] * s1[..., None, :] / cnt[:, None, None, None]
+        starts = np.flatnonzero(np.r_[True, block_sensor[1:] != block_sensor[:-1]])
+        reps = np.diff(np.r_[starts, len(block_sensor)])
+        sensors = block_sensor[starts]
+        counts = np.add.reduceat(block_count, starts)
+        ref = np.repeat(bmean[starts], reps, axis=0)
+        w = cnt[:, None, None]
+        means = bmean[starts] + np.add.reduceat((bmean - ref) * w, starts) / counts[:, None, None]
+        spread = bmean - np.repeat(means, reps, axis=0)
+        outer = spread[..., :, None] * spread[..., None, :] * w[..., None]
+        comoments = np.add.reduceat(bm + outer, starts)
+        return sensors, counts, means, comoments
+
+    def cov(self) -> np.ndarray:
+        """Covariance of the group means, shape (S, C, G, G): M / (n (n − 1)); inf below 2 samples."""
+        n = self.count.astype(np.float64)[:, None, None, None]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            c = self.comoment / (n * (n - 1.0))
+        return np.where(n > 1, c, np.inf)

@@ -118,6 +118,13 @@ class TraceParams:
     spectral: int  # 1: hero-wavelength transport (scene.spectral_* tables, response tallies)
     hero: wp.vec4i  # set by the kernel per sample: the 4 hero wavelengths' grid nodes (0…400)
     tint: wp.vec4  # spectral throughput / β per hero lane where a path starts (mean 1; ones at a sensor)
+    # -- light-group tallies (see light_contribution and fold_group_sample); unused while group_tally is 0.
+    # Groups of the light records: SceneRec.light_group. One array holds a thread's state, G·(G + 3)
+    # slots from thread·G·(G + 3): this sample's light per group (G), K_g the thread's first sample
+    # per group (G), Σ(x_g − K_g) (G), Σ(x_g − K_g)(x_h − K_h) at g·G + h, h ≤ g (G × G).
+    group_tally: int  # 1: tally each sample's light per group as well as its total
+    n_groups: int  # G
+    group_state: wp.array(dtype=wp.vec2d)  # (threads × G·(G + 3))
 
 
 @wp.func
@@ -542,11 +549,62 @@ def light_contribution(scene: SceneRec, params: TraceParams, li: int, value: wp.
     the trace tallies it; ``tint`` is the path's spectral tint there (see
     :class:`Reflection`). Every place a sample adds emitted light goes
     through here, so per-light tallies (light groups) and per-light scalings
-    have one hook. Grey transport passes the value on unchanged; spectral
-    transport tallies its lanes and returns its spectral (W, lm) responses."""
+    have one hook. Grey transport passes the value on; spectral transport
+    tallies its lanes and passes on its spectral (W, lm) responses. With
+    ``params.group_tally`` the value passed on is also added to this
+    sample's slot of the light's group (``scene.light_group[li]``; a light
+    in no group, or ``li`` = −1, adds to none), in the thread's state (see
+    :class:`TraceParams`)."""
+    v = value
     if params.spectral != 0:
-        return spectral_contribution(scene, params, li, value, tint)
+        v = spectral_contribution(scene, params, li, value, tint)
+    if params.group_tally != 0 and li >= 0:
+        g = scene.light_group[li]
+        if g >= 0:
+            k = params.thread * params.n_groups * (params.n_groups + 3) + g
+            params.group_state[k] = params.group_state[k] + wp.vec2d(v)
+    return v
     return value
+
+
+@wp.func
+def clear_group_sample(params: TraceParams, t: int):
+    """Zero thread ``t``'s per-group slots of this sample."""
+    base = t * params.n_groups * (params.n_groups + 3)
+    for g in range(params.n_groups):
+        params.group_state[base + g] = wp.vec2d(wp.float64(0.0), wp.float64(0.0))
+
+
+@wp.func
+def fold_group_sample(params: TraceParams, t: int, first: int, keep: int):
+    """Add thread ``t``'s sample, per group, to its shifted sums.
+
+    Notes
+    -----
+    With x_g the sample's light from group g and K_g the thread's first
+    sample of it, the thread keeps S_g = Σ(x_g − K_g) and the lower triangle
+    of P_gh = Σ(x_g − K_g)(x_h − K_h) (per channel, float64), from which the
+    host forms each block's mean and co-moment (:mod:`simulator.engine.stats`).
+    A non-finite sample (``keep`` 0) counts as 0 in every group, as it does
+    in the total."""
+    n_g = params.n_groups
+    x0 = t * n_g * (n_g + 3)  # this sample's light per group
+    k0 = x0 + n_g  # shifts
+    s0 = k0 + n_g  # sums
+    p0 = s0 + n_g  # cross sums
+    st = params.group_state
+    for g in range(n_g):
+        if keep == 0:
+            st[x0 + g] = wp.vec2d(wp.float64(0.0), wp.float64(0.0))
+        if first != 0:
+            st[k0 + g] = st[x0 + g]
+        st[x0 + g] = st[x0 + g] - st[k0 + g]  # from here on the slot holds x_g − K_g
+    for g in range(n_g):
+        dg = st[x0 + g]
+        st[s0 + g] = st[s0 + g] + dg
+        for h in range(g + 1):
+            k = p0 + g * n_g + h
+            st[k] = st[k] + wp.cw_mul(dg, st[x0 + h])
 
 
 @wp.func
@@ -876,7 +934,10 @@ def estimate_kernel(
     sensor's wavelength stream (:func:`hero_stream_key`); its lanes are
     projected on every response r of ``scene.response_weights`` and tallied
     likewise in ``response_*[t, r]`` (rows 0 and 1, radiometric and
-    photopic, are also the W and lm channels)."""
+    photopic, are also the W and lm channels).
+
+    With ``params.group_tally`` the same samples are also summed per light
+    group (:func:`fold_group_sample`); off, that costs one branch a sample."""
     t = wp.tid() + offset
     sid = thread_sensor[t]
     first = thread_first_sample[t]
@@ -899,7 +960,10 @@ def estimate_kernel(
         if params.spectral != 0:
             prm.hero = hero_nodes(wp.randf(wp.rand_init(hero_stream_key(key), first + j)))
             scene.response_lanes[t] = wp.vec4(0.0, 0.0, 0.0, 0.0)
+        if prm.group_tally != 0:
+            clear_group_sample(prm, t)
         v = sample_sensor(scene, s, prm, wp.rand_init(key, first + j))
+        keep = int(1)
         ok = wp.isfinite(v[0]) and wp.isfinite(v[1])
         lanes = wp.vec4(0.0, 0.0, 0.0, 0.0)
         if n_resp > 0:
@@ -907,8 +971,11 @@ def estimate_kernel(
             ok = ok and wp.isfinite(wp.dot(lanes, lanes))
         if not ok:
             bad += 1
+            keep = 0
             v = wp.vec2(0.0, 0.0)
             lanes = wp.vec4(0.0, 0.0, 0.0, 0.0)
+        if prm.group_tally != 0:
+            fold_group_sample(prm, t, wp.where(j == 0, 1, 0), keep)
         x = wp.vec2d(wp.float64(v[0]), wp.float64(v[1]))
         if j == 0:
             shift = x

@@ -448,6 +448,8 @@ class Scene:
     meters_per_unit: float = 1.0
     up_axis: str = "Z"
     warnings: list[str] = field(default_factory=list)
+    #: every USD collection on the stage (``/prim.collection:name``) → the light prim paths it includes
+    collections: dict[str, tuple[str, ...]] = field(default_factory=dict)
 
     @property
     def bounds(self) -> tuple[np.ndarray, np.ndarray]:

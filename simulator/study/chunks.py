@@ -2,8 +2,8 @@
 
 A chunk traces the light groups of one trace group
 (:class:`~simulator.study.scenarios.TraceGroup`) on one block of candidate
-sensors. Its seeds derive from (study seed, trace key, block, light group)
-alone, so a chunk gives the same numbers wherever and whenever it runs.
+sensors, all its groups in one pass. Its seed derives from (study seed,
+trace key, block) alone, so a chunk gives the same numbers wherever and whenever it runs.
 
 The store is a folder: ``chunks/<id>.npz`` per finished chunk and
 ``manifest.json`` listing them with their SHA-256. Both are written
@@ -37,7 +37,7 @@ from simulator.study.sun import sun_direction, sun_frame
 __all__ = ["ChunkSpec", "ChunkStore", "compute_chunk", "atomic_write", "make_chunks", "StudyInterrupted"]
 
 #: bump when a change to the tracing would change a chunk's numbers
-CHUNK_FORMAT = 2
+CHUNK_FORMAT = 3
 
 
 class StudyInterrupted(Exception):
@@ -59,7 +59,7 @@ class ChunkSpec:
     sensor_ids: tuple[int, ...]  #: indices into the study's candidate list
     sensors: tuple[Sensor, ...]
     sim: dict
-    seeds: tuple[tuple[str, int], ...]
+    seed: int
     levels: tuple[tuple[tuple[str, float], ...], ...] = ()  #: the trace group's dimming vectors (adaptive targets)
     threads: int = 0
 
@@ -99,14 +99,14 @@ def make_chunks(trace_groups, sensors: list[Sensor], groups: dict[str, list[str]
         levels = tuple(tuple((g, float(sc.levels.get(g, 0.0))) for g in tg.groups) for sc in tg.scenarios)
         for b, lo in enumerate(range(0, len(sensors), block)):
             ids = tuple(range(lo, min(lo + block, len(sensors))))
-            seeds = tuple((g, derive_seed(seed, tg.key, b, g)) for g in tg.groups)
+            cseed = derive_seed(seed, tg.key, b)
             ident = json.dumps({
                 "format": CHUNK_FORMAT, "stage": stage_sha, "light_units": light_units, "key": tg.key, "groups": gl,
-                "sensors": [_sensor_text(sensors[i]) for i in ids], "sim": sim, "seeds": seeds, "levels": levels,
+                "sensors": [_sensor_text(sensors[i]) for i in ids], "sim": sim, "seed": cseed, "levels": levels,
             }, sort_keys=True)  # fmt: skip
             cid = hashlib.sha256(ident.encode()).hexdigest()[:20]
             out.append(ChunkSpec(cid, tg.key, b, str(stage), light_units, tuple(sorted(tg.variants.items())), tg.sun, gl, ids,
-                                 tuple(sensors[i] for i in ids), sim, seeds, levels))  # fmt: skip
+                                 tuple(sensors[i] for i in ids), sim, cseed, levels))  # fmt: skip
     return out
 
 
@@ -134,16 +134,17 @@ def compute_chunk(spec: ChunkSpec) -> dict:
     t0 = time.perf_counter()
     scene = chunk_scene(spec)
     sim = SimulationConfig(**spec.sim)
-    gr = trace_groups(scene, list(spec.sensors), {g: list(ls) for g, ls in spec.groups}, sim, dict(spec.seeds), threads=spec.threads,
+    gr = trace_groups(scene, list(spec.sensors), {g: list(ls) for g, ls in spec.groups}, sim, spec.seed, threads=spec.threads,
                       scenarios=[dict(lv) for lv in spec.levels])  # fmt: skip
     return {
         "id": spec.id, "names": gr.names, "mean": gr.mean, "stderr": gr.stderr, "cov": gr.cov, "samples": gr.samples,
-        "trace_s": gr.trace_s, "wall_s": time.perf_counter() - t0, "host": socket.gethostname(), "pid": os.getpid(),
+        "trace_s": gr.trace_s, "trace_cpu_s": gr.trace_cpu_s, "wall_s": time.perf_counter() - t0, "host": socket.gethostname(), "pid": os.getpid(),
     }  # fmt: skip
 
 
 def readings_of(result: dict) -> GroupReadings:
-    return GroupReadings(list(result["names"]), result["mean"], result["stderr"], result["cov"], result["samples"], result["trace_s"])
+    return GroupReadings(list(result["names"]), result["mean"], result["stderr"], result["cov"], result["samples"], result["trace_s"],
+                         float(result.get("trace_cpu_s", 0.0)))  # fmt: skip
 
 
 class ChunkStore:
@@ -183,7 +184,7 @@ class ChunkStore:
         """Write a chunk, then its manifest entry, each atomically."""
         buf = io.BytesIO()
         np.savez(buf, names=np.array(result["names"]), mean=result["mean"], stderr=result["stderr"], cov=result["cov"],
-                 samples=result["samples"], trace_s=result["trace_s"])  # fmt: skip
+                 samples=result["samples"], trace_s=result["trace_s"], trace_cpu_s=np.float64(result.get("trace_cpu_s", 0.0)))  # fmt: skip
         data = buf.getvalue()
         name = f"{result['id']}.npz"
         atomic_write(self.dir / name, data)

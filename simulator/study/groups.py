@@ -1,9 +1,10 @@
-"""Light groups: each group's contribution traced once per sensor, recombined for any dimming vector.
+"""Light groups: every group's contribution traced in one pass per sensor, recombined for any dimming vector.
 
 Light transport is linear in emission: the reading of a sensor with group
 ``g`` at level ``d_g`` is ``E(d) = Σ_g d_g · E_g``, where ``E_g`` is the
 reading with only group ``g`` lit at its authored emission. So a study
-traces each group once and every dimming scenario is a weighted sum.
+traces the groups of a trace group once and every dimming scenario is a
+weighted sum.
 
 Notes
 -----
@@ -13,37 +14,55 @@ and channel), the recombined estimate and its standard error are
 .. math:: \\hat E(d) = d^\\top \\hat E, \\qquad
           \\sigma(d) = \\sqrt{d^\\top C\\, d}.
 
-:func:`trace_groups` traces each group as its own run: a copy of the scene
-holding only that group's lights, read by the usual per-sensor plan, with a
-seed of its own. The groups' random streams are independent, so ``C`` is
-diagonal (``C_gg = σ_g²``; the covariance between groups is zero). The cost
-is one run per group. A one-pass kernel that tallies each sample's
-contribution per light group (the light index of each next-event estimate
-and of each emitter a path hits) would trace all groups on shared paths for
-about the cost of one run, and its per-sample group vectors would give the
-full covariance; :class:`GroupReadings` is the interface it would fill.
+One pass. :func:`trace_groups` traces a copy of the scene holding the
+lights of all the groups (no emissive surfaces, no light of no group) once,
+by the per-sensor plan of that union of lights. The estimator kernel tallies
+every emitted-light contribution to a sample (each next-event estimate, each
+light a direction hits, each emitter a path meets) into the slot of its
+light's group as well as into the total (``light_contribution`` in
+:mod:`simulator.kernels.estimators`), so each sample is a vector
+``x = (x_1 … x_G)`` per channel with ``Σ_g x_g`` the sample itself. Each
+kernel thread keeps shifted sums ``Σ(x_g − K_g)`` and the lower triangle of
+``Σ(x_g − K_g)(x_h − K_h)`` (float64, K its first sample), merged on the
+host by the multivariate pairwise update
+(:class:`simulator.engine.stats.GroupStats`); ``C = M / (n(n − 1))`` with
+``M`` the co-moment matrix. The groups share every path, so ``C`` is the
+full covariance: negative where one direction reaches either one group or
+another (the sky through the window, or a lamp on the ceiling), positive
+where one path carries both groups' interreflected light. The sum of the
+group means equals the pass's total to float32 rounding (tested to 1e-5).
+
+Exactness where a closed form applies: sensors the union's plan reads in
+closed form (``analytic``, ``exact``) are read per group in it (standard
+error and covariance 0), and where the pass samples direct light only
+(``light``, ``mis``), a group whose own lights have a closed form at that
+sensor is read in it in place of its sampled estimate.
 
 Adaptive targets. With ``rel_error`` set and the trace group's scenarios
-given, the target is the recombined reading's, not each group's own: a pilot
-of ``samples`` per sensor and group estimates the group readings ``m_g``;
-in scenario ``j`` the half-width budget ``rel·E_j`` is shared in proportion
-to the contributions ``w_jg = d_jg·m_g / E_j`` (which sum to 1), so that
-``Σ_g (d_jg·σ_g)² ≤ (rel·E_j / z)²`` holds when each group meets
+given, a sensor stops when the recombined reading of every scenario meets
+the target, ``z·sqrt(dᵀCd) ≤ max(rel·|dᵀÊ|, abs)`` in both channels (the
+engine's stopping rule over the J scenarios as 2J channels;
+:class:`simulator.engine.driver.LightGroups`); without scenarios, when the
+total does. Every scenario's target is met as a run's would be (up to the
+sample cap); the pass draws the samples of the sensor's hardest scenario, and
+the easier scenarios come out more precise than asked.
 
-.. math:: z\\,\\sigma_g \\le \\mathrm{rel}_g\\, m_g, \\qquad
-          \\mathrm{rel}_g = \\mathrm{rel} \\cdot \\min_j \\sqrt{E_j / (d_{jg}\\, m_g)} \\;\\ge\\; \\mathrm{rel}.
-
-A group that gives a tenth of a sensor's light may stop at √10 times the
-relative error, about a tenth of the samples. Targets are rounded down to
-steps of √2 (sensors with one step are run together) and capped at
-:data:`MAX_GROUP_REL_ERROR`. The pilot is an estimate, so the recombined
-target is met approximately, as an adaptive run's is.
-
-The engine's light mask (``Engine.set_light_mask``) only culls next-event
-estimates at a sensor's first vertex (it is the planner's "light wholly
-behind the sensor" switch); light a masked group sends by interreflection
-or that a cosine-sampled ray hits would still be counted, so it cannot
-switch a group off. That is why a group is traced on its own scene copy.
+Cost (the bundled ``configs/studies/office_study.toml``, 54 sensors, first
+trace group 12 scenarios over 3 groups; 2-core CPU shared with other work,
+so wall times varied up to 2× between repeats; CPU seconds of the process
+are steadier). At a fixed budget of 1024 samples per sensor, the pass cost
+0.99–1.01× the CPU time of one run of a scenario with all three groups lit
+(the tallies' overhead is within the noise), where one run per group cost
+1.32×. Adaptive (5%, at most 4096 samples), the pass cost 1.10–1.17× the
+CPU time of one run of the hardest scenario with all groups lit: it drew
+1.16× that run's samples, since its hardest scenario (sky without the
+window row) asks more. One run
+per group, whose groups could stop apart (a group with a small share of a
+sensor's light stopped early, the sky alone ran to the cap), cost 0.73×
+there, its recombined targets met only approximately and without the
+covariance. ``probesim study`` records these figures in ``study.json``
+(``cost``: wall and CPU seconds per trace group against the single run,
+samples and time per sample).
 """
 
 from __future__ import annotations
@@ -56,10 +75,7 @@ import numpy as np
 
 from simulator.scene.model import Geometry, Scene, Sensor
 
-__all__ = ["GroupReadings", "trace_groups", "group_scene", "derive_seed", "group_targets", "MAX_GROUP_REL_ERROR"]
-
-#: loosest relative target a group trace is given
-MAX_GROUP_REL_ERROR = 0.5
+__all__ = ["GroupReadings", "trace_groups", "group_scene", "derive_seed"]
 
 
 def derive_seed(*parts) -> int:
@@ -84,8 +100,12 @@ class GroupReadings:
     cov : ndarray, shape (S, 2, G, G)
         Covariance of the group estimates per sensor and channel.
     samples : ndarray, shape (G, S), int64
+        Samples per sensor (one pass: the same for every group).
     trace_s : ndarray, shape (G,)
-        Wall-clock seconds per group trace.
+        Wall-clock seconds of the pass, shared evenly among the groups (their sum is the pass's time).
+    trace_cpu_s : float
+        CPU seconds of the pass (this process, all its threads): a cost figure
+        less sensitive than wall time to other work on the machine.
     """
 
     names: list[str]
@@ -94,6 +114,7 @@ class GroupReadings:
     cov: np.ndarray
     samples: np.ndarray
     trace_s: np.ndarray
+    trace_cpu_s: float = 0.0
 
     def combine(self, levels: dict[str, float]) -> tuple[np.ndarray, np.ndarray]:
         """Readings ``(mean, stderr)``, each (S, 2), of the dimming vector ``levels``
@@ -112,56 +133,43 @@ def group_scene(scene: Scene, light_names: list[str]) -> Scene:
     return replace(scene, geometry=geom, lights=[l for l in scene.lights if l.name in keep], sensors=[], warnings=[])
 
 
-def group_targets(pilot: np.ndarray, scenarios: list[dict[str, float]], names: list[str], rel_error: float) -> np.ndarray:
-    """Per-group, per-sensor relative targets ``rel_g`` (G, S) from pilot readings (see Notes of the module).
-
-    Parameters
-    ----------
-    pilot : ndarray, shape (G, S, 2)
-        Pilot group readings.
-    scenarios : list of dict
-        Dimming vectors (group name → level) of the trace group.
-    names : list of str
-        Group order of ``pilot``.
-    rel_error : float
-        The recombined readings' target.
-    """
-    m = np.abs(pilot).max(axis=2)  # both channels are proportional for grey scenes; take the larger
-    d = np.array([[float(sc.get(n, 0.0)) for n in names] for sc in scenarios])  # (J, G)
-    e = np.einsum("jg,gs->js", d, m)  # (J, S)
-    out = np.full(m.shape, np.inf)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        for g in range(len(names)):
-            lit = d[:, g] > 0
-            if not lit.any():
-                continue
-            ratio = e[lit] / (d[lit, g][:, None] * m[g][None, :])  # (J_lit, S), >= 1
-            out[g] = np.nanmin(np.where(np.isfinite(ratio), ratio, np.inf), axis=0)
-    rel = rel_error * np.sqrt(np.maximum(out, 1.0))
-    steps = np.floor(2.0 * np.log2(np.minimum(rel, MAX_GROUP_REL_ERROR) / rel_error) + 1e-9)
-    return np.minimum(rel_error * 2.0 ** (np.maximum(steps, 0.0) / 2.0), MAX_GROUP_REL_ERROR)
+#: methods that read direct light only: a group whose light has a closed form there may be read in it
+_DIRECT_METHODS = ("light", "mis", "bsdf")
 
 
-def _run_targets(engine, plan, sim, rel: np.ndarray):
-    """Like :func:`simulator.pipeline.run_plan`, with a relative target per sensor (run in groups of equal target)."""
-    n = len(plan.sensors)
-    mean, stderr, samples = np.zeros((n, 2)), np.zeros((n, 2)), np.zeros(n, np.int64)
-    engine.set_light_mask(plan.light_mask([l.name for l in engine.scene.lights]))
-    for method, ids in plan.groups().items():
-        for r in np.unique(rel[ids]) if method != "analytic" else [None]:
-            sub = ids if r is None else ids[rel[ids] == r]
-            res = engine.run(
-                method, samples=sim.samples, seed=sim.seed, rel_error=None if r is None else float(r), abs_error=sim.abs_error,
-                max_samples=sim.sample_cap, time_limit_s=None, max_depth=sim.max_depth, component=sim.component,
-                sensor_ids=sub, confidence=sim.confidence,
-            )  # fmt: skip
-            mean[sub], stderr[sub], samples[sub] = res.mean[sub], res.stderr[sub], res.samples[sub]
-    return mean, stderr, samples
+def _closed_forms_of_groups(sub: Scene, sensors: list[Sensor], names: list[str], groups: dict[str, list[str]], plan, sim,
+                            threads: int, mean: np.ndarray, cov: np.ndarray) -> None:  # fmt: skip
+    """Where the pass read a sensor by direct-light sampling, read each group that has a closed form
+    there on its own (the planner's choice for that group's lights alone), in place of its sampled
+    estimate: ``mean[g, s]`` exact, its covariance row and column 0. The sampled estimate held
+    direct light only (the method does not bounce), so the exact value replaces it wholly."""
+    from simulator.engine.driver import Engine
+    from simulator.plan.planner import make_plan
+
+    direct = np.array([i for i, sp in enumerate(plan.sensors) if sp.method in _DIRECT_METHODS], np.int64)
+    if not len(direct) or len(names) < 2:
+        return  # one group: the union's plan is that group's own
+    ss = [sensors[i] for i in direct]
+    for k, n in enumerate(names):
+        keep = set(groups[n])
+        gs = replace(sub, lights=[l for l in sub.lights if l.name in keep])
+        gp = make_plan(gs, ss, "auto", sim.component)
+        closed = {m: ids for m, ids in gp.groups().items() if m in ("analytic", "exact")}
+        if not closed:
+            continue
+        eng = Engine(gs, ss, device=sim.device, threads=threads)
+        eng.set_light_mask(gp.light_mask([l.name for l in gs.lights]))
+        for m, ids in closed.items():
+            r = eng.run(m, samples=0, seed=0, sensor_ids=ids, component=sim.component)
+            rows = direct[ids]
+            mean[k, rows] = r.mean[ids]
+            cov[rows, :, k, :] = 0.0
+            cov[rows, :, :, k] = 0.0
 
 
-def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str]], sim, seeds: dict[str, int],
+def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str]], sim, seed: int,
                  threads: int = 0, scenarios: list[dict[str, float]] | None = None) -> GroupReadings:  # fmt: skip
-    """Trace each light group's contribution to every sensor.
+    """Trace every light group's contribution to every sensor in one pass.
 
     Parameters
     ----------
@@ -171,56 +179,50 @@ def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str
     groups : dict of str to list of str
         Group name → light prim paths, in the order the result keeps.
     sim : SimulationConfig-like
-        Samples, method, adaptive target; its ``seed`` is replaced per group.
-    seeds : dict of str to int
-        Seed per group (independent streams).
+        Samples, method, adaptive target; its ``seed`` is replaced by ``seed``.
+    seed : int
+        Seed of the pass (all groups share its paths).
     threads : int
         CPU worker threads of the engine; 0 = all cores.
     scenarios : list of dict, optional
         The dimming vectors these readings will be recombined into. With an
-        adaptive ``sim``, each group's target follows from them (see Notes of
-        the module); without, every group must meet ``rel_error`` on its own.
+        adaptive ``sim`` a sensor stops when every one of them meets
+        ``rel_error`` (see Notes of the module); without, when the total does.
 
     Returns
     -------
     GroupReadings
-        With a diagonal covariance (independent traces; see Notes of the module).
+        With the full covariance between groups (shared paths).
     """
-    from simulator.engine.driver import Engine
-    from simulator.pipeline import run_plan
+    from simulator.engine.driver import Engine, LightGroups, load_kernels
     from simulator.plan.planner import make_plan
 
+    load_kernels(sim.device)  # once per process: not part of the pass's time
     names = list(groups)
     n_g, n_s = len(names), len(sensors)
-    mean = np.zeros((n_g, n_s, 2))
-    stderr = np.zeros((n_g, n_s, 2))
-    samples = np.zeros((n_g, n_s), np.int64)
-    trace_s = np.zeros(n_g)
-    runs = []
-    for k, name in enumerate(names):
-        sub = group_scene(scene, groups[name])
-        t0 = time.perf_counter()
-        engine = Engine(sub, sensors, device=sim.device, threads=threads)
-        plan = make_plan(sub, sensors, sim.method, sim.component)
-        runs.append((engine, plan, replace(sim, seed=int(seeds[name]))))
-        trace_s[k] = time.perf_counter() - t0
+    owner = {l: k for k, n in enumerate(names) for l in groups[n]}
+    t0, c0 = time.perf_counter(), time.process_time()
+    sub = group_scene(scene, list(owner))
+    engine = Engine(sub, sensors, device=sim.device, threads=threads)
+    plan = make_plan(sub, sensors, sim.method, sim.component)
+    light_group = np.array([owner[l.name] for l in sub.lights], np.int64)
+    levels = None
     if sim.adaptive and scenarios:
-        for k, (engine, plan, s) in enumerate(runs):
-            t0 = time.perf_counter()
-            mean[k] = run_plan(engine, plan, replace(s, rel_error=None)).mean
-            trace_s[k] += time.perf_counter() - t0
-        rel = group_targets(mean, scenarios, names, sim.rel_error)
-        for k, (engine, plan, s) in enumerate(runs):
-            t0 = time.perf_counter()
-            mean[k], stderr[k], samples[k] = _run_targets(engine, plan, s, rel[k])
-            trace_s[k] += time.perf_counter() - t0
-    else:
-        for k, (engine, plan, s) in enumerate(runs):
-            t0 = time.perf_counter()
-            res = run_plan(engine, plan, s)
-            trace_s[k] += time.perf_counter() - t0
-            mean[k], stderr[k], samples[k] = res.mean, res.stderr, res.samples
+        levels = np.array([[float(sc.get(n, 0.0)) for n in names] for sc in scenarios])
+    lg = LightGroups(light_group, n_g, levels)
+    mean = np.zeros((n_g, n_s, 2))
     cov = np.zeros((n_s, 2, n_g, n_g))
-    idx = np.arange(n_g)
-    cov[:, :, idx, idx] = np.transpose(stderr**2, (1, 2, 0))
-    return GroupReadings(names, mean, stderr, cov, samples, trace_s)
+    samples = np.zeros(n_s, np.int64)
+    engine.set_light_mask(plan.light_mask([l.name for l in sub.lights]))
+    for method, ids in plan.groups().items():
+        r = engine.run_groups(
+            method, lg, samples=sim.samples, seed=int(seed), rel_error=sim.rel_error, abs_error=sim.abs_error,
+            max_samples=sim.sample_cap, time_limit_s=None, max_depth=sim.max_depth, component=sim.component,
+            sensor_ids=ids, confidence=sim.confidence,
+        )  # fmt: skip
+        mean[:, ids], cov[ids], samples[ids] = r.group_mean[:, ids], r.group_cov[ids], r.samples[ids]
+    if sim.method == "auto":
+        _closed_forms_of_groups(sub, sensors, names, groups, plan, sim, threads, mean, cov)
+    stderr = np.sqrt(np.maximum(np.transpose(np.diagonal(cov, axis1=2, axis2=3), (2, 0, 1)), 0.0))
+    trace_s = np.full(n_g, (time.perf_counter() - t0) / max(n_g, 1))
+    return GroupReadings(names, mean, stderr, cov, np.broadcast_to(samples, (n_g, n_s)).copy(), trace_s, time.process_time() - c0)

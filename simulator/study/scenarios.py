@@ -11,6 +11,7 @@ contributes nothing: its level is set to 0 in that scenario (and said so).
 from __future__ import annotations
 
 import itertools
+from pathlib import Path
 from dataclasses import dataclass, field
 
 
@@ -92,27 +93,50 @@ def expand_scenarios(specs: list[ScenarioSpec], group_names: list[str], file_lab
     return out
 
 
+def _collection_members(scene: Scene, spec: GroupSpec, names: list[str], key: str, file_label: str) -> list[int]:
+    """Indices into ``names`` of the lights the group's USD collection includes (resolved by the stage reader)."""
+    c = spec.collection
+    if c not in scene.collections:
+        have = ", ".join(scene.collections) or "none"
+        raise UserError(f"{file_label}: {key}: no collection {c!r} in the stage {Path(scene.path).name} (collections: {have})")
+    members = set(scene.collections[c])
+    ids = [i for i, n in enumerate(names) if n in members]
+    if not ids:
+        raise UserError(f"{file_label}: {key}: collection {c!r} includes no light")
+    return ids
+
+
 def resolve_groups(scene: Scene, specs: list[GroupSpec], file_label: str) -> tuple[dict[str, list[str]], list[str]]:
     """Light prim paths per group, and the scene's lights in no group.
+
+    A group's ``lights`` are prim paths or fnmatch patterns; its
+    ``collection`` a USD collection, ``/prim.collection:name``, whose
+    membership the stage reader resolved (``Scene.collections``).
 
     Raises
     ------
     UserError
-        A pattern that matches no light, or a light in two groups.
+        A pattern that matches no light, a collection the stage does not
+        have or that includes no light, or a light in two groups.
     """
     names = [l.name for l in scene.lights]
     owner: dict[str, str] = {}
     out: dict[str, list[str]] = {}
     for k, g in enumerate(specs):
         lights: list[str] = []
+        found = []
         for j, pat in enumerate(g.lights):
             ids = match_prims(names, pat)
             if not ids:
                 raise UserError(f"{file_label}: group[{k}].lights[{j}]: no light matches {pat!r} "
                                 f"(lights: {', '.join(names) or 'none'})")  # fmt: skip
+            found.append((f"group[{k}].lights[{j}]", ids))
+        if g.collection is not None:
+            found.append((f"group[{k}].collection", _collection_members(scene, g, names, f"group[{k}].collection", file_label)))
+        for key, ids in found:
             for i in ids:
                 if names[i] in owner and owner[names[i]] != g.name:
-                    raise UserError(f"{file_label}: group[{k}].lights[{j}]: {names[i]} is already in group {owner[names[i]]!r}")
+                    raise UserError(f"{file_label}: {key}: {names[i]} is already in group {owner[names[i]]!r}")
                 owner[names[i]] = g.name
                 if names[i] not in lights:
                     lights.append(names[i])

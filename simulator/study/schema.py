@@ -49,6 +49,10 @@ Schema
     name = "window_row"
     lights = ["/Office/Lights/WindowRow/*"]
 
+    [[group]]                          # ... or a USD collection (UsdCollectionAPI)
+    name = "window_side"
+    collection = "/Office/Lights.collection:windowSide"
+
     [[scenario]]                       # levels: group -> dimming (lists: a product)
     name = "evening"
     levels = { window_row = [0.5, 1.0], corridor_row = 1.0 }
@@ -169,8 +173,17 @@ class CandidateSpec(_Model):
 
 
 class GroupSpec(_Model):
+    """A light group: prim paths or patterns (``lights``), a USD collection, or both (their union)."""
+
     name: str = Field(min_length=1)
-    lights: list[str] = Field(min_length=1)
+    lights: list[str] = []
+    collection: str | None = Field(None, min_length=1)
+
+    @model_validator(mode="after")
+    def _some_lights(self):
+        if not self.lights and self.collection is None:
+            raise ValueError("give lights (prim paths or patterns) or a collection")
+        return self
 
 
 class SunSpec(_Model):

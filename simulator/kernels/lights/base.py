@@ -109,6 +109,7 @@ class SceneRec:
     response_weights: wp.array2d(dtype=float)  # (responses × 401): a lane's weight 400·q/w
     response_lanes: wp.array(dtype=wp.vec4)  # per kernel thread: this sample's spectral density per hero lane
     colour_weights: wp.array2d(dtype=float)  # (3 × 401): a lane's weight of linear sRGB (cd/m²), for probe maps
+    light_group: wp.array(dtype=wp.int32)  # per light record: its light group, −1 for none (TraceParams.group_tally)
 
 
 @wp.struct

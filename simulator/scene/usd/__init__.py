@@ -103,6 +103,10 @@ Geometry lights
     a warning (the prim is read as a plain surface).
 Sensors
     See "Stage-authored sensors" below.
+Collections
+    Every ``UsdCollectionAPI`` collection is resolved to the lights it
+    includes (``Scene.collections``, :mod:`.collections`), so a study's light
+    group can name one.
 Variants
     ``load_stage(..., variants={"reflectance": "rho_0_9"})`` (a config's
     ``variants`` table) selects that variant on every prim that has the
@@ -180,6 +184,7 @@ from pxr import Usd, UsdGeom, UsdLux
 
 from simulator.errors import UserError
 from simulator.scene.model import Geometry, Light, LightKind, Scene, Sensor
+from simulator.scene.usd.collections import light_collections
 from simulator.scene.usd.context import _Context
 
 # The public constants live with the code that uses them and are re-exported
@@ -323,6 +328,7 @@ def load_stage(
         meters_per_unit=mpu,
         up_axis=up_axis,
         warnings=ctx.warnings,
+        collections=light_collections(stage, lights),
     )
 
 
