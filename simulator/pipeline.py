@@ -142,6 +142,27 @@ def _versions() -> dict:
     }
 
 
+
+def config_engine(cfg, scene, sensors, device: str | None = None, threads: int | None = None, hero=None):
+    """The engine a config's run reads its sensors with: on the config's device
+    and threads unless given, tracing hero wavelengths where the scene's
+    transport is not grey (``hero``: the tables, when the caller has them).
+    Every command that reads a config (run, bench, chart) builds it here, so
+    a coloured room is traced the same way by each."""
+    from simulator.engine.driver import Engine
+    from simulator.spectra.transport import choose_transport
+
+    sim = cfg.simulation
+    engine = Engine(scene, sensors, device=sim.device if device is None else device,
+                    threads=sim.threads if threads is None else threads)  # fmt: skip
+    if hero is None and choose_transport(scene)[0] != "grey":
+        from simulator.spectra.traced import run_hero_tables
+
+        hero = run_hero_tables(cfg, scene)
+    if hero is not None:
+        engine.set_hero_tables(hero)
+    return engine
+
 def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     """Run a validated config and write its CSV and run record.
 
@@ -161,8 +182,6 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     ``interrupted`` is True. SIGINT stays deferred until the files are in
     place, so a second Ctrl-C cannot leave a file half-written.
     """
-    from simulator.engine.driver import Engine  # imports warp
-
     from simulator.spectra.transport import choose_transport
 
     t0 = time.perf_counter()
@@ -189,9 +208,7 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
         probes_method, why = probe_method(scene, sim.method, sim.component)
         reason += f"; probes: {why}"
     t_load = time.perf_counter()
-    engine = Engine(scene, plain, device=sim.device, threads=sim.threads)
-    if hero is not None:
-        engine.set_hero_tables(hero)
+    engine = config_engine(cfg, scene, plain, hero=hero)
     for w in _scene_warnings(scene, engine) + ([] if hero is None else hero.notes):
         log(f"warning: {w}")
     t_setup = time.perf_counter()

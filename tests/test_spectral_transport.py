@@ -341,3 +341,17 @@ def test_the_cost_measurement_runs_and_sees_the_green_walls(capsys):
     m = measure(1000, "cpu", (0.2, 0.7, 0.3), repeats=1)
     bias = m["one channel"]["mean"][:, 1] / m["hero"]["mean"][:, 1] - 1.0
     assert bias.mean() > 0.04, bias
+
+
+def test_every_command_traces_a_coloured_room_as_a_run_does(tmp_path):
+    """``probesim bench`` and ``probesim chart`` build their engine with
+    :func:`simulator.pipeline.config_engine`, as ``probesim run`` does: a
+    coloured room gets the hero tables (so the red furnace's lux is the
+    spectral value, not the grey reduction 20% off), a grey one none."""
+    from simulator.pipeline import collect_sensors, config_engine, load_scene
+
+    for rgb, spectral in ((RED, True), ((0.5, 0.5, 0.5), False)):
+        cfg = load_config(_config(tmp_path, rgb, samples=16))
+        scene = load_scene(cfg)
+        engine = config_engine(cfg, scene, collect_sensors(cfg, scene))
+        assert (engine.hero_tables is not None) == spectral, rgb

@@ -26,7 +26,7 @@ import numpy as np
 from simulator.bundled import bundled_configs
 from simulator.config.loader import load_config
 from simulator.plan.planner import MC_METHODS
-from simulator.pipeline import collect_sensors, load_scene
+from simulator.pipeline import collect_sensors, config_engine, load_scene
 
 __all__ = ["BenchRow", "default_configs", "run_bench", "format_bench", "processor_name"]
 
@@ -91,8 +91,6 @@ def run_bench(configs: list[Path], device: str = "cpu", samples: int = 4096, cap
     Returns the rows and a dict with the device, processor, threads and the
     1-thread vs all-threads speed-up.
     """
-    from simulator.engine.driver import Engine  # imports warp
-
     rows: list[BenchRow] = []
     info: dict = {"processor": processor_name(), "cores": os.cpu_count()}
     for path in configs:
@@ -100,7 +98,7 @@ def run_bench(configs: list[Path], device: str = "cpu", samples: int = 4096, cap
         scene = load_scene(cfg)
         sensors = collect_sensors(cfg, scene)
         sensors = [s for s in sensors if s.kind.name != "PROBE"]
-        engine = Engine(scene, sensors, device=device)
+        engine = config_engine(cfg, scene, sensors, device=device, threads=0)
         info["device"] = engine.device
         info["threads"] = engine.threads
         from simulator.commands.bench_reference import reference_path
@@ -145,7 +143,7 @@ def run_bench(configs: list[Path], device: str = "cpu", samples: int = 4096, cap
         sensors = [s for s in collect_sensors(cfg, scene) if s.kind.name != "PROBE"]
         rates = {}
         for threads in (1, os.cpu_count() or 1):
-            eng = Engine(scene, sensors, device="cpu", threads=threads)
+            eng = config_engine(cfg, scene, sensors, device="cpu", threads=threads)
             eng.run("path", samples=64, seed=1)
             t0 = time.perf_counter()
             r = eng.run("path", samples=2048, seed=2)

@@ -73,8 +73,7 @@ def read_reference(path: Path) -> dict[str, tuple[float, float]]:
 def reference_curve(config: Path, device: str = "cpu", max_seconds: float = 60.0, first: int = 64, log=print) -> ReferenceCurve:
     """Doubling fixed budgets of the planned run, until one takes ``max_seconds``."""
     from simulator.config.loader import load_config
-    from simulator.engine.driver import Engine
-    from simulator.pipeline import collect_sensors, load_scene, run_plan
+    from simulator.pipeline import collect_sensors, config_engine, load_scene, run_plan
     from simulator.plan.planner import make_plan
 
     t0 = time.perf_counter()
@@ -89,7 +88,7 @@ def reference_curve(config: Path, device: str = "cpu", max_seconds: float = 60.0
     sr = np.array([ref[s.name][1] for s in sensors])
     use = r > 0
     plan = make_plan(scene, sensors, cfg.simulation.method, cfg.simulation.component)
-    engine = Engine(scene, sensors, device=device)
+    engine = config_engine(cfg, scene, sensors, device=device, threads=0)
     engine.run("path", samples=4, seed=1)  # load the kernels before timing
     curve = ReferenceCurve(config.stem, len(sensors), engine.device, time.perf_counter() - t0,
                            methods={m: len(ix) for m, ix in plan.groups().items()})  # fmt: skip

@@ -281,7 +281,6 @@ def _reference(cfg, engine, sensors, max_seconds: float, cache_dir: Path, log) -
 
 def _skip_reason(method: str, scene, sensors, component: str) -> str:
     from simulator.engine.driver import METHOD_FLAGS
-    from simulator.plan.planner import analytic_refusal
 
     if method in ("analytic", "exact"):
         from simulator.plan.planner import closed_form_refusal
@@ -371,8 +370,7 @@ def chart_config(
     takes ``max_seconds``, or at ``max_budget`` samples per sensor (a fixed
     ladder, whatever the machine: what the tests use)."""
     from simulator.config.loader import load_config
-    from simulator.engine.driver import Engine
-    from simulator.pipeline import collect_sensors, load_scene
+    from simulator.pipeline import collect_sensors, config_engine, load_scene
     from simulator.scene.model import SensorKind
 
     cfg = load_config(path)
@@ -381,7 +379,7 @@ def chart_config(
     if not sensors:
         raise UserError(f"{cfg.path}: chart: no irradiance, radiance or patch sensors to chart")
     name = Path(cfg.path).stem
-    engine = Engine(scene, sensors, device=device, threads=cfg.simulation.threads)
+    engine = config_engine(cfg, scene, sensors, device=device)
     sim = cfg.simulation
     log(f"{name}: {len(sensors)} sensors on {engine.device}")
     ref, ref_se, ref_kind, c = _reference(cfg, engine, sensors, max_seconds, Path(out_dir), log)
