@@ -270,7 +270,7 @@ def _skip_reason(method: str, scene, sensors, component: str) -> str:
         return "biased: the indirect component needs paths"
     if method == "bsdf" and any(l.is_delta for l in scene.lights):
         return "blind: point/angle-0 distant lights"
-    if method != "path" and reflects and component != "direct":
+    if not METHOD_FLAGS[method][3] and reflects and component != "direct":
         return "biased: ignores interreflection"
     return ""
 
@@ -437,6 +437,7 @@ _STYLE = {
     "bsdf": dict(color="#ff7f0e", marker="s"),
     "mis": dict(color="#2ca02c", marker="^"),
     "path": dict(color="#d62728", marker="D"),
+    "guided": dict(color="#9467bd", marker="v"),
 }
 
 

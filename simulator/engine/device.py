@@ -191,7 +191,9 @@ class DeviceScene:
         g.tri_m = wp.array(lay.m if ok else np.ones(max(n_tri, 1), np.int32), dtype=wp.int32)
         g.tri_offset = wp.array(lay.offset if ok else np.zeros(max(n_tri, 1), np.int32), dtype=wp.int32)
         g.patch_tri = wp.array(lay.patch_tri if ok else np.zeros(1, np.int32), dtype=wp.int32)
-        tri_row, self.guide_rows = source_rows(self._prim, lay.n_patches) if ok else (np.zeros(max(n_tri, 1), np.int32), 1)
+        from simulator.engine.guide import ROWS_PER_PRIM
+
+        tri_row, self.guide_rows = source_rows(self._prim, lay.n_patches, ROWS_PER_PRIM) if ok else (np.zeros(max(n_tri, 1), np.int32), 1)
         g.tri_row = wp.array(tri_row, dtype=wp.int32)
         g.n_rows = self.guide_rows
         g.density = wp.zeros(max(lay.n_patches * self.guide_rows, 1), dtype=float)

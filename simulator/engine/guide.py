@@ -31,16 +31,24 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from simulator.scene.patches import patch_distribution_rows
+from simulator.scene.patches import concentration, patch_distribution_rows
 
 __all__ = ["GUIDE_C", "GUIDE_FIRST", "GUIDE_DEPTH", "PILOT_SAMPLES", "PILOT_MIN_TOTAL", "GuideInfo", "pilot_seed", "build_guide"]
 
 #: probability c of the guide strategy at a vertex (see DESIGN.md for the measurement)
-GUIDE_C = 0.5
+GUIDE_C = 0.3
 #: the guide is used at vertices of depth ≥ GUIDE_FIRST ...
-GUIDE_FIRST = 0
+GUIDE_FIRST = 1
 #: ... and < GUIDE_DEPTH (−1: no upper bound)
 GUIDE_DEPTH = -1
+#: one guide table per prim a vertex lies on (else one for all surfaces)
+ROWS_PER_PRIM = False
+#: a guide table whose pilot light is spread more evenly than this
+#: (:func:`~simulator.scene.patches.concentration`) is left empty, and its
+#: vertices sample cosine directions only: measured D = 16 on the office
+#: (the guide gains there), 1.9 on the quickstart room (no gain), 1.0–1.3 in
+#: the furnace and CIE 171 case 5.8 (where a guide costs 10× in variance)
+MIN_CONCENTRATION = 4.0
 #: pilot samples per sensor ...
 PILOT_SAMPLES = 32
 #: ... and at least this many in all (a lone sensor still gets a usable guide)
@@ -60,15 +68,19 @@ class GuideInfo:
     patches : int
         Patches in the layout.
     sampled : int
-        Patches the guide can draw (P_j > 0).
+        Patches the guide can draw (P_j > 0, in any table).
+    concentration : list of float
+        Each table's :func:`~simulator.scene.patches.concentration` D (a
+        table with D < MIN_CONCENTRATION is left empty).
     reason : str
-        The layout's one-line description.
+        One line: the layout, and whether the guide is used.
     """
 
     seconds: float
     pilot_samples: int
     patches: int
     sampled: int
+    concentration: list
     reason: str
 
     def to_record(self) -> dict:
@@ -109,9 +121,16 @@ def build_guide(engine, seed: int, sensor_ids: np.ndarray, max_depth: int = -1) 
         n_pilot = per * len(ids)
         tally = dev.read_tally(rows)  # (guide rows, N, 2)
         channel = 0 if tally[..., 0].sum() > 0 else 1
-        pid, cdf, row_start, density = patch_distribution_rows(tally[..., channel], lay)
+        tally = tally[..., channel].copy()
+        conc = [concentration(t, lay) for t in tally]
+        for r, d in enumerate(conc):
+            if d < MIN_CONCENTRATION or (r == 0 and GUIDE_FIRST > 0):  # row 0 serves depth 0 only
+                tally[r] = 0.0  # evenly spread light: cosine directions alone do better
+        pid, cdf, row_start, density = patch_distribution_rows(tally, lay)
         dev.set_guide(pid, cdf, row_start, density)
         sampled = len(np.unique(pid))
     else:
-        sampled = 0
-    return GuideInfo(time.perf_counter() - t0, n_pilot, lay.n_patches, sampled, lay.reason)
+        conc, sampled = [], 0
+    used = "used" if sampled else f"not used (light spread evenly: concentration < {MIN_CONCENTRATION:g})"
+    reason = lay.reason if not lay.usable else f"{lay.reason}; {used}"
+    return GuideInfo(time.perf_counter() - t0, n_pilot, lay.n_patches, sampled, [round(d, 3) for d in conc], reason)

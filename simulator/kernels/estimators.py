@@ -774,6 +774,16 @@ def vertex_irradiance(
                             tally_patch(scene, params, prev_row, cur_face, p, c_light)
         if params.bsdf == 0:
             break
+        # -- guided paths: the weight window (below) is applied here, after
+        #    this vertex's next-event estimate: a guided step toward a bright
+        #    patch far off takes a small factor, and rouletting before that
+        #    patch's own light is gathered would put the noise back
+        if params.guide_c > 0.0 and depth > 0 and beta < RR_THRESHOLD:
+            q_late = beta / RR_THRESHOLD
+            if wp.randf(rng) >= q_late:
+                break
+            beta = beta / q_late
+            weight = weight_in * beta
         # -- guided paths: with probability c the surface guide picks the next vertex
         if c_v > 0.0:
             if wp.randf(rng) < c_v:
@@ -782,11 +792,6 @@ def vertex_irradiance(
                 if g.face < 0:
                     break
                 beta = beta * surface_albedo(scene, params, g.face) * g.factor
-                if beta < RR_THRESHOLD:  # the weight window below, unchanged
-                    q_guided = beta / RR_THRESHOLD
-                    if wp.randf(rng) >= q_guided:
-                        break
-                    beta = beta / q_guided
                 weight = weight_in * beta
                 p = g.y
                 n = g.n
@@ -842,7 +847,7 @@ def vertex_irradiance(
         if c_v > 0.0:  # one-sample MIS against the guide (mixture_factor)
             beta = beta * mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
                                          local[2] * wp.abs(cos_view) * INV_PI / (t_hit * t_hit))  # fmt: skip
-        if beta < RR_THRESHOLD:
+        if beta < RR_THRESHOLD and params.guide_c <= 0.0:  # guided paths: after the next NEE (above)
             q_survive = beta / RR_THRESHOLD
             if wp.randf(rng) >= q_survive:
                 break

@@ -24,7 +24,7 @@ import numpy as np
 
 __all__ = [
     "TARGET_PATCH_M", "MAX_PATCHES", "MAX_M", "MAX_GUIDE_ENTRIES", "PatchLayout", "patch_layout", "patch_index_np",
-    "source_rows", "patch_distribution", "patch_distribution_rows",
+    "source_rows", "concentration", "patch_distribution", "patch_distribution_rows",
 ]  # fmt: skip
 
 #: target patch size (metres): a triangle's longest edge over this gives its m
@@ -141,14 +141,14 @@ def patch_index_np(s: np.ndarray, t: np.ndarray, m: np.ndarray) -> np.ndarray:
     return j * (2 * m - j) + 2 * i + upper.astype(np.int64)
 
 
-def source_rows(prim: np.ndarray, n_patches: int, max_entries: int = MAX_GUIDE_ENTRIES) -> tuple[np.ndarray, int]:
+def source_rows(prim: np.ndarray, n_patches: int, per_prim: bool = True, max_entries: int = MAX_GUIDE_ENTRIES) -> tuple[np.ndarray, int]:
     """Which guide (row) a path vertex on each triangle samples from.
 
     Row 0 serves a path's first vertex (the sensor, or a radiance meter's
     first surface); a surface vertex uses the row of its prim (1 + prim
     index), so the guide from the ceiling holds what the pilot's paths found
-    from the ceiling. With more rows than ``max_entries`` / ``n_patches``
-    allows, every surface shares row 1.
+    from the ceiling. Without ``per_prim``, or with more rows than
+    ``max_entries`` / ``n_patches`` allows, every surface shares row 1.
 
     Returns
     -------
@@ -157,7 +157,7 @@ def source_rows(prim: np.ndarray, n_patches: int, max_entries: int = MAX_GUIDE_E
     """
     prim = np.asarray(prim, np.int64)
     n_prims = int(prim.max()) + 1 if len(prim) else 0
-    if (1 + n_prims) * max(n_patches, 1) <= max_entries:
+    if per_prim and (1 + n_prims) * max(n_patches, 1) <= max_entries:
         return (1 + prim).astype(np.int32), 1 + n_prims
     return np.ones(len(prim), np.int32), 2
 
@@ -180,6 +180,26 @@ def patch_distribution_rows(tally: np.ndarray, layout: PatchLayout) -> tuple[np.
     ids = np.concatenate([p[0] for p in parts]).astype(np.int32)
     cdf = np.concatenate([p[1][: len(p[0])] for p in parts]).astype(np.float32)
     return ids, cdf, row_start, np.concatenate([p[2] for p in parts])
+
+
+def concentration(tally: np.ndarray, layout: PatchLayout) -> float:
+    """How much a tally concentrates light beyond area: D = A·Σ_j P_j²/A_j,
+    P_j ∝ tally_j, A the area of the patches with P_j > 0 (1 when P ∝ area
+    over them, as in a furnace, where cosine sampling is already ideal and a
+    guide only adds the variance of its mixture weights; large when a few
+    bright patches hold the light). 0 for an empty tally.
+
+    Notes
+    -----
+    By Cauchy–Schwarz Σ P_j = 1 ≤ (Σ P_j²/A_j)·(Σ A_j), so D ≥ 1; it is the
+    mean over the guide's own samples of its density relative to the
+    uniform one, p_j·A = P_j·A/A_j."""
+    t = np.where((np.asarray(tally, np.float64) > 0) & (layout.patch_area_m2 > 0), tally, 0.0)
+    if not np.any(t > 0) or not np.all(np.isfinite(t)):
+        return 0.0
+    p = t / t.sum()
+    live = p > 0
+    return float(np.sum(p[live] ** 2 / layout.patch_area_m2[live]) * layout.patch_area_m2[live].sum())
 
 
 def patch_distribution(tally: np.ndarray, layout: PatchLayout) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
