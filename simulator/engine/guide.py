@@ -7,11 +7,27 @@ sensor itself) to the sensor's reading: tally_j = Σ weight·w_MIS·L·cosθ/pdf
 i.e. importance × radiance, so a sunlit wall no sensor sees gets nothing.
 Patch j is then drawn with probability P_j ∝ tally_j (0 where the pilot
 found no light), a point uniform on it: the guide strategy of
-:func:`simulator.kernels.estimators.vertex_irradiance`.
+:func:`simulator.kernels.estimators.vertex_irradiance`, used with
+probability :data:`GUIDE_C` at path vertices of depth ≥ :data:`GUIDE_FIRST`.
+
+Tallies are kept per *table* (row): row 0 holds what was reached from a
+path's first vertex, row 1 (or one row per prim, :data:`ROWS_PER_PRIM`)
+what was reached from surfaces. A table whose light is spread about as
+evenly as the area (:func:`~simulator.scene.patches.concentration` <
+:data:`MIN_CONCENTRATION`) is left empty: there cosine sampling is already
+near ideal and the mixture's weights only add variance.
 
 The pilot's samples are discarded, not pooled into the readings: they are
-a small fixed cost (:data:`PILOT_SAMPLES` per sensor), and leaving them out
-keeps every reading one estimator's samples.
+a small fixed cost (:data:`PILOT_SAMPLES` per sensor), pooling would save
+at most that fraction of a run, and leaving them out keeps every reading
+one estimator's samples (so its standard error is that estimator's). The
+pilot draws from a seed stream of its own, so the guide is independent of
+the readings' samples and they stay unbiased whatever it learnt.
+
+Measured choices (docs/DESIGN.md, "Surface guide"): c = 0.3; the guide
+from depth 1 on (a work-plane sensor faces the ceiling, which no light
+reaches directly, so the guide's patches are rarely visible from it); one
+table for all surfaces (per-prim tables measured no better on the office).
 
 References
 ----------
@@ -35,7 +51,7 @@ from simulator.scene.patches import concentration, patch_distribution_rows
 
 __all__ = ["GUIDE_C", "GUIDE_FIRST", "GUIDE_DEPTH", "PILOT_SAMPLES", "PILOT_MIN_TOTAL", "GuideInfo", "pilot_seed", "build_guide"]
 
-#: probability c of the guide strategy at a vertex (see DESIGN.md for the measurement)
+#: probability c of the guide strategy at a vertex (see docs/DESIGN.md for the measurement)
 GUIDE_C = 0.3
 #: the guide is used at vertices of depth ≥ GUIDE_FIRST ...
 GUIDE_FIRST = 1

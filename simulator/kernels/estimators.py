@@ -501,7 +501,8 @@ def surface_albedo(scene: SceneRec, params: TraceParams, face: int) -> float:
 # pilot's tallies of the light each patch passed on to the sensors), then a
 # point uniform on it, area pdf P_j/A_j. It is mixed with the cosine
 # direction by one-sample MIS (balance heuristic: divide by the mixture pdf,
-# in area measure, Veach 1997 §9.2.4); see vertex_irradiance. The idea of
+# in area measure, Veach 1997 §9.2.4; docs/REFERENCES.md §One-sample MIS);
+# see vertex_irradiance. The idea of
 # learning where light comes from with a pilot and sampling it is path
 # guiding's (Vorba et al. 2014, Müller et al. 2017), here on surface patches.
 

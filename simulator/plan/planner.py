@@ -55,7 +55,7 @@ LARGE_SOURCE_SR = 1.0
 
 #: whether ``auto`` reads interreflecting sensors with ``guided`` paths (see
 #: docs/DESIGN.md, "Surface guide", for the measurements behind the choice)
-AUTO_GUIDED = False
+AUTO_GUIDED = True
 
 
 def probe_method(scene: Scene, requested: str, component: str = "total") -> tuple[str, str]:
