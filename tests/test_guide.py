@@ -289,8 +289,8 @@ def test_guided_cie171_5_8_indirect_component(forced_guide):
     """CIE 171:2006 case 5.8 at ρ = 0.5 (configs/cie171_5_8.toml, component
     indirect): a 4 m cube, a 10,000 lm isotropic point source at its centre;
     mean indirect illuminance over the surfaces ρΦ/((1 − ρ)·S_T) = 104.17 lx
-    (cf.cie171_indirect_illuminance; docs/REFERENCES.md §CIE 171:2006 case
-    5.8), read by six patches on the six faces (their mean is the surface
+    (cf.cie171_indirect_illuminance;
+    docs/REFERENCES.md §CIE 171:2006 case 5.8), read by six patches on the six faces (their mean is the surface
     mean, its stderr √Σse²/6). The indirect component leaves out the light
     reaching a patch straight from the source but follows the paths from
     it; here with the guide forced on. Measured relative variance per sample

@@ -536,7 +536,7 @@ class Engine:
             One per probe read, in order: all of them unless stopped.
         """
         if method not in METHOD_FLAGS:
-            raise UserError(f"method {method!r} cannot read probes (use light, bsdf, mis, path or auto)")
+            raise UserError(f"method {method!r} cannot read probes (use light, bsdf, mis, path, guided or auto)")
         wp = warp()
         wp.load_module(self._KP, device=self.device)
         params = self.trace_params(method, seed, max_depth, component)

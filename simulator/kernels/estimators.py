@@ -23,7 +23,10 @@ Irradiance at a vertex is estimated by the strategies the method enables:
   β ≥ ``RR_THRESHOLD`` the path simply goes on, below it Russian roulette
   lets it survive with probability β/RR_THRESHOLD and lifts β back to the
   threshold (a weight window: unbiased, since E[β'] = β), so no fixed bounce
-  limit truncates the light.
+  limit truncates the light;
+- guided paths (``guide_c`` > 0): the next vertex drawn, with probability c,
+  on surface patches a pilot found bright (``sample_guide``), combined with
+  the cosine direction by one-sample MIS (see vertex_irradiance).
 
 References
 ----------
