@@ -886,7 +886,7 @@ def test_overrides_validated(write, kwargs, flag):
 
 def test_constants():
     """METHODS and DEVICES are the documented tuples."""
-    assert METHODS == ("auto", "analytic", "exact", "light", "bsdf", "mis", "path")
+    assert METHODS == ("auto", "analytic", "exact", "light", "bsdf", "mis", "path", "guided")
     assert DEVICES == ("cpu", "cuda", "auto")
 
 

@@ -122,24 +122,26 @@ lamp being a RectLight). A
     light anything: that stage keeps the closed form. The grey twin of the
     blocker is a reflecting surface the sensor sees; the planner does not try
     to prove that no light reaches its underside (none does here), so it
-    conservatively follows paths, which then find that out."""
+    conservatively follows paths (guided: the stage has a patch layout),
+    which then find that out."""
     _, scene, sensors = _setup(tmp_path, _light() + _quad("Blocker", 1.0, 0.2, 0.0) + _quad("Ceiling", 3.0, 5.0, 0.0))
     assert make_plan(scene, sensors).sensors[0].method == "exact"
     _, scene, sensors = _setup(tmp_path, _light() + _quad("Ceiling", 3.0, 5.0, 0.0))
     assert make_plan(scene, sensors).sensors[0].method == "analytic"
     _, scene, sensors = _setup(tmp_path, _light() + _quad("Blocker", 1.0, 0.2, 0.5))
     sp = make_plan(scene, sensors).sensors[0]
-    assert sp.method == "path" and sp.bounces and sp.geometry == "reflecting surfaces"
+    assert sp.method == "guided" and sp.bounces and sp.geometry == "reflecting surfaces"
+    assert "surface guide" in sp.reason
 
 
 def test_surfaces_behind_the_sensor_do_not_force_paths_for_direct_component(tmp_path):
     """A grey floor under an up-facing sensor is behind its plane: with
     component = "direct" the closed form still applies; with "indirect" the
-    plan must follow paths."""
+    plan must follow paths (guided paths: the stage has a patch layout)."""
     body = _light() + _quad("Floor", -0.5, 5.0, 0.5)
     _, scene, sensors = _setup(tmp_path, body)
     assert make_plan(scene, sensors, component="direct").sensors[0].method == "analytic"
-    assert make_plan(scene, sensors, component="indirect").sensors[0].method == "path"
+    assert make_plan(scene, sensors, component="indirect").sensors[0].method == "guided"
 
 
 def test_lights_behind_a_sensor_are_not_sampled(tmp_path):
@@ -164,8 +166,8 @@ def test_auto_never_picks_a_blind_or_biased_method():
         scene = load_scene(cfg)
         sensors = [s for s in collect_sensors(cfg, scene) if s.kind.name != "PROBE"]
         for sp in make_plan(scene, sensors, "auto", cfg.simulation.component).sensors:
-            assert sp.method in ("analytic", "exact", "light", "mis", "path"), (path.name, sp)
-            if sp.method != "path" and cfg.simulation.component != "direct":
+            assert sp.method in ("analytic", "exact", "light", "mis", "path", "guided"), (path.name, sp)
+            if not sp.bounces and cfg.simulation.component != "direct":
                 assert sp.geometry != "reflecting surfaces", (path.name, sp)
 
 

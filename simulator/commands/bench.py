@@ -25,6 +25,7 @@ import numpy as np
 
 from simulator.bundled import bundled_configs
 from simulator.config.loader import load_config
+from simulator.engine.methods import METHOD_FLAGS
 from simulator.plan.planner import MC_METHODS
 from simulator.pipeline import collect_sensors, config_engine, load_scene
 
@@ -114,7 +115,7 @@ def run_bench(configs: list[Path], device: str = "cpu", samples: int = 4096, cap
 
             engine.set_light_mask(cull_mask(scene, sensors))
         for m in methods:
-            if m != "path" and m != "analytic" and reflects:
+            if m in METHOD_FLAGS and not METHOD_FLAGS[m][3] and reflects:
                 row = BenchRow(path.stem, m, len(sensors), None, None, None, False, "biased: ignores interreflection")
             elif m in ("analytic", "exact"):
                 t0 = time.perf_counter()

@@ -11,7 +11,9 @@ over the sensors is
 the reference's own variance σ_r² subtracted (the two runs are independent,
 so E[(x − r)²] = (x − truth)² + σ_r² on average). The time to a target error
 follows from the last budget by the 1/√t law of an unbiased estimator,
-interpolated between budgets that bracket it when there are some.
+interpolated between budgets that bracket it when there are some. A plan
+that uses ``guided`` builds its surface guide once, in the setup (its pilot
+is reported there, as in a run's ``timings_s.guide``).
 """
 
 from __future__ import annotations
@@ -73,6 +75,7 @@ def read_reference(path: Path) -> dict[str, tuple[float, float]]:
 def reference_curve(config: Path, device: str = "cpu", max_seconds: float = 60.0, first: int = 64, log=print) -> ReferenceCurve:
     """Doubling fixed budgets of the planned run, until one takes ``max_seconds``."""
     from simulator.config.loader import load_config
+    from simulator.engine.methods import GUIDED_METHODS
     from simulator.pipeline import collect_sensors, config_engine, load_scene, run_plan
     from simulator.plan.planner import make_plan
 
@@ -90,6 +93,10 @@ def reference_curve(config: Path, device: str = "cpu", max_seconds: float = 60.0
     plan = make_plan(scene, sensors, cfg.simulation.method, cfg.simulation.component)
     engine = config_engine(cfg, scene, sensors, device=device, threads=0)
     engine.run("path", samples=4, seed=1)  # load the kernels before timing
+    guided = [ix for m, ix in plan.groups().items() if m in GUIDED_METHODS]
+    if guided:  # the guide is built once per run: part of the setup, not of each budget
+        engine.set_light_mask(plan.light_mask([l.name for l in scene.lights]))
+        engine.ensure_guide(cfg.simulation.seed, np.concatenate(guided), cfg.simulation.max_depth)
     curve = ReferenceCurve(config.stem, len(sensors), engine.device, time.perf_counter() - t0,
                            methods={m: len(ix) for m, ix in plan.groups().items()})  # fmt: skip
     n = first

@@ -488,6 +488,7 @@ _STYLE = {
     "path": dict(color="#d62728", marker="D"),
     "exact": dict(color="#8c564b", marker="P"),
     "auto": dict(color="#7f7f7f", marker="X", lw=2.4),
+    "guided": dict(color="#9467bd", marker="v"),
 }
 
 

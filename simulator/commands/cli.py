@@ -218,7 +218,8 @@ def _cmd_run(args) -> int:
     print(
         f"{n} sensors, {rec['triangles']:,} triangles, {total:,} samples, methods {used} on {rec['device']} "
         f"({rec['threads']} threads): loaded in {t['load']:.2f} s, planned in {t['plan']:.2f} s, "
-        f"traced in {trace:.2f} s ({total / max(trace, 1e-9):,.0f} samples/s), {wall:.2f} s in all"
+        + (f"guide learnt in {t['guide']:.2f} s ({'used' if rec['guide']['sampled'] else 'not used'}), " if rec.get("guide") else "")
+        + f"traced in {trace:.2f} s ({total / max(trace, 1e-9):,.0f} samples/s), {wall:.2f} s in all"
     )
     ad = rec.get("adaptive")
     if ad:

@@ -1,6 +1,6 @@
 """``probesim stability``: where each estimator fails, case by case.
 
-A matrix of estimators (``analytic``, ``light``, ``bsdf``, ``mis``, ``path``)
+A matrix of estimators (``analytic``, ``light``, ``bsdf``, ``mis``, ``path``, ``guided``)
 × hard cases. Each case is a bundled stage in ``stages/stability/`` with its
 config in ``configs/stability/``, and a reference answer per sensor from the
 closed forms of :mod:`simulator.reference.closed_forms`: the stability suite of

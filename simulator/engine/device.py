@@ -14,6 +14,7 @@ import numpy as np
 
 from simulator.errors import UserError
 from simulator.scene.model import Scene, Sensor
+from simulator.scene.patches import patch_layout, source_rows
 
 __all__ = ["warp", "warp_version", "cuda_available", "resolve_device", "DeviceScene"]
 
@@ -100,6 +101,8 @@ class DeviceScene:
     sensors : wp.array of SensorRec
     emissive_light : int
         Index of the record standing for all emissive triangles, −1 if none.
+    layout : PatchLayout
+        The surfaces cut into patches for the guide (:mod:`simulator.scene.patches`).
     """
 
     def __init__(self, scene: Scene, sensors: list[Sensor], device: str):
@@ -109,6 +112,10 @@ class DeviceScene:
 
         self.device = device
         self._n_sensors = len(sensors)
+        self.layout = patch_layout(scene.geometry.points, scene.geometry.triangles)
+        g = scene.geometry
+        self._prim = g.prim if len(g.prim) == g.n_triangles else np.zeros(g.n_triangles, np.int32)
+        self.guide_rows = 1
         self._light_mask = None
         self._keep: list = []  # device arrays referenced only by pointer from the records
         with wp.ScopedDevice(device):
@@ -173,6 +180,7 @@ class DeviceScene:
         rec.emit_prob = wp.array(prob.astype(np.float32), dtype=float)
         rec.lights = wp.array(lights, dtype=K.LightRec) if lights else wp.zeros(1, dtype=K.LightRec)
         rec.n_lights = len(lights)
+        rec.guide = self._guide_record(wp, K, n_tri)
         self._keep += [mesh, points, tri_ids, rec.albedo, rec.emission, rec.two_sided, rec.emit_tris, rec.emit_cdf,
                        rec.emit_prob, rec.lights]  # fmt: skip
         return rec
@@ -204,6 +212,56 @@ class DeviceScene:
             raise ValueError(f"{tables.emission.shape[0]} emission rows for {int(self.rec.n_lights)} light records")
         with wp.ScopedDevice(self.device):
             self._upload_hero(wp, self.rec, tables)
+    def _guide_record(self, wp, K, n_tri: int):
+        """The guide's layout on the device, with nothing to sample yet (n = 0)."""
+        lay = self.layout
+        g = K.GuideRec()
+        ok = lay.n_patches > 0
+        g.tri_m = wp.array(lay.m if ok else np.ones(max(n_tri, 1), np.int32), dtype=wp.int32)
+        g.tri_offset = wp.array(lay.offset if ok else np.zeros(max(n_tri, 1), np.int32), dtype=wp.int32)
+        g.patch_tri = wp.array(lay.patch_tri if ok else np.zeros(1, np.int32), dtype=wp.int32)
+        from simulator.engine.guide import ROWS_PER_PRIM
+
+        tri_row, self.guide_rows = source_rows(self._prim, lay.n_patches, ROWS_PER_PRIM) if ok else (np.zeros(max(n_tri, 1), np.int32), 1)
+        g.tri_row = wp.array(tri_row, dtype=wp.int32)
+        g.n_rows = self.guide_rows
+        g.density = wp.zeros(max(lay.n_patches * self.guide_rows, 1), dtype=float)
+        g.ids = wp.zeros(1, dtype=wp.int32)
+        g.cdf = wp.ones(1, dtype=float)
+        g.row_start = wp.zeros(self.guide_rows + 1, dtype=wp.int32)
+        g.n = 0
+        g.n_patches = lay.n_patches
+        g.tally = wp.zeros(1, dtype=wp.vec2)
+        return g
+
+    def tally_rows(self, workers: int) -> None:
+        """Zeroed pilot tallies: ``workers`` blocks of guide rows × patches (a
+        block per CPU worker: Warp's CPU atomics are not atomic across threads)."""
+        wp = warp()
+        with wp.ScopedDevice(self.device):
+            g = self.rec.guide
+            g.tally = wp.zeros(max(1, workers * self.guide_rows * self.layout.n_patches), dtype=wp.vec2)
+            self.rec.guide = g  # reassigned: the record holds the struct by value
+
+    def read_tally(self, workers: int) -> np.ndarray:
+        """The pilot's tallies summed over workers, (guide rows, N, 2) float64."""
+        t = self.rec.guide.tally.numpy().astype(np.float64)
+        r, n = self.guide_rows, self.layout.n_patches
+        return t[: workers * r * n].reshape(workers, r, n, 2).sum(axis=0) if n else np.zeros((r, 0, 2))
+
+    def set_guide(self, ids: np.ndarray, cdf: np.ndarray, row_start: np.ndarray, density: np.ndarray) -> None:
+        """Upload the patch sampler's tables (:func:`~simulator.scene.patches.patch_distribution_rows`)."""
+        wp = warp()
+        with wp.ScopedDevice(self.device):
+            g = self.rec.guide
+            if len(ids):
+                g.ids = wp.array(ids.astype(np.int32), dtype=wp.int32)
+                g.cdf = wp.array(cdf.astype(np.float32), dtype=float)
+                g.row_start = wp.array(row_start.astype(np.int32), dtype=wp.int32)
+                g.density = wp.array(density.astype(np.float32), dtype=float)
+            g.n = int(len(ids))
+            g.tally = wp.zeros(1, dtype=wp.vec2)
+            self.rec.guide = g  # reassigned: the record holds the struct by value
 
     def set_light_mask(self, mask: np.ndarray) -> None:
         """Lights to skip per sensor at its first vertex: ``mask`` (S, L) over

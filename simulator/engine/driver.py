@@ -14,7 +14,9 @@ Sensors (irradiance, radiance, patch): each kernel thread draws a block of
 
 from __future__ import annotations
 
+import copy
 import os
+import threading
 import time
 from dataclasses import dataclass, field
 from typing import Callable
@@ -25,7 +27,7 @@ from simulator.engine import probes as P
 from simulator.engine.adaptive import StoppingRule, run_batches
 from simulator.engine.device import DeviceScene, cuda_available, resolve_device, warp, warp_version
 from simulator.engine.fanout import fan_out
-from simulator.engine.methods import COMPONENTS, METHOD_FLAGS
+from simulator.engine.methods import COMPONENTS, GUIDED_METHODS, METHOD_FLAGS
 from simulator.engine.stats import GroupStats, RunningStats
 from simulator.errors import UserError
 from simulator.interrupts import StopFlag
@@ -177,6 +179,7 @@ class Engine:
         self._light_mask: np.ndarray | None = None
         self._device_scene: DeviceScene | None = None
         self._hero = None  # simulator.spectra.hero.HeroTables when tracing spectrally
+        self.guide = None  #: GuideInfo once a guided run has built the guide (once per engine)
 
     def _upload(self) -> DeviceScene:
         """Import Warp, load the kernels and upload the scene, on first need: a
@@ -249,7 +252,9 @@ class Engine:
             self._device_scene.set_light_mask(mask)
 
     def trace_params(self, method: str, seed: int, max_depth: int = -1, component: str = "total"):
-        """The kernels' ``TraceParams`` for ``method`` (light, bsdf, mis or path)."""
+        """The kernels' ``TraceParams`` for ``method`` (light, bsdf, mis, path or guided)."""
+        from simulator.engine import guide as G
+
         nee, bsdf, mis, bounces = METHOD_FLAGS[method]
         p = self._K.TraceParams()
         p.nee, p.bsdf, p.mis = nee, bsdf, mis
@@ -266,7 +271,22 @@ class Engine:
         p.group_tally = 0
         p.n_groups = 0
         p.group_state = self._no_groups
+        p.guide_c = G.GUIDE_C if method in GUIDED_METHODS else 0.0
+        p.guide_first = G.GUIDE_FIRST
+        p.guide_depth = G.GUIDE_DEPTH
+        p.tally = 0
+        p.tally_row = 0
         return p
+
+    def ensure_guide(self, seed: int, sensor_ids: np.ndarray | None = None, max_depth: int = -1):
+        """Build the surface guide from a pilot over ``sensor_ids`` (default
+        all), once: later guided runs reuse it. Returns its GuideInfo."""
+        if self.guide is None:
+            from simulator.engine.guide import build_guide
+
+            ids = np.arange(len(self.sensors)) if sensor_ids is None else np.asarray(sensor_ids, np.int64)
+            self.guide = build_guide(self, seed, ids, max_depth)
+        return self.guide
 
     # ------------------------------------------------------------ sensors
 
@@ -307,11 +327,19 @@ class Engine:
             if params.group_tally:
                 params.group_state = wp.zeros(n * width, dtype=wp.vec2d)
 
+            rows = iter(range(self.threads))  # a pilot's workers each tally into a row of their own
+            lock = threading.Lock()
+
             def run(offset: int, dim: int):
+                prm = params
+                if params.tally:
+                    with lock:
+                        prm = copy.copy(params)
+                        prm.tally_row = next(rows)
                 wp.launch(
                     self._K.estimate_kernel,
                     dim=dim,
-                    inputs=[rec, self._dev.sensors, params, a_sensor, a_first, a_count, offset],
+                    inputs=[rec, self._dev.sensors, prm, a_sensor, a_first, a_count, offset],
                     outputs=[shift, s1, s2, bad, r_shift, r_s1, r_s2],
                 )
 
@@ -402,7 +430,11 @@ class Engine:
         stop: StopFlag | None = None,
         groups: LightGroups | None = None,
     ) -> EngineResult:
-        """Estimate every sensor with ``method`` (analytic, exact, light, bsdf, mis or path).
+        """Estimate every sensor with ``method`` (analytic, exact, light, bsdf, mis, path or guided).
+
+        ``guided`` builds the surface guide on its first run (a pilot over
+        ``sensor_ids``, :meth:`ensure_guide`; its cost is ``self.guide.seconds``,
+        not part of ``wall_s``) and reuses it afterwards.
 
         Fixed budget (``rel_error`` None): ``samples`` per sensor. Adaptive:
         ``samples`` is the first batch; a sensor stops when
@@ -442,6 +474,8 @@ class Engine:
         if method not in METHOD_FLAGS:
             raise UserError(f"method {method!r} has no Monte Carlo kernel (expected one of {sorted(METHOD_FLAGS)})")
         n_s = len(self.sensors)
+        if method in GUIDED_METHODS:
+            self.ensure_guide(seed, ids_all, max_depth)
         params = self.trace_params(method, seed, max_depth, component)
         params.count_rays = 1 if count_rays else 0
         self.rays_traced = 0  # shadow and path rays, counted when count_rays
@@ -693,7 +727,7 @@ class Engine:
             One per probe read, in order: all of them unless stopped.
         """
         if method not in METHOD_FLAGS:
-            raise UserError(f"method {method!r} cannot read probes (use light, bsdf, mis, path or auto)")
+            raise UserError(f"method {method!r} cannot read probes (use light, bsdf, mis, path, guided or auto)")
         wp = warp()
         wp.load_module(self._KP, device=self.device)
         params = self.trace_params(method, seed, max_depth, component)

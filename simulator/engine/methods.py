@@ -4,7 +4,9 @@ planner and the commands import this cheaply).
 A Monte Carlo method is a set of estimator strategies (see
 :mod:`simulator.kernels.estimators`): next-event estimation, cosine-weighted
 directions, both combined by multiple importance sampling, and
-interreflection. ``analytic`` is the closed form where nothing occludes;
+interreflection; ``guided`` is ``path`` whose next vertex is drawn, with
+probability c, on the surfaces a pilot found passing light on to the sensors
+(:mod:`simulator.engine.guide`). ``analytic`` is the closed form where nothing occludes;
 ``exact`` the closed form of each RectLight's visible part past a few
 occluders (:mod:`simulator.engine.exact`); ``auto`` lets the planner choose
 per sensor.
@@ -12,7 +14,7 @@ per sensor.
 
 from __future__ import annotations
 
-__all__ = ["METHOD_FLAGS", "MC_METHODS", "READ_METHODS", "METHODS", "COMPONENTS"]
+__all__ = ["METHOD_FLAGS", "GUIDED_METHODS", "MC_METHODS", "READ_METHODS", "METHODS", "COMPONENTS"]
 
 #: Monte Carlo method → (next-event estimation, cosine directions, MIS, interreflection)
 METHOD_FLAGS = {
@@ -20,7 +22,10 @@ METHOD_FLAGS = {
     "bsdf": (0, 1, 0, False),
     "mis": (1, 1, 1, False),
     "path": (1, 1, 1, True),
+    "guided": (1, 1, 1, True),
 }
+#: Monte Carlo methods that sample the surface guide besides cosine directions
+GUIDED_METHODS = ("guided",)
 #: methods with a Monte Carlo kernel
 MC_METHODS = tuple(METHOD_FLAGS)
 #: methods that read a sensor: the closed form and the Monte Carlo ones

@@ -19,7 +19,11 @@ sensor, in order:
    either, ``exact`` — each RectLight's visible part in closed form, so
    penumbrae carry no noise — when every light it sees is a RectLight and
    few triangles stand in the way (:mod:`simulator.plan.exact_rule`);
-3. **paths** (``path``) otherwise: interreflection is part of the reading.
+3. **paths** otherwise: interreflection is part of the reading. ``auto``
+   reads them with ``guided`` paths (``path`` plus a surface guide learnt by
+   a pilot, :mod:`simulator.engine.guide`) when :data:`AUTO_GUIDED` is set
+   and the stage can be cut into patches within the cap
+   (:func:`simulator.scene.patches.patch_layout`); else ``path``.
 
 Lights wholly behind a sensor's plane contribute nothing to it and are not
 sampled for it. The plan says which transport the scene needs and why
@@ -38,7 +42,7 @@ import numpy as np
 
 from simulator.errors import UserError
 from simulator.plan.exact_rule import exact_plan_refusal
-from simulator.engine.methods import MC_METHODS
+from simulator.engine.methods import METHOD_FLAGS, MC_METHODS
 from simulator.plan.bounds import FrontIndex
 from simulator.scene.model import LightKind, Scene, Sensor, SensorKind, patch_width_axis
 
@@ -51,6 +55,10 @@ __all__ = ["MC_METHODS", "SensorPlan", "Plan", "SceneBounds", "make_plan", "prob
 #: (`probesim chart`), while on small sources (point, 1 mm sphere) the extra
 #: ray cost 2–6× the time of `light`.
 LARGE_SOURCE_SR = 1.0
+
+#: whether ``auto`` reads interreflecting sensors with ``guided`` paths (see
+#: docs/DESIGN.md, "Surface guide", for the measurements behind the choice)
+AUTO_GUIDED = True
 
 
 def probe_method(scene: Scene, requested: str, component: str = "total") -> tuple[str, str]:
@@ -69,7 +77,7 @@ def probe_method(scene: Scene, requested: str, component: str = "total") -> tupl
         note = ""
         if requested == "light" and reflects and (portal_dome := _portal_dome(scene, [])):
             note = f"; light samples the DomeLight {portal_dome} only through its portals: sky seen past them is not counted"
-        if requested != "path" and reflects:
+        if not METHOD_FLAGS[requested][3] and reflects:
             return requested, f"as requested; direct light only: interreflection is ignored ({requested} does not bounce){note}"
         return requested, "as requested"
     raise UserError(f"simulation.method: {requested!r} is not a method (use auto, analytic, exact, light, bsdf, mis or path)")
@@ -358,6 +366,7 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
     """
     transport, channels, channel_reason = _transport(scene)
     bounds = scene_bounds(scene)
+    paths, paths_why = _path_method(scene)
     plans = []
     for s in sensors:
         culled = lights_behind(scene, s)
@@ -371,7 +380,7 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
                 raise UserError(f"method analytic cannot read sensor {s.name!r}: {why} (use light, mis, path or auto)")
             if requested == "exact" and (why := exact_plan_refusal(scene, s, culled)) is not None:
                 raise UserError(f"method exact cannot read sensor {s.name!r}: {why} (use light, mis, path or auto)")
-            bounces = requested == "path"
+            bounces = bool(METHOD_FLAGS[requested][3]) if requested in METHOD_FLAGS else False
             reason = "as requested" + ("" if bounces or not reflects else f"; {requested} ignores the interreflection this sensor sees")
             if requested == "light" and (portal_dome := _portal_dome(scene, culled)):
                 reason += (f"; light samples the DomeLight {portal_dome} only through its portals: "
@@ -380,7 +389,7 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
             continue
         refusal = analytic_refusal(scene, s, bounds)
         if component == "indirect":
-            method, reason = "path", "indirect light has been reflected on the way: paths"
+            method, reason = paths, "indirect light has been reflected on the way: paths" + paths_why
         elif refusal is None and (not reflects or component == "direct"):
             method, reason = "analytic", "nothing can block its lights" + ("" if component == "direct" else " and nothing in front of it reflects: closed form")
         elif (not reflects or component == "direct") and exact_plan_refusal(scene, s, culled) is None:
@@ -399,9 +408,24 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
             else:
                 method, reason = "light", f"no surface it sees reflects, so direct light is all ({why}): light sampling"
         else:
-            method, reason = "path", "surfaces it sees reflect: interreflection needs paths"
-        plans.append(SensorPlan(s.name, kind, method, method == "path", reason, lights, culled, geometry))
+            method, reason = paths, "surfaces it sees reflect: interreflection needs paths" + paths_why
+        plans.append(SensorPlan(s.name, kind, method, bool(METHOD_FLAGS.get(method, (0, 0, 0, False))[3]), reason, lights,
+                                culled, geometry))  # fmt: skip
     return Plan(requested, component, channels, channel_reason, plans, transport)
+
+
+def _path_method(scene: Scene) -> tuple[str, str]:
+    """``(method, note)`` for the sensors that need paths: ``guided`` when
+    :data:`AUTO_GUIDED` and the stage has a patch layout, else ``path``; the
+    note (appended to the reason) says which and why."""
+    from simulator.scene.patches import patch_layout
+
+    if not AUTO_GUIDED:
+        return "path", ""
+    lay = patch_layout(scene.geometry.points, scene.geometry.triangles)
+    if not lay.usable:
+        return "path", f" ({lay.reason})"
+    return "guided", f", guided by a {lay.reason} (learnt by a pilot)"
 
 
 def _transport(scene: Scene) -> tuple[str, int, str]:

@@ -106,7 +106,7 @@ class SimulationSpec(_Model):
     wall-clock stop would make results depend on the machine)."""
 
     samples: int = Field(256, ge=1)
-    method: Literal["auto", "light", "bsdf", "mis", "path"] = "auto"
+    method: Literal["auto", "light", "bsdf", "mis", "path", "guided"] = "auto"
     device: Literal["cpu", "cuda", "auto"] = "cpu"
     rel_error: float | None = Field(None, gt=0.0, lt=1.0)
     abs_error: float = Field(0.0, ge=0.0)

@@ -44,10 +44,10 @@ import warp as wp
 
 from simulator.scene.model import Light, LightKind
 
-from .base import RAY_INF, LightKernel, LightRec, LightSample, SceneRec, empty_sample, tri_emitted, tri_vertex
+from .base import RAY_INF, GuideRec, LightKernel, LightRec, LightSample, SceneRec, empty_sample, tri_emitted, tri_vertex
 
 __all__ = [
-    "KERNELS", "RAY_INF", "LightKernel", "LightRec", "LightSample", "SceneRec",
+    "KERNELS", "RAY_INF", "GuideRec", "LightKernel", "LightRec", "LightSample", "SceneRec",
     "analytic_light", "analytic_patch_light", "emissive_record", "escaped_radiance", "hit_light", "kind_chain",
     "light_record", "light_within", "pdf_light", "sample_light", "tri_emitted", "tri_vertex",
 ]  # fmt: skip

@@ -84,6 +84,27 @@ class LightRec:
 
 
 @wp.struct
+class GuideRec:
+    """The surface guide of guided paths (estimators: ``sample_guide``):
+    every triangle cut into m × m patches (:mod:`simulator.scene.patches`),
+    patch j drawn with probability P_j from a pilot's tallies, one table per
+    source row (row 0: a path's first vertex; a surface vertex: its prim's)."""
+
+    tri_m: wp.array(dtype=wp.int32)  # per triangle: subdivisions per edge (m² patches)
+    tri_offset: wp.array(dtype=wp.int32)  # per triangle: index of its first patch
+    patch_tri: wp.array(dtype=wp.int32)  # per patch: its triangle
+    tri_row: wp.array(dtype=wp.int32)  # per triangle: the source row a vertex on it samples
+    n_rows: int
+    density: wp.array(dtype=float)  # (n_rows × n_patches): P_j / A_j (m⁻²), the guide's area pdf
+    ids: wp.array(dtype=wp.int32)  # per row, its patches with P_j > 0, concatenated
+    cdf: wp.array(dtype=float)  # per row, the inclusive CDF over its ids (last = 1), concatenated
+    row_start: wp.array(dtype=wp.int32)  # (n_rows + 1): row r's entries are [row_start[r], row_start[r + 1])
+    n: int  # len(ids); 0: no guide (guided paths are plain paths)
+    n_patches: int  # 0: no layout (nothing is tallied)
+    tally: wp.array(dtype=wp.vec2)  # pilot: (workers × n_rows × n_patches) next-event contributions
+
+
+@wp.struct
 class SceneRec:
     """Geometry, materials and lights on the device."""
 
@@ -110,6 +131,7 @@ class SceneRec:
     response_lanes: wp.array(dtype=wp.vec4)  # per kernel thread: this sample's spectral density per hero lane
     colour_weights: wp.array2d(dtype=float)  # (3 × 401): a lane's weight of linear sRGB (cd/m²), for probe maps
     light_group: wp.array(dtype=wp.int32)  # per light record: its light group, −1 for none (TraceParams.group_tally)
+    guide: GuideRec  # surface patches for guided paths
 
 
 @wp.struct
