@@ -125,6 +125,9 @@ class DeviceScene:
         rec.eps = 1.0e-5
         rec.ray_counts = wp.zeros(1, dtype=wp.int32)
         rec.light_mask = wp.ones(max(1, n_sensors * (len(scene.lights) + 1)), dtype=wp.int32)
+        n_rec = len(scene.lights) + 1  # the lights, and room for the emissive record
+        rec.pick_factor = wp.ones((1 + n_sensors) * n_rec, dtype=float)
+        rec.pick_tally = wp.zeros(1, dtype=wp.vec2)
         n_tri = g.n_triangles
         pts = g.points.astype(np.float32) if n_tri else np.zeros((3, 3), np.float32)
         tris = g.triangles.astype(np.int32) if n_tri else np.array([[0, 1, 2]], np.int32)
@@ -174,6 +177,16 @@ class DeviceScene:
         self._keep += [mesh, points, tri_ids, rec.albedo, rec.emission, rec.two_sided, rec.emit_tris, rec.emit_cdf,
                        rec.emit_prob, rec.lights]  # fmt: skip
         return rec
+
+    def set_pick_factors(self, factors: np.ndarray) -> None:
+        """The light pick's learned factors, (1 + S, L) over the light
+        records: row 0 for path vertices past the first, row 1 + s for sensor
+        s's first vertex (see kernels.light_pick)."""
+        wp = warp()
+        f = np.ascontiguousarray(factors, np.float32).reshape(-1)
+        with wp.ScopedDevice(self.device):
+            self.rec.pick_factor = wp.array(f, dtype=float)
+        self._pick_factor = self.rec.pick_factor  # the record holds only its pointer
 
     def set_light_mask(self, mask: np.ndarray) -> None:
         """Lights to skip per sensor at its first vertex: ``mask`` (S, L) over

@@ -25,7 +25,7 @@ from simulator.engine import probes as P
 from simulator.engine.adaptive import StoppingRule, run_batches
 from simulator.engine.device import DeviceScene, cuda_available, resolve_device, warp, warp_version
 from simulator.engine.fanout import fan_out
-from simulator.engine.methods import COMPONENTS, METHOD_FLAGS
+from simulator.engine.methods import COMPONENTS, METHOD_FLAGS, light_pick_rule
 from simulator.engine.stats import RunningStats
 from simulator.errors import UserError
 from simulator.interrupts import StopFlag
@@ -45,6 +45,11 @@ SAMPLES_PER_LAUNCH = 1 << 18
 PASS_BLOCK = 16
 #: probe kernel threads per launch: bounds the float64 sums held at once (~900 B each)
 THREADS_PER_LAUNCH = 1 << 16
+#: samples per sensor of the light pick's pilot (all lights sampled, tallied, then discarded)
+PICK_PILOT_SAMPLES = 16
+#: a sensor's own first-vertex pick factor is shrunk toward all sensors'
+#: by this many pseudo-samples (a sensor's 16 pilot samples are few)
+PICK_PRIOR_SAMPLES = 4
 
 
 @dataclass
@@ -125,6 +130,10 @@ class Engine:
         self.rays_traced = 0
         self._light_mask: np.ndarray | None = None
         self._device_scene: DeviceScene | None = None
+        #: next-event estimation by one picked light: "auto" (methods.light_pick_rule), "on" or "off"
+        self.light_pick = "auto"
+        self._pick_key: tuple | None = None
+        self._mask_version = 0
 
     def _upload(self) -> DeviceScene:
         """Import Warp, load the kernels and upload the scene, on first need: a
@@ -170,6 +179,7 @@ class Engine:
         """Lights to skip per sensor at its first vertex: ``mask`` (S, L) over
         the scene's lights, 0 = wholly behind the sensor (see plan.lights_behind)."""
         self._light_mask = np.asarray(mask)
+        self._mask_version += 1
         if self._device_scene is not None:
             self._device_scene.set_light_mask(mask)
 
@@ -185,14 +195,68 @@ class Engine:
         p.count_rays = 0
         p.thread = 0
         p.mask_row = -1
+        p.pick_light = 0
+        p.tally_pick = 0
         return p
+
+    def uses_light_pick(self, method: str) -> bool:
+        """Whether :meth:`run` samples one picked light per vertex for ``method``."""
+        if self.light_pick != "auto":
+            return self.light_pick == "on" and METHOD_FLAGS[method][0] != 0
+        return light_pick_rule(method, self.scene)[0]
+
+    def fix_pick_factors(self, factors: np.ndarray) -> None:
+        """Use these light-pick factors, (1 + S, L) over the light records
+        (see :meth:`_prepare_pick`), instead of learning them by a pilot."""
+        self._dev.set_pick_factors(np.asarray(factors, np.float64))
+        self._pick_key = "fixed"
+
+    def _prepare_pick(self, method: str, seed: int, max_depth: int, component: str, ids: np.ndarray) -> None:
+        """Learn the light pick's factors (kernels.light_pick) for these
+        sensors from a pilot that samples every light: per light, Σ weight ×
+        shadowed value / Σ weight × estimate ê, over path vertices past the
+        first (row 0) and over each sensor's first vertex (row 1 + s, shrunk
+        toward all sensors' by PICK_PRIOR_SAMPLES). A light never estimated
+        keeps 1. The pilot's samples are discarded, drawn from other random
+        streams than the run's, so the readings stay unbiased whatever it
+        learns. Done once per (method, depth, component, sensors, mask)."""
+        key = (method, max_depth, component, ids.tobytes(), self._mask_version)
+        if self._pick_key in (key, "fixed"):
+            return
+        wp = warp()
+        dev = self._dev
+        n_l = int(dev.rec.n_lights)
+        params = self.trace_params(method, (seed + 0x3C6EF372) & 0x7FFFFFFF, max_depth, component)
+        params.tally_pick = 1
+        count = np.full(len(ids), PICK_PILOT_SAMPLES, np.int64)
+        t_sensor, tally = self._launch(params, ids, np.zeros(len(ids), np.int64), count, tally=True)
+        tally = tally.reshape(len(t_sensor), 2, n_l, 2).astype(np.float64)
+        factors = np.ones((1 + len(self.sensors), n_l))
+
+        def ratio(sums, fallback):
+            est, got = sums[..., 0], sums[..., 1]
+            return np.where(est > 0, got / np.where(est > 0, est, 1.0), fallback)
+
+        factors[0] = ratio(tally[:, 1].sum(0), 1.0)
+        first = np.zeros((len(self.sensors), n_l, 2))
+        np.add.at(first, t_sensor, tally[:, 0])
+        overall = ratio(first.sum(0), factors[0])
+        mean_est = first[..., 0] / PICK_PILOT_SAMPLES
+        prior = PICK_PRIOR_SAMPLES * mean_est
+        est = first[..., 0] + prior
+        got = first[..., 1] + prior * overall
+        factors[1:] = np.where(est > 0, got / np.where(est > 0, est, 1.0), overall)
+        dev.set_pick_factors(factors)
+        self._pick_key = key
 
     # ------------------------------------------------------------ sensors
 
-    def _launch(self, params, sensor_ids: np.ndarray, first: np.ndarray, count: np.ndarray):
+    def _launch(self, params, sensor_ids: np.ndarray, first: np.ndarray, count: np.ndarray, tally: bool = False):
         """Draw count[i] samples of sensor_ids[i], starting at sample first[i].
 
-        Returns (sensors, counts, means, m2s, non_finite) for the batch."""
+        Returns (sensors, counts, means, m2s, non_finite) for the batch; with
+        ``tally`` (a light-pick pilot, ``params.tally_pick``) instead each
+        kernel thread's sensor and its pick tally, (threads × 2 × L) vec2."""
         wp = warp()
         nblk = (count + BLOCK - 1) // BLOCK
         t_sensor = np.repeat(sensor_ids, nblk).astype(np.int32)
@@ -208,6 +272,8 @@ class Engine:
             a_count = wp.array(t_count, dtype=wp.int32)
             if params.count_rays:
                 rec.ray_counts = wp.zeros(n, dtype=wp.int32)
+            if tally:
+                rec.pick_tally = wp.zeros(n * 2 * int(rec.n_lights), dtype=wp.vec2)
             shift = wp.empty(n, dtype=wp.vec2d)
             s1 = wp.empty(n, dtype=wp.vec2d)
             s2 = wp.empty(n, dtype=wp.vec2d)
@@ -223,6 +289,10 @@ class Engine:
 
             fan_out(self.threads, run, n)
             wp.synchronize_device()
+            if tally:
+                counts = rec.pick_tally.numpy()
+                rec.pick_tally = wp.zeros(1, dtype=wp.vec2)
+                return t_sensor, counts
             out = RunningStats.reduce_blocks(t_sensor, t_count, shift.numpy(), s1.numpy(), s2.numpy())
             if params.count_rays:
                 self.rays_traced += int(rec.ray_counts.numpy().sum())
@@ -331,6 +401,9 @@ class Engine:
         n_s = len(self.sensors)
         params = self.trace_params(method, seed, max_depth, component)
         params.count_rays = 1 if count_rays else 0
+        if self.uses_light_pick(method):
+            self._prepare_pick(method, seed, max_depth, component, ids_all)
+            params.pick_light = 1
         self.rays_traced = 0  # shadow and path rays, counted when count_rays
         stats = RunningStats(n_s)
         seconds = np.zeros(n_s)

@@ -56,6 +56,7 @@ from .lights import (  # noqa: F401  (LightRec, SceneRec re-exported for the eng
     tri_emitted,
     tri_vertex,
 )
+from .light_pick import LightPick, importance, is_delta, light_estimate, pick_light, pick_probability
 from .sampling import (
     INV_PI,
     PI,
@@ -113,6 +114,8 @@ class TraceParams:
     count_rays: int  # 1: count traced rays per thread in scene.ray_counts (benchmarks)
     thread: int  # set by the kernel for each thread
     mask_row: int  # set by the kernel: the sensor whose light mask applies at vertex 0, −1 for none
+    pick_light: int  # 1: next-event estimation samples one light with area per vertex (light_pick.py)
+    tally_pick: int  # 1: tally the light pick's pilot sums in scene.pick_tally (a pilot run)
 
 
 @wp.func
@@ -488,6 +491,28 @@ def surface_albedo(scene: SceneRec, params: TraceParams, face: int) -> float:
 
 
 @wp.func
+def pick_scale(scene: SceneRec, params: TraceParams, pk: LightPick, li: int, p: wp.vec3, n: wp.vec3, depth: int) -> float:
+    """P(li | vertex) of the light pick, 1 when every light is sampled: the
+    factor on pdf_light that makes it the next-event strategy's density."""
+    if params.pick_light == 0:
+        return 1.0
+    return pick_probability(scene, pk, li, p, n, params.mask_row, depth)
+
+
+@wp.func
+def tally_pick(scene: SceneRec, params: TraceParams, li: int, p: wp.vec3, n: wp.vec3, depth: int, weight: float, got: wp.vec2):
+    """A pilot's sums for light ``li``'s pick factor (light_pick.py): the
+    path weight × its estimate ê, and × the value its shadowed sample gave;
+    slot 0 for a sensor's first vertex, 1 for the rest."""
+    if is_delta(scene.lights[li]):
+        return
+    slot = wp.where(depth == 0 and params.mask_row >= 0, 0, 1)
+    k = (params.thread * 2 + slot) * scene.n_lights + li
+    e = light_estimate(scene, li, p, n)
+    scene.pick_tally[k] = scene.pick_tally[k] + weight * wp.vec2(e[0], importance(got))
+
+
+@wp.func
 def vertex_irradiance(
     scene: SceneRec, p_in: wp.vec3, n_in: wp.vec3, weight_in: float, params: TraceParams, skip_first: int, rng_in: wp.uint32
 ) -> wp.vec2:
@@ -512,24 +537,38 @@ def vertex_irradiance(
         if scene.has_mesh != 0 and (depth > 0 or not near_light(scene, p, off)):
             o = p + off * n
         count = not (skip_first != 0 and depth == 0)
-        # -- next-event estimation: each light once
+        # -- next-event estimation: each light once, or (pick_light) the
+        #    delta lights and one light with area, picked with P(li | x)
+        pk = LightPick()
         if params.nee != 0 and count:
+            if params.pick_light != 0:
+                pk = pick_light(scene, p, n, params.mask_row, depth, rng)
+                rng = pk.rng
             for li in range(scene.n_lights):
                 u = wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng))
                 # a light the plan proved wholly behind the sensor adds nothing there
                 if depth == 0 and params.mask_row >= 0:
                     if scene.light_mask[params.mask_row * scene.n_lights + li] == 0:
                         continue
+                sel = float(1.0)
+                if params.pick_light != 0 and not is_delta(scene.lights[li]):
+                    if li != pk.li:
+                        continue
+                    sel = pk.prob
                 ls = sample_light(scene, li, p, n, u)  # geometry from the true point; only rays start at o
-                ls.value = ls.value * shaping_factor(scene.lights[li], -ls.wi)
+                ls.value = ls.value * (shaping_factor(scene.lights[li], -ls.wi) / sel)
+                got = wp.vec2(0.0, 0.0)
                 if ls.value[0] > 0.0 or ls.value[1] > 0.0:
                     w = float(1.0)
                     if params.mis != 0 and ls.pdf > 0.0:
-                        w = power_heuristic(ls.pdf, pdf_cosine_hemisphere(wp.dot(ls.wi, n)))
-                    if w > 0.0:
+                        w = power_heuristic(sel * ls.pdf, pdf_cosine_hemisphere(wp.dot(ls.wi, n)))
+                    if w > 0.0 or params.tally_pick != 0:
                         count_ray(scene, params)
-                    if w > 0.0 and shadow_ray_clear(scene, o, p, li, ls):
-                        total += light_contribution(scene, params, li, (weight * w) * ls.value)
+                        if shadow_ray_clear(scene, o, p, li, ls):
+                            got = ls.value
+                            total += light_contribution(scene, params, li, (weight * w) * ls.value)
+                if params.tally_pick != 0:
+                    tally_pick(scene, params, li, p, n, depth, weight, got)
         if params.bsdf == 0:
             break
         # -- a cosine-weighted direction: E ≈ π·L(ω)
@@ -553,7 +592,7 @@ def vertex_irradiance(
             if t > 0.0 and count:
                 w = float(1.0)
                 if params.mis != 0 and params.nee != 0:
-                    w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, t, -1))
+                    w = power_heuristic(pdf_b, pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1))
                 total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission)
         if face < 0:
             for li in range(scene.n_lights):
@@ -561,7 +600,7 @@ def vertex_irradiance(
                 if (le[0] > 0.0 or le[1] > 0.0) and count:
                     w = float(1.0)
                     if params.mis != 0 and params.nee != 0:
-                        w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, RAY_INF, -1))
+                        w = power_heuristic(pdf_b, pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, RAY_INF, -1))
                     total += light_contribution(scene, params, li, (w_dir * w) * le)
             break
         cos_view = -wp.dot(wi, ng)
@@ -569,7 +608,8 @@ def vertex_irradiance(
         if (le[0] > 0.0 or le[1] > 0.0) and count:
             w = float(1.0)
             if params.mis != 0 and params.nee != 0 and params.emissive_light >= 0:
-                w = power_heuristic(pdf_b, pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
+                w = power_heuristic(pdf_b, pick_scale(scene, params, pk, params.emissive_light, p, n, depth)
+                                    * pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
             total += light_contribution(scene, params, params.emissive_light, (w_dir * w) * le)
         if params.bounces >= 0 and depth >= params.bounces:
             break

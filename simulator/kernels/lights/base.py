@@ -85,6 +85,8 @@ class SceneRec:
     eps: float  # ray-origin offset relative to max(1 m, |p|∞)
     ray_counts: wp.array(dtype=wp.int32)  # per kernel thread, when TraceParams.count_rays
     light_mask: wp.array(dtype=wp.int32)  # (sensors × n_lights): 0 = light culled for that sensor
+    pick_factor: wp.array(dtype=float)  # ((1 + sensors) × n_lights): learned factors of the light pick (light_pick.py)
+    pick_tally: wp.array(dtype=wp.vec2)  # (threads × 2 × n_lights): a pilot's Σ(ê, shadowed value), TraceParams.tally_pick
 
 
 @wp.struct
