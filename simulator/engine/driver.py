@@ -25,7 +25,7 @@ from simulator.engine import probes as P
 from simulator.engine.adaptive import StoppingRule, run_batches
 from simulator.engine.device import DeviceScene, cuda_available, resolve_device, warp, warp_version
 from simulator.engine.fanout import fan_out
-from simulator.engine.methods import COMPONENTS, METHOD_FLAGS, light_pick_rule
+from simulator.engine.methods import COMPONENTS, METHOD_FLAGS, light_pick_rule, rr_threshold_rule
 from simulator.engine.stats import RunningStats
 from simulator.errors import UserError
 from simulator.interrupts import StopFlag
@@ -132,6 +132,8 @@ class Engine:
         self._device_scene: DeviceScene | None = None
         #: next-event estimation by one picked light: "auto" (methods.light_pick_rule), "on" or "off"
         self.light_pick = "auto"
+        #: Russian roulette threshold of path throughput; None: methods.rr_threshold_rule
+        self.rr_threshold: float | None = None
         self._pick_key: tuple | None = None
         self._mask_version = 0
 
@@ -178,8 +180,10 @@ class Engine:
     def set_light_mask(self, mask: np.ndarray) -> None:
         """Lights to skip per sensor at its first vertex: ``mask`` (S, L) over
         the scene's lights, 0 = wholly behind the sensor (see plan.lights_behind)."""
-        self._light_mask = np.asarray(mask)
-        self._mask_version += 1
+        mask = np.asarray(mask)
+        if self._light_mask is None or not np.array_equal(self._light_mask, mask):
+            self._mask_version += 1  # the light pick learns again (a plan run again keeps what it learnt)
+        self._light_mask = mask
         if self._device_scene is not None:
             self._device_scene.set_light_mask(mask)
 
@@ -197,6 +201,7 @@ class Engine:
         p.mask_row = -1
         p.pick_light = 0
         p.tally_pick = 0
+        p.rr_threshold = float(self.rr_threshold if self.rr_threshold is not None else rr_threshold_rule(self.scene)[0])
         return p
 
     def uses_light_pick(self, method: str) -> bool:

@@ -20,8 +20,8 @@ Irradiance at a vertex is estimated by the strategies the method enables:
 - both at once (``mis``): power-heuristic weights (β = 2, Veach 1997 §9.2.3);
 - interreflection (``bounces`` ≠ 0): at a surface hit the path's throughput
   β (relative to the first vertex) is multiplied by the albedo ρ; while
-  β ≥ ``RR_THRESHOLD`` the path simply goes on, below it Russian roulette
-  lets it survive with probability β/RR_THRESHOLD and lifts β back to the
+  β ≥ ``params.rr_threshold`` the path simply goes on, below it Russian roulette
+  lets it survive with probability β/rr_threshold and lifts β back to the
   threshold (a weight window: unbiased, since E[β'] = β), so no fixed bounce
   limit truncates the light.
 
@@ -76,17 +76,10 @@ wp.set_module_options({"enable_backward": False})
 MAX_VERTICES = wp.constant(65536)
 
 # Russian roulette weight window: a path's throughput β never falls below
-# this (see vertex_irradiance). Plain roulette (survive with probability ρ at
-# every bounce, i.e. a threshold of 1) leaves every path weight 1, so the
-# path's length, geometric with mean 1/(1 − ρ), makes the noise: a relative
-# variance per sample of ≈ ρ in a furnace and ≈ 1/ρ for the indirect light of
-# a room. Following paths without roulette while β ≥ 0.1 adds
-# ln(0.1)/ln(ρ) ≈ 2.3/(1 − ρ) vertices (≤ 3.3× the rays of plain roulette)
-# and, measured as variance × rays per sample (lower is better), gains
-# 6–24× on the bundled enclosures (furnace, CIE 171 case 5.8, ρ = 0.05…0.95)
-# and 2.2× on the quickstart room; a threshold of 0.25 did about as well on
-# the room and 2–4× worse on the enclosures.
-RR_THRESHOLD = wp.constant(0.1)
+# TraceParams.rr_threshold (see vertex_irradiance); the engine sets it per
+# run from the scene's albedo, by the rule and the measurements at
+# simulator.engine.methods.rr_threshold_rule (0.1 in a room, down to 0.01 in
+# an enclosure of high albedo).
 
 
 @wp.struct
@@ -116,6 +109,7 @@ class TraceParams:
     mask_row: int  # set by the kernel: the sensor whose light mask applies at vertex 0, −1 for none
     pick_light: int  # 1: next-event estimation samples one light with area per vertex (light_pick.py)
     tally_pick: int  # 1: tally the light pick's pilot sums in scene.pick_tally (a pilot run)
+    rr_threshold: float  # Russian roulette weight window (engine.methods.rr_threshold_rule)
 
 
 @wp.func
@@ -614,11 +608,11 @@ def vertex_irradiance(
         if params.bounces >= 0 and depth >= params.bounces:
             break
         # -- reflect: L_o = ρ/π·E, so the next vertex's weight is w_dir·ρ/π
-        #    = weight_in·β·ρ. Below RR_THRESHOLD, survive with probability
-        #    q = β/RR_THRESHOLD and divide by it (Russian roulette, unbiased).
+        #    = weight_in·β·ρ. Below the threshold t, survive with probability
+        #    q = β/t and divide by it (Russian roulette, unbiased).
         beta = beta * surface_albedo(scene, params, face)
-        if beta < RR_THRESHOLD:
-            q_survive = beta / RR_THRESHOLD
+        if beta < params.rr_threshold:
+            q_survive = beta / params.rr_threshold
             if wp.randf(rng) >= q_survive:
                 break
             beta = beta / q_survive

@@ -35,7 +35,7 @@ import numpy as np
 
 from simulator.errors import UserError
 from simulator.plan.exact_rule import exact_plan_refusal
-from simulator.engine.methods import MC_METHODS, light_pick_rule
+from simulator.engine.methods import MC_METHODS, light_pick_rule, rr_threshold_rule
 from simulator.plan.bounds import FrontIndex
 from simulator.scene.model import LightKind, Scene, Sensor, SensorKind, patch_width_axis
 
@@ -397,6 +397,8 @@ def _light_sampling(scene: Scene, plans: list[SensorPlan]) -> dict[str, str]:
         if m in MC_METHODS and m != "bsdf":
             pick, why = light_pick_rule(m, scene)
             out[m] = ("one light per vertex" if pick else "every light at each vertex") + f" ({why})"
+            if m == "path":
+                out[m] += "; " + rr_threshold_rule(scene)[1]
     return out
 
 
