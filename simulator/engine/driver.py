@@ -25,7 +25,7 @@ from simulator.engine import probes as P
 from simulator.engine.adaptive import StoppingRule, run_batches
 from simulator.engine.device import DeviceScene, cuda_available, resolve_device, warp, warp_version
 from simulator.engine.fanout import fan_out
-from simulator.engine.methods import COMPONENTS, METHOD_FLAGS, light_pick_rule, rr_threshold_rule
+from simulator.engine.methods import COMPONENTS, LIGHT_PICK_MODES, METHOD_FLAGS, light_pick_rule, rr_threshold_rule
 from simulator.engine.stats import RunningStats
 from simulator.errors import UserError
 from simulator.interrupts import StopFlag
@@ -130,7 +130,7 @@ class Engine:
         self.rays_traced = 0
         self._light_mask: np.ndarray | None = None
         self._device_scene: DeviceScene | None = None
-        #: next-event estimation by one picked light: "auto" (methods.light_pick_rule), "on" or "off"
+        #: next-event estimation by one picked light: "auto" (methods.light_pick_rule) or a methods.LIGHT_PICK_MODES key
         self.light_pick = "auto"
         #: Russian roulette threshold of path throughput; None: methods.rr_threshold_rule
         self.rr_threshold: float | None = None
@@ -204,11 +204,14 @@ class Engine:
         p.rr_threshold = float(self.rr_threshold if self.rr_threshold is not None else rr_threshold_rule(self.scene)[0])
         return p
 
-    def uses_light_pick(self, method: str) -> bool:
-        """Whether :meth:`run` samples one picked light per vertex for ``method``."""
-        if self.light_pick != "auto":
-            return self.light_pick == "on" and METHOD_FLAGS[method][0] != 0
-        return light_pick_rule(method, self.scene)[0]
+    def light_pick_mode(self, method: str) -> str:
+        """How :meth:`run` samples lights for ``method``: a key of
+        ``methods.LIGHT_PICK_MODES`` (``light_pick`` "auto": the rule)."""
+        if self.light_pick == "auto":
+            return light_pick_rule(method, self.scene)[0]
+        if self.light_pick not in LIGHT_PICK_MODES:
+            raise ValueError(f"light_pick: {self.light_pick!r} is not auto or one of {sorted(LIGHT_PICK_MODES)}")
+        return self.light_pick if METHOD_FLAGS[method][0] else "off"
 
     def fix_pick_factors(self, factors: np.ndarray) -> None:
         """Use these light-pick factors, (1 + S, L) over the light records
@@ -406,9 +409,9 @@ class Engine:
         n_s = len(self.sensors)
         params = self.trace_params(method, seed, max_depth, component)
         params.count_rays = 1 if count_rays else 0
-        if self.uses_light_pick(method):
+        params.pick_light = LIGHT_PICK_MODES[self.light_pick_mode(method)]
+        if params.pick_light:
             self._prepare_pick(method, seed, max_depth, component, ids_all)
-            params.pick_light = 1
         self.rays_traced = 0  # shadow and path rays, counted when count_rays
         stats = RunningStats(n_s)
         seconds = np.zeros(n_s)

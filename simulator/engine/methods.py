@@ -12,7 +12,8 @@ per sensor.
 
 from __future__ import annotations
 
-__all__ = ["METHOD_FLAGS", "MC_METHODS", "READ_METHODS", "METHODS", "COMPONENTS", "light_pick_rule", "rr_threshold_rule"]
+__all__ = ["METHOD_FLAGS", "MC_METHODS", "READ_METHODS", "METHODS", "COMPONENTS", "LIGHT_PICK_MODES", "light_pick_rule",
+           "rr_threshold_rule"]
 
 #: Monte Carlo method → (next-event estimation, cosine directions, MIS, interreflection)
 METHOD_FLAGS = {
@@ -38,26 +39,31 @@ def area_light_count(scene) -> int:
     return sum(not l.is_delta for l in scene.lights) + int(emissive)
 
 
-def light_pick_rule(method: str, scene) -> tuple[bool, str]:
-    """Whether next-event estimation samples one light with area per vertex,
-    picked by its estimated share (``kernels.light_pick``), or every light;
-    and why.
+#: how next-event estimation samples lights: every light at every vertex;
+#: one picked light with area at every vertex; every light at the sensor's
+#: own vertex and one picked light at the later ones (kernels.light_pick)
+LIGHT_PICK_MODES = {"off": 0, "every": 1, "after_first": 2}
 
-    Measured (``probesim bench``, docs/DESIGN.md §Next-event estimation):
-    with paths every vertex past the first sees most lights blocked or
-    faint, and one picked light per vertex cut the office's time to 1% RMS;
-    direct-light methods read the sensor's own vertex, where every light it
-    sees is worth its ray, so they keep sampling all of them.
+
+def light_pick_rule(method: str, scene) -> tuple[str, str]:
+    """``(mode, reason)``: how ``method`` samples lights at a vertex, one of
+    :data:`LIGHT_PICK_MODES`.
+
+    Measured (docs/DESIGN.md §Next-event estimation): at the sensor's own
+    vertex every light it sees is worth its ray, so direct-light methods
+    keep sampling all of them, and so do paths there; past it most vertices
+    see most lights blocked or faint, and one picked light per vertex cut
+    the office's variance × time 1.5–2×.
     """
     flags = METHOD_FLAGS.get(method)
     if flags is None or not flags[0]:
-        return False, "no next-event estimation"
+        return "off", "no next-event estimation"
     n = area_light_count(scene)
     if n < 2:
-        return False, "at most one light with area: nothing to pick"
+        return "off", "at most one light with area: nothing to pick"
     if not flags[3]:
-        return False, "direct light: every light sampled at the sensor"
-    return True, f"{n} lights with area: one picked per vertex by its estimated share"
+        return "off", "direct light: every light sampled at the sensor"
+    return "after_first", f"{n} lights with area: every light at the sensor, one picked by its estimated share at each later vertex"
 
 
 # Russian roulette weight window (kernels.estimators.vertex_irradiance): a

@@ -107,7 +107,7 @@ class TraceParams:
     count_rays: int  # 1: count traced rays per thread in scene.ray_counts (benchmarks)
     thread: int  # set by the kernel for each thread
     mask_row: int  # set by the kernel: the sensor whose light mask applies at vertex 0, −1 for none
-    pick_light: int  # 1: next-event estimation samples one light with area per vertex (light_pick.py)
+    pick_light: int  # next-event estimation by one picked light with area (light_pick.py): 0 never, 1 at every vertex, 2 past the first
     tally_pick: int  # 1: tally the light pick's pilot sums in scene.pick_tally (a pilot run)
     rr_threshold: float  # Russian roulette weight window (engine.methods.rr_threshold_rule)
 
@@ -485,10 +485,17 @@ def surface_albedo(scene: SceneRec, params: TraceParams, face: int) -> float:
 
 
 @wp.func
+def picks_at(params: TraceParams, depth: int) -> bool:
+    """Whether the vertex at ``depth`` picks one light (pick_light 1: every
+    vertex; 2: every vertex past the sensor's own)."""
+    return params.pick_light == 1 or (params.pick_light == 2 and depth > 0)
+
+
+@wp.func
 def pick_scale(scene: SceneRec, params: TraceParams, pk: LightPick, li: int, p: wp.vec3, n: wp.vec3, depth: int) -> float:
     """P(li | vertex) of the light pick, 1 when every light is sampled: the
     factor on pdf_light that makes it the next-event strategy's density."""
-    if params.pick_light == 0:
+    if not picks_at(params, depth):
         return 1.0
     return pick_probability(scene, pk, li, p, n, params.mask_row, depth)
 
@@ -535,7 +542,7 @@ def vertex_irradiance(
         #    delta lights and one light with area, picked with P(li | x)
         pk = LightPick()
         if params.nee != 0 and count:
-            if params.pick_light != 0:
+            if picks_at(params, depth):
                 pk = pick_light(scene, p, n, params.mask_row, depth, rng)
                 rng = pk.rng
             for li in range(scene.n_lights):
@@ -545,7 +552,7 @@ def vertex_irradiance(
                     if scene.light_mask[params.mask_row * scene.n_lights + li] == 0:
                         continue
                 sel = float(1.0)
-                if params.pick_light != 0 and not is_delta(scene.lights[li]):
+                if picks_at(params, depth) and not is_delta(scene.lights[li]):
                     if li != pk.li:
                         continue
                     sel = pk.prob

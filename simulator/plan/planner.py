@@ -395,8 +395,10 @@ def _light_sampling(scene: Scene, plans: list[SensorPlan]) -> dict[str, str]:
     out = {}
     for m in dict.fromkeys(sp.method for sp in plans):
         if m in MC_METHODS and m != "bsdf":
-            pick, why = light_pick_rule(m, scene)
-            out[m] = ("one light per vertex" if pick else "every light at each vertex") + f" ({why})"
+            mode, why = light_pick_rule(m, scene)
+            how = {"off": "every light at each vertex", "every": "one light per vertex",
+                   "after_first": "every light at the sensor, one light per vertex after it"}[mode]
+            out[m] = f"{how} ({why})"
             if m == "path":
                 out[m] += "; " + rr_threshold_rule(scene)[1]
     return out
