@@ -22,6 +22,10 @@ multiple importance sampling uses the strategy's real density
 P(li | x)·pdf_light(ω) (Veach 1997 §9.2; pbrt-v4's light samplers,
 Pharr, Jakob, Humphreys 2023, §12.6, pick ∝ power in the same way).
 
+Where the pick applies is ``TraceParams.pick_light``: never, at every
+vertex, or past the sensor's own vertex (what paths use; see
+``engine.methods.light_pick_rule`` for the measurements).
+
 Delta lights (point lights, distant lights of angle 0) are not picked:
 they are still sampled at every vertex, so readings that are exact today
 (a lone point light) stay exact; the pick is among the lights with area.
