@@ -10,9 +10,11 @@ one light ``li`` is picked with probability
     w_l(x) = ê_l(x) · f_l,
 
 where ê_l(x) ≥ 0 is a cheap deterministic estimate of light l's
-unoccluded irradiance at the vertex (:func:`light_estimate`), f_l a learned factor (the ratio of its
-shadowed sample values to ê over a pilot run, so mostly the fraction of
-its light that is not blocked; :func:`pick_factor`), and c_l ∈ {0, 1}
+unoccluded irradiance at the vertex (:func:`light_estimate`), f_l a
+learned factor (the ratio of its shadowed sample values to ê over a pilot
+run, so mostly the fraction of its light that is not blocked; one row for
+each sensor's own vertex, one for all later vertices: :func:`pick_factor`,
+learnt by ``Engine._prepare_pick``), and c_l ∈ {0, 1}
 whether light l can reach the vertex at all (1 unless it is provably
 behind the vertex, or masked for the sensor). The uniform share α keeps
 every light that can give light at a probability ≥ α/L, so no light is
@@ -48,7 +50,9 @@ from simulator.scene.model import LightKind
 from .lights import LightRec, SceneRec
 from .sampling import PI
 
-#: the uniform share α of the pick (see the module docstring)
+#: the uniform share α of the pick (see the module docstring); on the
+#: office's paths, variance per sample 2.07, 2.10 and 2.31 at α = 0.03, 0.1
+#: and 0.3: a small share costs little, and bounds the weight 1/P by L/α
 PICK_UNIFORM = wp.constant(0.1)
 #: lm → W at 555 nm (1/683): the pick weighs a light by W + lm/683, so a
 #: light with either channel counts
