@@ -62,8 +62,9 @@ def light_pick_rule(method: str, scene) -> tuple[str, str]:
     if n < 2:
         return "off", "at most one light with area: nothing to pick"
     if not flags[3]:
-        return "off", "direct light: every light sampled at the sensor"
-    return "after_first", f"{n} lights with area: every light at the sensor, one picked by its estimated share at each later vertex"
+        return "off", "direct light: at the sensor every light it sees is worth its ray"
+    return "after_first", (f"{n} lights with area; at the sensor each is worth its ray, past it most are blocked or "
+                           "faint, so one is picked by its estimated share")
 
 
 # Russian roulette weight window (kernels.estimators.vertex_irradiance): a

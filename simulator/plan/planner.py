@@ -397,7 +397,7 @@ def _light_sampling(scene: Scene, plans: list[SensorPlan]) -> dict[str, str]:
         if m in MC_METHODS and m != "bsdf":
             mode, why = light_pick_rule(m, scene)
             how = {"off": "every light at each vertex", "every": "one light per vertex",
-                   "after_first": "every light at the sensor, one light per vertex after it"}[mode]
+                   "after_first": "every light at the sensor and one light at each later vertex"}[mode]
             out[m] = f"{how} ({why})"
             if m == "path":
                 out[m] += "; " + rr_threshold_rule(scene)[1]
