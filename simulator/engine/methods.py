@@ -121,4 +121,5 @@ def rr_threshold_rule(scene) -> tuple[float, str]:
     the measurements above)."""
     rho = mean_albedo(scene)
     t = min(RR_THRESHOLD_MAX, max(RR_THRESHOLD_MIN, RR_SLOPE * (1.0 - rho)))
-    return t, f"Russian roulette below throughput {t:.3g}: min({RR_THRESHOLD_MAX:g}, {RR_SLOPE:g}·(1 − ρ̄)), ρ̄ = {rho:.2f}"
+    rule = f"min({RR_THRESHOLD_MAX:g}, {RR_SLOPE:g}·(1 − ρ̄)), ρ̄ = {rho:.2f}"
+    return t, f"Russian roulette below throughput {t:.3g}: {rule}"

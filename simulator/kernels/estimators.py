@@ -107,7 +107,7 @@ class TraceParams:
     count_rays: int  # 1: count traced rays per thread in scene.ray_counts (benchmarks)
     thread: int  # set by the kernel for each thread
     mask_row: int  # set by the kernel: the sensor whose light mask applies at vertex 0, −1 for none
-    pick_light: int  # next-event estimation by one picked light with area (light_pick.py): 0 never, 1 at every vertex, 2 past the first
+    pick_light: int  # one picked light with area (light_pick.py): 0 never, 1 at every vertex, 2 past the first
     tally_pick: int  # 1: tally the light pick's pilot sums in scene.pick_tally (a pilot run)
     rr_threshold: float  # Russian roulette weight window (engine.methods.rr_threshold_rule)
 
@@ -492,7 +492,9 @@ def picks_at(params: TraceParams, depth: int) -> bool:
 
 
 @wp.func
-def pick_scale(scene: SceneRec, params: TraceParams, pk: LightPick, li: int, p: wp.vec3, n: wp.vec3, depth: int) -> float:
+def pick_scale(
+    scene: SceneRec, params: TraceParams, pk: LightPick, li: int, p: wp.vec3, n: wp.vec3, depth: int
+) -> float:
     """P(li | vertex) of the light pick, 1 when every light is sampled: the
     factor on pdf_light that makes it the next-event strategy's density."""
     if not picks_at(params, depth):
@@ -501,7 +503,9 @@ def pick_scale(scene: SceneRec, params: TraceParams, pk: LightPick, li: int, p: 
 
 
 @wp.func
-def tally_pick(scene: SceneRec, params: TraceParams, li: int, p: wp.vec3, n: wp.vec3, depth: int, weight: float, got: wp.vec2):
+def tally_pick(
+    scene: SceneRec, params: TraceParams, li: int, p: wp.vec3, n: wp.vec3, depth: int, weight: float, got: wp.vec2
+):
     """A pilot's sums for light ``li``'s pick factor (light_pick.py): the
     path weight × its estimate ê, and × the value its shadowed sample gave;
     slot 0 for a sensor's first vertex, 1 for the rest."""
@@ -593,7 +597,8 @@ def vertex_irradiance(
             if t > 0.0 and count:
                 w = float(1.0)
                 if params.mis != 0 and params.nee != 0:
-                    w = power_heuristic(pdf_b, pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1))
+                    pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1)
+                    w = power_heuristic(pdf_b, pdf_l)
                 total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission)
         if face < 0:
             for li in range(scene.n_lights):
@@ -601,7 +606,8 @@ def vertex_irradiance(
                 if (le[0] > 0.0 or le[1] > 0.0) and count:
                     w = float(1.0)
                     if params.mis != 0 and params.nee != 0:
-                        w = power_heuristic(pdf_b, pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, RAY_INF, -1))
+                        pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, RAY_INF, -1)
+                        w = power_heuristic(pdf_b, pdf_l)
                     total += light_contribution(scene, params, li, (w_dir * w) * le)
             break
         cos_view = -wp.dot(wi, ng)
