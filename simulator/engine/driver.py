@@ -27,7 +27,9 @@ from simulator.engine import probes as P
 from simulator.engine.adaptive import StoppingRule, run_batches
 from simulator.engine.device import DeviceScene, cuda_available, resolve_device, warp, warp_version
 from simulator.engine.fanout import fan_out
-from simulator.engine.methods import COMPONENTS, GUIDED_METHODS, METHOD_FLAGS
+from simulator.engine.methods import (
+    COMPONENTS, GUIDED_METHODS, LIGHT_PICK_MODES, METHOD_FLAGS, light_pick_rule, rr_threshold_rule,
+)
 from simulator.engine.stats import GroupStats, RunningStats
 from simulator.errors import UserError
 from simulator.interrupts import StopFlag
@@ -50,6 +52,11 @@ THREADS_PER_LAUNCH = 1 << 16
 #: most bytes of light-group state (16·G·(G + 3) per kernel thread) one launch holds; a batch
 #: that needs more is drawn in several launches (only with many groups: G = 20 fits 36,000 threads)
 GROUP_STATE_BYTES = 1 << 28
+#: samples per sensor of the light pick's pilot (all lights sampled, tallied, then discarded)
+PICK_PILOT_SAMPLES = 16
+#: a sensor's own first-vertex pick factor is shrunk toward all sensors'
+#: by this many pseudo-samples (a sensor's 16 pilot samples are few)
+PICK_PRIOR_SAMPLES = 4
 
 
 @dataclass
@@ -180,6 +187,12 @@ class Engine:
         self._device_scene: DeviceScene | None = None
         self._hero = None  # simulator.spectra.hero.HeroTables when tracing spectrally
         self.guide = None  #: GuideInfo once a guided run has built the guide (once per engine)
+        #: next-event estimation by one picked light: "auto" (methods.light_pick_rule) or a methods.LIGHT_PICK_MODES key
+        self.light_pick = "auto"
+        #: Russian roulette threshold of path throughput; None: methods.rr_threshold_rule
+        self.rr_threshold: float | None = None
+        self._pick_key: tuple | None = None
+        self._mask_version = 0
 
     def _upload(self) -> DeviceScene:
         """Import Warp, load the kernels and upload the scene, on first need: a
@@ -247,7 +260,10 @@ class Engine:
     def set_light_mask(self, mask: np.ndarray) -> None:
         """Lights to skip per sensor at its first vertex: ``mask`` (S, L) over
         the scene's lights, 0 = wholly behind the sensor (see plan.lights_behind)."""
-        self._light_mask = np.asarray(mask)
+        mask = np.asarray(mask)
+        if self._light_mask is None or not np.array_equal(self._light_mask, mask):
+            self._mask_version += 1  # the light pick learns again (a plan run again keeps what it learnt)
+        self._light_mask = mask
         if self._device_scene is not None:
             self._device_scene.set_light_mask(mask)
 
@@ -276,6 +292,9 @@ class Engine:
         p.guide_depth = G.GUIDE_DEPTH
         p.tally = 0
         p.tally_row = 0
+        p.pick_light = 0
+        p.tally_pick = 0
+        p.rr_threshold = float(self.rr_threshold if self.rr_threshold is not None else rr_threshold_rule(self.scene)[0])
         return p
 
     def ensure_guide(self, seed: int, sensor_ids: np.ndarray | None = None, max_depth: int = -1):
@@ -288,16 +307,71 @@ class Engine:
             self.guide = build_guide(self, seed, ids, max_depth)
         return self.guide
 
+    def light_pick_mode(self, method: str) -> str:
+        """How :meth:`run` samples lights for ``method``: a key of
+        ``methods.LIGHT_PICK_MODES`` (``light_pick`` "auto": the rule)."""
+        if self.light_pick == "auto":
+            return light_pick_rule(method, self.scene)[0]
+        if self.light_pick not in LIGHT_PICK_MODES:
+            raise ValueError(f"light_pick: {self.light_pick!r} is not auto or one of {sorted(LIGHT_PICK_MODES)}")
+        return self.light_pick if METHOD_FLAGS[method][0] else "off"
+
+    def fix_pick_factors(self, factors: np.ndarray) -> None:
+        """Use these light-pick factors, (1 + S, L) over the light records
+        (see :meth:`_prepare_pick`), instead of learning them by a pilot."""
+        self._dev.set_pick_factors(np.asarray(factors, np.float64))
+        self._pick_key = "fixed"
+
+    def _prepare_pick(self, method: str, seed: int, max_depth: int, component: str, ids: np.ndarray) -> None:
+        """Learn the light pick's factors (kernels.light_pick) for these
+        sensors from a pilot that samples every light: per light, Σ weight ×
+        shadowed value / Σ weight × estimate ê, over path vertices past the
+        first (row 0) and over each sensor's first vertex (row 1 + s, shrunk
+        toward all sensors' by PICK_PRIOR_SAMPLES). A light never estimated
+        keeps 1. The pilot's samples are discarded, drawn from other random
+        streams than the run's, so the readings stay unbiased whatever it
+        learns. Done once per (method, depth, component, sensors, mask)."""
+        key = (method, max_depth, component, ids.tobytes(), self._mask_version)
+        if self._pick_key in (key, "fixed"):
+            return
+        wp = warp()
+        dev = self._dev
+        n_l = int(dev.rec.n_lights)
+        params = self.trace_params(method, (seed + 0x3C6EF372) & 0x7FFFFFFF, max_depth, component)
+        params.tally_pick = 1
+        count = np.full(len(ids), PICK_PILOT_SAMPLES, np.int64)
+        t_sensor, tally = self._launch(params, ids, np.zeros(len(ids), np.int64), count, tally=True)
+        tally = tally.reshape(len(t_sensor), 2, n_l, 2).astype(np.float64)
+        factors = np.ones((1 + len(self.sensors), n_l))
+
+        def ratio(sums, fallback):
+            est, got = sums[..., 0], sums[..., 1]
+            return np.where(est > 0, got / np.where(est > 0, est, 1.0), fallback)
+
+        factors[0] = ratio(tally[:, 1].sum(0), 1.0)
+        first = np.zeros((len(self.sensors), n_l, 2))
+        np.add.at(first, t_sensor, tally[:, 0])
+        overall = ratio(first.sum(0), factors[0])
+        mean_est = first[..., 0] / PICK_PILOT_SAMPLES
+        prior = PICK_PRIOR_SAMPLES * mean_est
+        est = first[..., 0] + prior
+        got = first[..., 1] + prior * overall
+        factors[1:] = np.where(est > 0, got / np.where(est > 0, est, 1.0), overall)
+        dev.set_pick_factors(factors)
+        self._pick_key = key
+
     # ------------------------------------------------------------ sensors
 
-    def _launch(self, params, sensor_ids: np.ndarray, first: np.ndarray, count: np.ndarray):
+    def _launch(self, params, sensor_ids: np.ndarray, first: np.ndarray, count: np.ndarray, tally: bool = False):
         """Draw count[i] samples of sensor_ids[i], starting at sample first[i].
 
         Returns (sensors, counts, means, m2s, non_finite, response_means,
         response_m2s, group_means, group_m2s) for the batch: the responses are
         None for grey transport; with group tallies on (``params.group_tally``)
         the per-sensor group means (S', C, G) and co-moments (S', C, G, G),
-        else None."""
+        else None. With ``tally`` (a light-pick pilot, ``params.tally_pick``)
+        instead each kernel thread's sensor and its pick tally, (threads × 2 ×
+        L) vec2."""
         wp = warp()
         nblk = (count + BLOCK - 1) // BLOCK
         t_sensor = np.repeat(sensor_ids, nblk).astype(np.int32)
@@ -313,6 +387,8 @@ class Engine:
             a_count = wp.array(t_count, dtype=wp.int32)
             if params.count_rays:
                 rec.ray_counts = wp.zeros(n, dtype=wp.int32)
+            if tally:
+                rec.pick_tally = wp.zeros(n * 2 * int(rec.n_lights), dtype=wp.vec2)
             shift = wp.empty(n, dtype=wp.vec2d)
             s1 = wp.empty(n, dtype=wp.vec2d)
             s2 = wp.empty(n, dtype=wp.vec2d)
@@ -345,6 +421,10 @@ class Engine:
 
             fan_out(self.threads, run, n)
             wp.synchronize_device()
+            if tally:
+                counts = rec.pick_tally.numpy()
+                rec.pick_tally = wp.zeros(1, dtype=wp.vec2)
+                return t_sensor, counts
             out = RunningStats.reduce_blocks(t_sensor, t_count, shift.numpy(), s1.numpy(), s2.numpy())
             if params.count_rays:
                 self.rays_traced += int(rec.ray_counts.numpy().sum())
@@ -478,6 +558,9 @@ class Engine:
             self.ensure_guide(seed, ids_all, max_depth)
         params = self.trace_params(method, seed, max_depth, component)
         params.count_rays = 1 if count_rays else 0
+        params.pick_light = LIGHT_PICK_MODES[self.light_pick_mode(method)]
+        if params.pick_light:
+            self._prepare_pick(method, seed, max_depth, component, ids_all)
         self.rays_traced = 0  # shadow and path rays, counted when count_rays
         stats = RunningStats(n_s)
         n_resp = self._dev.n_responses if params.spectral else 0

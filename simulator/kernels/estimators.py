@@ -20,8 +20,8 @@ Irradiance at a vertex is estimated by the strategies the method enables:
 - both at once (``mis``): power-heuristic weights (β = 2, Veach 1997 §9.2.3);
 - interreflection (``bounces`` ≠ 0): at a surface hit the path's throughput
   β (relative to the first vertex) is multiplied by the albedo ρ; while
-  β ≥ ``RR_THRESHOLD`` the path simply goes on, below it Russian roulette
-  lets it survive with probability β/RR_THRESHOLD and lifts β back to the
+  β ≥ ``params.rr_threshold`` the path simply goes on, below it Russian roulette
+  lets it survive with probability β/rr_threshold and lifts β back to the
   threshold (a weight window: unbiased, since E[β'] = β), so no fixed bounce
   limit truncates the light;
 - guided paths (``guide_c`` > 0): the next vertex drawn, with probability c,
@@ -61,6 +61,7 @@ from .lights import (  # noqa: F401  (GuideRec, LightRec, SceneRec re-exported f
     tri_emitted,
     tri_vertex,
 )
+from .light_pick import LightPick, importance, is_delta, light_estimate, pick_light, pick_probability
 from .sampling import (
     INV_PI,
     PI,
@@ -82,17 +83,10 @@ wp.set_module_options({"enable_backward": False})
 MAX_VERTICES = wp.constant(65536)
 
 # Russian roulette weight window: a path's throughput β never falls below
-# this (see vertex_irradiance). Plain roulette (survive with probability ρ at
-# every bounce, i.e. a threshold of 1) leaves every path weight 1, so the
-# path's length, geometric with mean 1/(1 − ρ), makes the noise: a relative
-# variance per sample of ≈ ρ in a furnace and ≈ 1/ρ for the indirect light of
-# a room. Following paths without roulette while β ≥ 0.1 adds
-# ln(0.1)/ln(ρ) ≈ 2.3/(1 − ρ) vertices (≤ 3.3× the rays of plain roulette)
-# and, measured as variance × rays per sample (lower is better), gains
-# 6–24× on the bundled enclosures (furnace, CIE 171 case 5.8, ρ = 0.05…0.95)
-# and 2.2× on the quickstart room; a threshold of 0.25 did about as well on
-# the room and 2–4× worse on the enclosures.
-RR_THRESHOLD = wp.constant(0.1)
+# TraceParams.rr_threshold (see vertex_irradiance); the engine sets it per
+# run from the scene's albedo, by the rule and the measurements at
+# simulator.engine.methods.rr_threshold_rule (0.1 in a room, down to 0.01 in
+# an enclosure of high albedo).
 
 
 @wp.struct
@@ -135,6 +129,9 @@ class TraceParams:
     guide_depth: int  # ... and < guide_depth (−1: no upper bound)
     tally: int  # 1: add each surface vertex's next-event contributions to scene.guide.tally (the pilot)
     tally_row: int  # the row of scene.guide.tally this launch adds to (one per CPU worker: no races)
+    pick_light: int  # one picked light with area (light_pick.py): 0 never, 1 at every vertex, 2 past the first
+    tally_pick: int  # 1: tally the light pick's pilot sums in scene.pick_tally (a pilot run)
+    rr_threshold: float  # Russian roulette weight window (engine.methods.rr_threshold_rule)
 
 
 @wp.func
@@ -858,6 +855,39 @@ def tally_patch(scene: SceneRec, params: TraceParams, row: int, face: int, y: wp
 
 
 @wp.func
+def picks_at(params: TraceParams, depth: int) -> bool:
+    """Whether the vertex at ``depth`` picks one light (pick_light 1: every
+    vertex; 2: every vertex past the sensor's own)."""
+    return params.pick_light == 1 or (params.pick_light == 2 and depth > 0)
+
+
+@wp.func
+def pick_scale(
+    scene: SceneRec, params: TraceParams, pk: LightPick, li: int, p: wp.vec3, n: wp.vec3, depth: int
+) -> float:
+    """P(li | vertex) of the light pick, 1 when every light is sampled: the
+    factor on pdf_light that makes it the next-event strategy's density."""
+    if not picks_at(params, depth):
+        return 1.0
+    return pick_probability(scene, pk, li, p, n, params.mask_row, depth)
+
+
+@wp.func
+def tally_pick(
+    scene: SceneRec, params: TraceParams, li: int, p: wp.vec3, n: wp.vec3, depth: int, weight: float, got: wp.vec2
+):
+    """A pilot's sums for light ``li``'s pick factor (light_pick.py): the
+    path weight × its estimate ê, and × the value its shadowed sample gave;
+    slot 0 for a sensor's first vertex, 1 for the rest."""
+    if is_delta(scene.lights[li]):
+        return
+    slot = wp.where(depth == 0 and params.mask_row >= 0, 0, 1)
+    k = (params.thread * 2 + slot) * scene.n_lights + li
+    e = light_estimate(scene, li, p, n)
+    scene.pick_tally[k] = scene.pick_tally[k] + weight * wp.vec2(e[0], importance(got))
+
+
+@wp.func
 def vertex_irradiance(
     scene: SceneRec, p_in: wp.vec3, n_in: wp.vec3, weight_in: float, params: TraceParams, skip_first: int, rng_in: wp.uint32
 ) -> wp.vec2:
@@ -897,35 +927,49 @@ def vertex_irradiance(
         if scene.has_mesh != 0 and (depth > 0 or not near_light(scene, p, off)):
             o = p + off * n
         count = not (skip_first != 0 and depth == 0)
-        # -- next-event estimation: each light once
+        # -- next-event estimation: each light once, or (pick_light) the
+        #    delta lights and one light with area, picked with P(li | x)
+        pk = LightPick()
         if params.nee != 0 and count:
+            if picks_at(params, depth):
+                pk = pick_light(scene, p, n, params.mask_row, depth, rng)
+                rng = pk.rng
             for li in range(scene.n_lights):
                 u = wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng))
                 # a light the plan proved wholly behind the sensor adds nothing there
                 if depth == 0 and params.mask_row >= 0:
                     if scene.light_mask[params.mask_row * scene.n_lights + li] == 0:
                         continue
+                sel = float(1.0)
+                if picks_at(params, depth) and not is_delta(scene.lights[li]):
+                    if li != pk.li:
+                        continue
+                    sel = pk.prob
                 ls = sample_light(scene, li, p, n, u)  # geometry from the true point; only rays start at o
-                ls.value = ls.value * shaping_factor(scene.lights[li], -ls.wi)
+                ls.value = ls.value * (shaping_factor(scene.lights[li], -ls.wi) / sel)
+                got = wp.vec2(0.0, 0.0)
                 if ls.value[0] > 0.0 or ls.value[1] > 0.0:
                     w = float(1.0)
                     if params.mis != 0 and ls.pdf > 0.0:
-                        w = power_heuristic(ls.pdf, (1.0 - c_v) * pdf_cosine_hemisphere(wp.dot(ls.wi, n)))
-                    if w > 0.0:
+                        w = power_heuristic(sel * ls.pdf, (1.0 - c_v) * pdf_cosine_hemisphere(wp.dot(ls.wi, n)))
+                    if w > 0.0 or params.tally_pick != 0:
                         count_ray(scene, params)
-                    if w > 0.0 and shadow_ray_clear(scene, o, p, li, ls):
-                        c_light = light_contribution(scene, params, li, (weight * w) * ls.value, tint)
-                        total += c_light
-                        if params.tally != 0 and depth > 0:
-                            tally_patch(scene, params, prev_row, cur_face, p, c_light)
+                        if shadow_ray_clear(scene, o, p, li, ls):
+                            got = ls.value
+                            c_light = light_contribution(scene, params, li, (weight * w) * ls.value, tint)
+                            total += c_light
+                            if params.tally != 0 and depth > 0:
+                                tally_patch(scene, params, prev_row, cur_face, p, c_light)
+                if params.tally_pick != 0:
+                    tally_pick(scene, params, li, p, n, depth, weight, got)
         if params.bsdf == 0:
             break
         # -- guided paths: the weight window (below) is applied here, after
         #    this vertex's next-event estimate: a guided step toward a bright
         #    patch far off takes a small factor, and rouletting before that
         #    patch's own light is gathered would put the noise back
-        if params.guide_c > 0.0 and depth > 0 and beta < RR_THRESHOLD:
-            q_late = beta / RR_THRESHOLD
+        if params.guide_c > 0.0 and depth > 0 and beta < params.rr_threshold:
+            q_late = beta / params.rr_threshold
             if wp.randf(rng) >= q_late:
                 break
             beta = beta / q_late
@@ -968,7 +1012,8 @@ def vertex_irradiance(
             if t > 0.0 and count:
                 w = float(1.0)
                 if params.mis != 0 and params.nee != 0:
-                    w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, t, -1))
+                    pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1)
+                    w = power_heuristic(pdf_b, pdf_l)
                 total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission, tint)
         if face < 0:
             for li in range(scene.n_lights):
@@ -976,7 +1021,8 @@ def vertex_irradiance(
                 if (le[0] > 0.0 or le[1] > 0.0) and count:
                     w = float(1.0)
                     if params.mis != 0 and params.nee != 0:
-                        w = power_heuristic(pdf_b, pdf_light(scene, li, o, n, wi, RAY_INF, -1))
+                        pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, RAY_INF, -1)
+                        w = power_heuristic(pdf_b, pdf_l)
                     total += light_contribution(scene, params, li, (w_dir * w) * le, tint)
             break
         cos_view = -wp.dot(wi, ng)
@@ -984,21 +1030,22 @@ def vertex_irradiance(
         if (le[0] > 0.0 or le[1] > 0.0) and count:
             w = float(1.0)
             if params.mis != 0 and params.nee != 0 and params.emissive_light >= 0:
-                w = power_heuristic(pdf_b, pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
+                w = power_heuristic(pdf_b, pick_scale(scene, params, pk, params.emissive_light, p, n, depth)
+                                    * pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
             total += light_contribution(scene, params, params.emissive_light, (w_dir * w) * le, tint)
         if params.bounces >= 0 and depth >= params.bounces:
             break
         # -- reflect: L_o = ρ/π·E, so the next vertex's weight is w_dir·ρ/π
-        #    = weight_in·β·ρ. Below RR_THRESHOLD, survive with probability
-        #    q = β/RR_THRESHOLD and divide by it (Russian roulette, unbiased).
+        #    = weight_in·β·ρ. Below the threshold t, survive with probability
+        #    q = β/t and divide by it (Russian roulette, unbiased).
         refl = surface_albedo(scene, params, face, tint)
         beta = beta * refl.rho
         tint = refl.tint
         if c_v > 0.0:  # one-sample MIS against the guide (mixture_factor)
             beta = beta * mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
                                          local[2] * wp.abs(cos_view) * INV_PI / (t_hit * t_hit))  # fmt: skip
-        if beta < RR_THRESHOLD and params.guide_c <= 0.0:  # guided paths: after the next NEE (above)
-            q_survive = beta / RR_THRESHOLD
+        if beta < params.rr_threshold and params.guide_c <= 0.0:  # guided paths: after the next NEE (above)
+            q_survive = beta / params.rr_threshold
             if wp.randf(rng) >= q_survive:
                 break
             beta = beta / q_survive

@@ -42,7 +42,7 @@ import numpy as np
 
 from simulator.errors import UserError
 from simulator.plan.exact_rule import exact_plan_refusal
-from simulator.engine.methods import METHOD_FLAGS, MC_METHODS
+from simulator.engine.methods import METHOD_FLAGS, MC_METHODS, light_pick_rule, rr_threshold_rule
 from simulator.plan.bounds import FrontIndex
 from simulator.scene.model import LightKind, Scene, Sensor, SensorKind, patch_width_axis
 
@@ -227,6 +227,8 @@ class Plan:
     sensors: list[SensorPlan]
     #: transport the scene needs (:data:`simulator.spectra.transport.TRANSPORTS`)
     transport: str = "grey"
+    #: per Monte Carlo method used: how next-event estimation samples the lights, and why
+    light_sampling: dict[str, str] = field(default_factory=dict)
 
     def groups(self) -> dict[str, np.ndarray]:
         """Sensor indices per method, in first-use order."""
@@ -252,6 +254,7 @@ class Plan:
             "channels": self.channels,
             "channel_reason": self.channel_reason,
             "methods": {m: len(ix) for m, ix in self.groups().items()},
+            "light_sampling": dict(self.light_sampling),
             "sensors": [asdict(sp) for sp in self.sensors],
         }
 
@@ -411,7 +414,22 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
             method, reason = paths, "surfaces it sees reflect: interreflection needs paths" + paths_why
         plans.append(SensorPlan(s.name, kind, method, bool(METHOD_FLAGS.get(method, (0, 0, 0, False))[3]), reason, lights,
                                 culled, geometry))  # fmt: skip
-    return Plan(requested, component, channels, channel_reason, plans, transport)
+    return Plan(requested, component, channels, channel_reason, plans, transport, _light_sampling(scene, plans))
+
+
+def _light_sampling(scene: Scene, plans: list[SensorPlan]) -> dict[str, str]:
+    """How each Monte Carlo method of the plan samples lights at a vertex
+    (:func:`simulator.engine.methods.light_pick_rule`)."""
+    out = {}
+    for m in dict.fromkeys(sp.method for sp in plans):
+        if m in MC_METHODS and m != "bsdf":
+            mode, why = light_pick_rule(m, scene)
+            how = {"off": "every light at each vertex", "every": "one light per vertex",
+                   "after_first": "every light at the sensor and one light at each later vertex"}[mode]
+            out[m] = f"{how} ({why})"
+            if METHOD_FLAGS[m][3]:  # paths: their roulette threshold
+                out[m] += "; " + rr_threshold_rule(scene)[1]
+    return out
 
 
 def _path_method(scene: Scene) -> tuple[str, str]:
@@ -443,5 +461,7 @@ def format_plan(plan: Plan, max_rows: int = 40) -> str:
     if len(plan.sensors) > max_rows:
         lines.append(f"... {len(plan.sensors) - max_rows} more sensors")
     counts = ", ".join(f"{m}: {len(ix)}" for m, ix in plan.groups().items())
+    for m, how in plan.light_sampling.items():
+        lines.append(f"{m} samples {how}")
     lines.append(f"methods: {counts}; component {plan.component}; transport {plan.transport}, channels: {plan.channels} ({plan.channel_reason})")
     return "\n".join(lines)

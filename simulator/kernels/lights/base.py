@@ -132,6 +132,8 @@ class SceneRec:
     colour_weights: wp.array2d(dtype=float)  # (3 × 401): a lane's weight of linear sRGB (cd/m²), for probe maps
     light_group: wp.array(dtype=wp.int32)  # per light record: its light group, −1 for none (TraceParams.group_tally)
     guide: GuideRec  # surface patches for guided paths
+    pick_factor: wp.array(dtype=float)  # ((1 + sensors) × n_lights): learned factors of the light pick (light_pick.py)
+    pick_tally: wp.array(dtype=wp.vec2)  # (threads × 2 × n_lights): a pilot's Σ(ê, shadowed value), TraceParams.tally_pick
 
 
 @wp.struct
