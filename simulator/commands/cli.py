@@ -12,6 +12,7 @@ import sys
 import time
 
 from simulator import __version__
+from simulator.engine.methods import METHODS
 from simulator.errors import UserError
 
 __all__ = ["main"]
@@ -27,7 +28,7 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("-o", "--output", metavar="OUT.csv", help="CSV path (default: the config's [output] csv)")
     r.add_argument("--seed", type=int, help="random seed (overrides [simulation] seed)")
     r.add_argument("--samples", type=int, help="samples per sensor (overrides [simulation] samples)")
-    r.add_argument("--method", help="estimator: auto, analytic, exact, light, bsdf, mis or path")
+    r.add_argument("--method", help=f"estimator: {', '.join(METHODS[:-1])} or {METHODS[-1]}")
     r.add_argument("--rel-error", type=float, metavar="R", help="adaptive: stop each sensor when its confidence half-width is under R × its reading")
     r.add_argument("--variant", action="append", metavar="SET=VARIANT",
                    help="select a USD variant before reading (repeatable; overrides the config's variants)")

@@ -334,7 +334,6 @@ class Engine:
         key = (method, max_depth, component, ids.tobytes(), self._mask_version)
         if self._pick_key in (key, "fixed"):
             return
-        wp = warp()
         dev = self._dev
         n_l = int(dev.rec.n_lights)
         params = self.trace_params(method, (seed + 0x3C6EF372) & 0x7FFFFFFF, max_depth, component)
