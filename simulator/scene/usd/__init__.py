@@ -384,4 +384,4 @@ def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light],
                 if light.kind == LightKind.DOME:
                     domes.append((light, prim))
     attach_portals(ctx, stage, domes, portals)
-    return geo.build(), lights, sensors
+    return geo.build(ctx.reflectances, ctx.emissive_spectra), lights, sensors
