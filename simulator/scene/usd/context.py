@@ -77,13 +77,13 @@ class _Context:
 
 
 def _layer_relative(attr: Usd.Attribute, authored: str) -> str:
-    """A path a string attribute states, resolved against the layer that authors its strongest opinion
-    (as an asset path would be); absolute paths are kept."""
+    """A path an attribute states, resolved against the folder of the layer that authors its strongest
+    opinion (an asset path the resolver did not find, or a string); absolute paths are kept."""
     if os.path.isabs(authored):
         return authored
     for spec in attr.GetPropertyStack(Usd.TimeCode.Default()):
-        if spec.layer is not None:
-            return spec.layer.ComputeAbsolutePath(authored)
+        if spec.layer is not None and spec.layer.realPath:
+            return os.path.normpath(os.path.join(os.path.dirname(spec.layer.realPath), authored))
     return os.path.abspath(authored)
 
 
