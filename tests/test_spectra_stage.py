@@ -303,3 +303,51 @@ def test_color_temperature_and_the_own_spectrum_attribute_are_read(tmp_path):
     with pytest.raises(UserError, match=r"/Both: probesim:spectrum: unknown illuminant 'LED-B33'") as e:
         load_stage(stage, light_units="photometric")
     assert "\n" not in str(e.value)
+
+
+def test_lamps_that_all_name_one_spectrum_keep_one_channel(tmp_path):
+    """Both lamps name ``probesim:spectrum = "A"`` and no ``[spectra]`` table is given: the emitters share
+    one spectrum, so the run stays grey and its PPFD is exact post hoc, lux × 0.019898 µmol m⁻² s⁻¹/lx
+    (illuminant A's PAR per lux on the grid), with the W column lux/K(A); the record names A."""
+    stage = tmp_path / "lamps.usda"
+    stage.write_text(_LAMPS.replace("bool treatAsPoint = 1\n        double3 xformOp:translate = (0, 0, -2)",
+                                    'bool treatAsPoint = 1\n        string probesim:spectrum = "A"\n'
+                                    '        double3 xformOp:translate = (0, 0, -2)'))
+    cfg = tmp_path / "lamps.toml"
+    cfg.write_text(f'stage = "{stage.as_posix()}"\nlight_units = "photometric"\n\n[simulation]\nsamples = 64\n\n'
+                   '[[sensor]]\nname = "toA"\nkind = "irradiance"\nposition = [0, 0, 0]\nnormal = [0, 0, 1]\n\n'
+                   '[output]\ncsv = "out/l.csv"\nresponses = ["par"]\n')
+    out = run(load_config(cfg), log=lambda *a: None)
+    assert out.record["plan"]["transport"] == "grey" and out.record["spectra"]["spectrum"] == "A"
+    a = sources.cie_illuminant("A")
+    v = out.rows[0].values
+    assert v["illuminance_lx"] == pytest.approx(25.0, rel=1e-6)
+    assert v["irradiance_W_m2"] == pytest.approx(25.0 / a.efficacy_lm_W, rel=1e-6)
+    per_lux = R.response("par").of(a.values) / R.response("photopic").of(a.values)
+    assert per_lux == pytest.approx(0.019898, rel=1e-4)
+    assert v["ppfd_umol_m2_s"] == pytest.approx(25.0 * per_lux, rel=1e-6)
+
+
+def test_a_mesh_light_names_the_emissive_record_spectrum(tmp_path):
+    """A mesh light with ``probesim:spectrum = "A"``: its triangles' pair has K(A), and the emissive record's
+    hero row is illuminant A's shape (per radiometric unit: ∫row dλ = 1), not the run's D65, even with
+    ``[spectra] lights = D65`` declared."""
+    from simulator.spectra.hero import hero_tables
+    from simulator.spectra.grid import integrate
+
+    stage = tmp_path / "mesh.usda"
+    stage.write_text('#usda 1.0\n(\n metersPerUnit = 1\n upAxis = "Z"\n)\n'
+                     'def Mesh "Panel" (\n prepend apiSchemas = ["MeshLightAPI"]\n)\n{\n'
+                     ' point3f[] points = [(0, 0, 2), (1, 0, 2), (1, 1, 2), (0, 1, 2)]\n'
+                     ' int[] faceVertexCounts = [4]\n int[] faceVertexIndices = [0, 3, 2, 1]\n'
+                     ' float inputs:intensity = 100\n string probesim:spectrum = "A"\n}\n')
+    scene = load_stage(stage, light_units="photometric")
+    g = scene.geometry
+    assert g.emissive_spectrum == "A" and g.emissive_spectrum_authored
+    a = sources.cie_illuminant("A")
+    em = g.emission[g.emission[:, 0] > 0]
+    assert np.allclose(em[:, 1] / em[:, 0], a.efficacy_lm_W, rtol=1e-9)
+    t = hero_tables(scene, "photometric", "D65", declared=sources.cie_illuminant("D65"))
+    row = t.emission[-1]
+    assert integrate(row) == pytest.approx(1.0, rel=1e-9)
+    assert np.allclose(row, a.values / a.radiometric, rtol=1e-9)
