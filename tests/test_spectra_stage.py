@@ -138,6 +138,8 @@ def test_a_measured_red_curve_reads_the_spectral_closed_form(red_run):
 
     out, row = red_run
     assert out.record["plan"]["transport"] == "spectral"
+    assert out.record["spectra"]["measured_reflectances"] == ["paint.csv"]
+    assert "measured reflectance paint.csv is not flat" in str(out.record["plan"])
     rho = _rho(RED_ROWS)
     w = tables.illuminant("D65") * tables.cmfs_1931()[1]
     grey = float(np.trapezoid(rho * w, WAVELENGTHS_NM) / np.trapezoid(w, WAVELENGTHS_NM))
@@ -351,3 +353,23 @@ def test_a_mesh_light_names_the_emissive_record_spectrum(tmp_path):
     row = t.emission[-1]
     assert integrate(row) == pytest.approx(1.0, rel=1e-9)
     assert np.allclose(row, a.values / a.radiometric, rtol=1e-9)
+
+
+def test_a_curve_on_a_material_that_is_not_read_is_named(tmp_path):
+    """A Material with only an MDL surface is not read (displayColor or 0.18 is the albedo), so a
+    ``probesim:reflectance`` on it is named in the summary warning as ignored, not silently dropped."""
+    _write_curve(tmp_path / "red.csv", RED_ROWS)
+    stage = tmp_path / "mdl.usda"
+    stage.write_text('#usda 1.0\n(\n metersPerUnit = 1\n upAxis = "Z"\n)\n'
+                     'def Mesh "Floor" (\n prepend apiSchemas = ["MaterialBindingAPI"]\n)\n{\n'
+                     ' point3f[] points = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]\n'
+                     ' int[] faceVertexCounts = [4]\n int[] faceVertexIndices = [0, 1, 2, 3]\n'
+                     ' rel material:binding = </M>\n}\n'
+                     'def Material "M"\n{\n asset probesim:reflectance = @red.csv@\n'
+                     ' token outputs:mdl:surface.connect = </M/S.outputs:out>\n'
+                     ' def Shader "S"\n {\n  uniform token info:implementationSource = "sourceAsset"\n'
+                     '  uniform asset info:mdl:sourceAsset = @x.mdl@\n  token outputs:out\n }\n}\n'
+                     'def SphereLight "L"\n{\n float inputs:intensity = 1\n}\n')
+    scene = load_stage(stage, light_units="photometric")
+    assert scene.geometry.reflectance_id is None
+    assert any("1 x probesim:reflectance on a material with no UsdPreviewSurface" in w for w in scene.warnings)

@@ -76,6 +76,8 @@ class HeroTables:
     notes : list of str
         One line each: what spectral transport approximated (colours clipped,
         emissive triangles of several spectra).
+    measured : list of str
+        File names of the measured reflectance rows (the last rows of ``reflectance``).
     """
 
     reflectance: np.ndarray
@@ -85,6 +87,7 @@ class HeroTables:
     responses: list
     notes: list[str] = field(default_factory=list)
     colour: np.ndarray = field(default_factory=lambda: colour_weights())
+    measured: list[str] = field(default_factory=list)
 
 
 def response_weights(resp) -> np.ndarray:
@@ -182,10 +185,12 @@ def hero_tables(scene, light_units: str, default_spectrum, responses=(), declare
         notes.append(f"more than {MAX_COLOURS} surface colours: rounded to 1/1024 for the reflectance table")
     reflectance = uplift(colours)
     ids = getattr(g, "reflectance_id", None)
+    measured_names: list[str] = []
     if ids is not None and len(ids) == n_tri and np.any(ids >= 0):
         measured = np.asarray([rho for _, rho in g.reflectances], float).reshape(-1, N_LAMBDA)
         face_row = np.where(ids >= 0, len(reflectance) + ids, face_row)
         reflectance = np.concatenate([np.asarray(reflectance, float).reshape(-1, N_LAMBDA), measured])
+        measured_names = [name for name, _ in g.reflectances]
     stated = 1 if light_units == "photometric" else 0
     rows = [_per_radiometric(light_spectrum(l, default_spectrum, declared), l.emission, stated) for l in scene.lights]
     em = np.asarray(g.emission, float).reshape(-1, 2)
@@ -207,4 +212,5 @@ def hero_tables(scene, light_units: str, default_spectrum, responses=(), declare
         weights=np.stack([response_weights(r) for r in resp]),
         responses=resp,
         notes=notes,
+        measured=measured_names,
     )

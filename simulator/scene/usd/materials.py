@@ -243,6 +243,9 @@ def _preview_surface_inputs(ctx: _Context, material: UsdShade.Material) -> dict 
                                if o.HasConnectedSource()})
             ident = "/".join(contexts) or "no"
         ctx.not_read[f"material(s) with a {ident} surface, not UsdPreviewSurface (displayColor or 0.18 used)"] += 1
+        attr = material.GetPrim().GetAttribute(REFLECTANCE_ATTR)
+        if attr and attr.HasAuthoredValue():
+            ctx.ignored[f"{REFLECTANCE_ATTR} on a material with no UsdPreviewSurface"] += 1
         return None
     _count_ignored_inputs(ctx, shader)
     curve = _measured_reflectance(ctx, material, shader)
