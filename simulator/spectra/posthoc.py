@@ -239,21 +239,21 @@ def _own_spectrum(scene, declared) -> Spectrum | None:
     from simulator.spectra.sources import emitter_spectrum
 
     lit = [l for l in scene.lights if l.emission[0] > 0]
-    own = list(dict.fromkeys(str(l.spectrum) for l in lit if l.spectrum_authored))
+    own = {str(l.spectrum): l.spectrum for l in lit if l.spectrum_authored}  # as named, in order
+    followers = sum(not l.spectrum_authored for l in lit)
     g = scene.geometry
     if g.n_triangles and np.any(np.asarray(g.emission)[:, 0] > 0):
         if g.emissive_spectrum_authored:
-            own = list(dict.fromkeys(own + [str(g.emissive_spectrum)]))
+            own.setdefault(str(g.emissive_spectrum), g.emissive_spectrum)
         else:
-            lit.append(None)
+            followers += 1
     if not own:
         return None
-    shape = emitter_spectrum(next(l.spectrum for l in lit if l is not None and l.spectrum_authored)
-                             if any(l is not None and l.spectrum_authored for l in lit) else g.emissive_spectrum)
-    followers = [l for l in lit if l is None or not l.spectrum_authored]
+    shape = emitter_spectrum(next(iter(own.values())))
     if len(own) > 1 or (followers and declared.name != shape.name):
-        raise UserError(f"{scene.path}: emitters have spectra {own + ([declared.name] if followers else [])} "
-                        "of one efficacy: responses cannot be computed from one channel; give them one spectrum")
+        names = list(own) + ([declared.name] if followers else [])
+        raise UserError(f"{scene.path}: emitters have spectra {names} of one efficacy: responses cannot be "
+                        "computed from one channel; give them one spectrum")
     return shape
 
 
