@@ -518,8 +518,9 @@ class Engine:
         Fixed budget (``rel_error`` None): ``samples`` per sensor. Adaptive:
         ``samples`` is the first batch; a sensor stops when
         z·stderr ≤ max(rel_error·|mean|, abs_error) in both channels (z for
-        ``confidence``, see :mod:`.adaptive`), or at ``max_samples``; all stop
-        at ``time_limit_s``.
+        ``confidence``, see :mod:`.adaptive`) and, when tracing spectrally, in
+        every response of the hero tables (so each reported response column
+        meets the target), or at ``max_samples``; all stop at ``time_limit_s``.
 
         ``component``: ``total``; ``direct`` (light straight from emitters,
         and for a radiance meter its first surface's reflection of it); or
@@ -599,8 +600,13 @@ class Engine:
 
         def measure():
             if gstats is None or groups.levels is None:
-                return stats.mean, stats.stderr()
-            return _recombined(gstats.mean, gstats.cov(), groups.levels)
+                value, se = stats.mean, stats.stderr()
+            else:
+                value, se = _recombined(gstats.mean, gstats.cov(), groups.levels)
+            if rstats is None:
+                return value, se
+            # spectral transport: every requested response (PPFD, melanopic EDI, ...) meets the target too
+            return np.concatenate([value, rstats.mean], axis=1), np.concatenate([se, rstats.stderr()], axis=1)
 
         def report(count, active, elapsed):
             if progress is None:

@@ -101,6 +101,8 @@ class Light:
     #: name or a temperature, see :func:`simulator.spectra.sources.emitter_spectrum`);
     #: None: the run's default
     spectrum: str | float | None = None
+    #: True when ``spectrum`` is the prim's ``probesim:spectrum``: it then overrides a run's ``[spectra] lights``
+    spectrum_authored: bool = False
     #: linear sRGB ``color`` input (``emission`` holds its BT.709 grey), for spectral transport
     color: tuple[float, float, float] = (1.0, 1.0, 1.0)
     #: DomeLight only: the UsdLux PortalLights that guide its sampling (see :class:`Portal`)
@@ -279,6 +281,22 @@ class Geometry:
         The linear sRGB ``diffuseColor`` each ``albedo`` is the BT.709 grey
         of, for spectral transport (reflectance uplift); None: grey
         (``(a, a, a)``) everywhere.
+    reflectance_id : ndarray, shape (T,), int32, or None
+        Index into ``reflectances`` of each triangle's measured reflectance
+        (a material's ``probesim:reflectance``), -1 where there is none
+        (the uplift of ``albedo_rgb``); None: none anywhere.
+    reflectances : list of (str, ndarray (401,))
+        The measured reflectances: file name and ρ(λ) on the 380–780 nm grid;
+        ``albedo`` of their triangles is their luminance-weighted grey.
+    emissive_spectrum : str, float or None
+        The spectrum every emitting triangle's stage names (a mesh light's
+        ``probesim:spectrum`` or ``colorTemperature``, as
+        :func:`simulator.spectra.sources.emitter_spectrum` reads it); None:
+        the run's default (or the triangles name several; their efficacies
+        then differ and the hero tables note it).
+    emissive_spectrum_authored : bool
+        ``emissive_spectrum`` came from ``probesim:spectrum``, which a run's
+        ``[spectra] lights`` does not override.
     """
 
     points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
@@ -289,6 +307,10 @@ class Geometry:
     prim: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int32))
     prim_names: list[str] = field(default_factory=list)
     albedo_rgb: np.ndarray | None = None
+    reflectance_id: np.ndarray | None = None
+    reflectances: list = field(default_factory=list)
+    emissive_spectrum: str | float | None = None
+    emissive_spectrum_authored: bool = False
 
     @property
     def n_triangles(self) -> int:

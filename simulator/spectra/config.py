@@ -10,7 +10,7 @@ Proposed TOML (keys the run config passes here)::
                  { custom = "diode.csv", name = "diode" }]
 
     [spectra]
-    # spectral shape of every light without colorTemperature (default: D65
+    # spectral shape of every light that names no probesim:spectrum (default: D65
     # for photometric light units, radiometric_spectrum otherwise): a CIE
     # illuminant ("D65", "A", "FL2", "LED-B3"), a temperature (3000 or
     # "3000K"), or an SPD CSV relative to this config

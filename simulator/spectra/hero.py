@@ -15,8 +15,9 @@ unbiased for the grid's trapezoid integral, which every host integral
 the sample's response. Tables, one row per item, 401 columns:
 
 - reflectance: one row per distinct surface colour, the Mallett–Yuksel
-  uplift of its linear sRGB albedo (a face indexes its row); a measured
-  reflectance would be one more row;
+  uplift of its linear sRGB albedo (a face indexes its row), then one row
+  per measured reflectance a material names (``probesim:reflectance``,
+  ``Geometry.reflectances``), for the faces it covers;
 - emission: one row per light record (the stage's lights, then the record
   of all emissive triangles): the light's spectral density per unit of its
   radiometric value, so that ``value[0] · row`` is the spectral density a
@@ -75,6 +76,8 @@ class HeroTables:
     notes : list of str
         One line each: what spectral transport approximated (colours clipped,
         emissive triangles of several spectra).
+    measured : list of str
+        File names of the measured reflectance rows (the last rows of ``reflectance``).
     """
 
     reflectance: np.ndarray
@@ -84,6 +87,7 @@ class HeroTables:
     responses: list
     notes: list[str] = field(default_factory=list)
     colour: np.ndarray = field(default_factory=lambda: colour_weights())
+    measured: list[str] = field(default_factory=list)
 
 
 def response_weights(resp) -> np.ndarray:
@@ -107,12 +111,18 @@ def colour_weights() -> np.ndarray:
 
 
 def light_spectrum(light, default, declared=None):
-    """The spectral shape of one UsdLux light: ``declared`` (``[spectra] lights``) if given, else the
-    reader's (``light.spectrum``, or ``default``), times the uplift of a non-grey ``light.color``
-    (:func:`simulator.spectra.sources.colour_emission`)."""
+    """The spectral shape of one UsdLux light, times the uplift of a non-grey ``light.color``
+    (:func:`simulator.spectra.sources.colour_emission`): the light's own ``probesim:spectrum``
+    (``light.spectrum_authored``); else ``declared`` (``[spectra] lights``) if given; else the
+    reader's (``light.spectrum``: its ``colorTemperature``, or ``default``)."""
     from simulator.spectra.sources import colour_emission, emitter_spectrum
 
-    base = declared if declared is not None else emitter_spectrum(default if light.spectrum is None else light.spectrum)
+    if getattr(light, "spectrum_authored", False):
+        base = emitter_spectrum(light.spectrum)
+    elif declared is not None:
+        base = declared
+    else:
+        base = emitter_spectrum(default if light.spectrum is None else light.spectrum)
     c = np.asarray(light.color, float)
     return base if np.ptp(c) == 0.0 else colour_emission(c, base)
 
@@ -127,6 +137,18 @@ def _per_radiometric(shape, pair, stated: int) -> np.ndarray:
     s = np.asarray(shape.values, float)
     of = float(response("radiometric" if stated == 0 else "photopic").of(s))
     return s * (pair[stated] / of) / r
+
+
+def _emissive_base(geometry, default_spectrum, declared):
+    """The shape of the emissive-triangle record: the spectrum every emitting prim names
+    (``Geometry.emissive_spectrum``; its ``probesim:spectrum`` wins over ``declared``, its
+    ``colorTemperature`` does not), else ``declared``, else ``default_spectrum``."""
+    from simulator.spectra.sources import emitter_spectrum
+
+    own = getattr(geometry, "emissive_spectrum", None)
+    if own is not None and (declared is None or getattr(geometry, "emissive_spectrum_authored", False)):
+        return emitter_spectrum(own)
+    return declared if declared is not None else emitter_spectrum(default_spectrum)
 
 
 def hero_tables(scene, light_units: str, default_spectrum, responses=(), declared=None) -> HeroTables:
@@ -162,12 +184,19 @@ def hero_tables(scene, light_units: str, default_spectrum, responses=(), declare
         colours, face_row = np.unique(np.round(clipped * 1024.0) / 1024.0, axis=0, return_inverse=True)
         notes.append(f"more than {MAX_COLOURS} surface colours: rounded to 1/1024 for the reflectance table")
     reflectance = uplift(colours)
+    ids = getattr(g, "reflectance_id", None)
+    measured_names: list[str] = []
+    if ids is not None and len(ids) == n_tri and np.any(ids >= 0):
+        measured = np.asarray([rho for _, rho in g.reflectances], float).reshape(-1, N_LAMBDA)
+        face_row = np.where(ids >= 0, len(reflectance) + ids, face_row)
+        reflectance = np.concatenate([np.asarray(reflectance, float).reshape(-1, N_LAMBDA), measured])
+        measured_names = [name for name, _ in g.reflectances]
     stated = 1 if light_units == "photometric" else 0
     rows = [_per_radiometric(light_spectrum(l, default_spectrum, declared), l.emission, stated) for l in scene.lights]
     em = np.asarray(g.emission, float).reshape(-1, 2)
     emitting = np.flatnonzero(np.any(em > 0, axis=1)) if n_tri else np.zeros(0, int)
     if len(emitting):
-        base = declared if declared is not None else emitter_spectrum(default_spectrum)
+        base = _emissive_base(g, default_spectrum, declared)
         rows.append(_per_radiometric(base, em[emitting[0]], stated))
         k = em[emitting, 1] / np.where(em[emitting, 0] > 0, em[emitting, 0], np.inf)
         k = k[k > 0]
@@ -183,4 +212,5 @@ def hero_tables(scene, light_units: str, default_spectrum, responses=(), declare
         weights=np.stack([response_weights(r) for r in resp]),
         responses=resp,
         notes=notes,
+        measured=measured_names,
     )

@@ -81,13 +81,27 @@ def emitter_efficacies(scene) -> np.ndarray:
     return pairs[lit, 1] / pairs[lit, 0]
 
 
+def _measured_curves(geometry) -> list[str]:
+    """Names of the measured reflectances (``Geometry.reflectances``) some triangle uses that are not flat."""
+    from simulator.spectra.reflectance import is_flat
+
+    ids = getattr(geometry, "reflectance_id", None)
+    if ids is None:
+        return []
+    used = np.unique(ids[ids >= 0])
+    return [geometry.reflectances[i][0] for i in used if not is_flat(geometry.reflectances[i][1])]
+
+
 def posthoc_refusal(scene) -> str | None:
     """Why the post-hoc path would not be exact for this scene, or None when it is.
 
-    Not exact: a colour was reduced to grey (the stage reader's summary
-    warning), or the emitters have different spectra (their
+    Not exact: a material's measured reflectance is not flat, a colour was
+    reduced to grey (the stage reader's summary warning), or the emitters have different spectra (their
     photometric/radiometric ratios differ).
     """
+    measured = _measured_curves(scene.geometry)
+    if measured:
+        return f"measured reflectance {', '.join(measured)} is not flat: a colour can change a reading"
     coloured = [w for w in scene.warnings if w.startswith(_COLOURED_WARNING + ": ")]
     if coloured:
         where = coloured[0][len(_COLOURED_WARNING) + 2:]
@@ -209,6 +223,40 @@ def rgb_per_luminance(spectrum: Spectrum) -> np.ndarray:
     return np.asarray(colour.models.RGB_COLOURSPACE_sRGB.matrix_XYZ_to_RGB, float) @ xyz
 
 
+def _own_spectrum(scene, declared) -> Spectrum | None:
+    """The spectrum the emitters name themselves (``probesim:spectrum``) in a grey scene; None when none does.
+
+    ``declared`` is what the other emitters have (``[spectra] lights`` or
+    the run's default).
+
+    Raises
+    ------
+    UserError
+        The emitters' spectra differ in shape but not in efficacy (so the
+        planner saw one spectrum): one channel cannot carry them.
+    """
+    from simulator.errors import UserError
+    from simulator.spectra.sources import emitter_spectrum
+
+    lit = [l for l in scene.lights if l.emission[0] > 0]
+    own = {str(l.spectrum): l.spectrum for l in lit if l.spectrum_authored}  # as named, in order
+    followers = sum(not l.spectrum_authored for l in lit)
+    g = scene.geometry
+    if g.n_triangles and np.any(np.asarray(g.emission)[:, 0] > 0):
+        if g.emissive_spectrum_authored:
+            own.setdefault(str(g.emissive_spectrum), g.emissive_spectrum)
+        else:
+            followers += 1
+    if not own:
+        return None
+    shape = emitter_spectrum(next(iter(own.values())))
+    if len(own) > 1 or (followers and declared.name != shape.name):
+        names = list(own) + ([declared.name] if followers else [])
+        raise UserError(f"{scene.path}: emitters have spectra {names} of one efficacy: responses cannot be "
+                        "computed from one channel; give them one spectrum")
+    return shape
+
+
 def run_spectrum(settings, scene, light_units: str, radiometric_spectrum) -> Spectrum | None:
     """The emitter spectrum a run's post-hoc responses use; None when none are asked for.
 
@@ -246,6 +294,11 @@ def run_spectrum(settings, scene, light_units: str, radiometric_spectrum) -> Spe
     if why is not None:
         raise UserError(f"{scene.path}: responses {[r.name for r in settings.responses]} cannot be computed "
                         f"from one channel: {why}")
+    others = settings.lights if settings.lights is not None else emitter_spectrum(
+        "D65" if light_units == "photometric" else radiometric_spectrum)
+    own = _own_spectrum(scene, others)
+    if own is not None:
+        return own
     if settings.lights is not None:
         return settings.lights
     spectrum = emitter_spectrum("D65" if light_units == "photometric" else radiometric_spectrum)

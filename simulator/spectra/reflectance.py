@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["uplift", "rgb_of_reflectance", "reflectance_csv"]
+__all__ = ["uplift", "rgb_of_reflectance", "reflectance_csv", "measured_reflectance", "reflectance_grey", "is_flat"]
 
 
 def uplift(rgb) -> np.ndarray:
@@ -82,12 +82,19 @@ def _reflectance_column(name: str) -> str | None:
     return None if name in ("reflectance", "reflectance_percent") else "'reflectance' (0–1) or 'reflectance_percent' (0–100)"
 
 
-def reflectance_csv(path) -> np.ndarray:
+def reflectance_csv(path, notes: list | None = None) -> np.ndarray:
     """A measured reflectance on the grid, from a CSV (see :mod:`simulator.spectra.csvfile`).
 
     Column ``reflectance`` (a fraction) or ``reflectance_percent``; every
     value must be in [0, 1) (energy conservation, as for a grey albedo).
-    Beyond the file's range the end values are held.
+    Beyond the file's range the end values are held (a file need not cover
+    380–780 nm; ``notes`` gets a one-line note when it does not).
+
+    Parameters
+    ----------
+    path : path
+    notes : list, optional
+        Appended: the coverage note (:meth:`SpectralTable.coverage_note`), if any.
 
     Returns
     -------
@@ -108,4 +115,51 @@ def reflectance_csv(path) -> np.ndarray:
         s = chosen["scale"]
         return None if 0.0 <= y * s < 1.0 else f"is outside [0, {1.0 / s:g}) (energy conservation)"
 
-    return read_spectral_csv(path, "reflectance", columns, check).on_grid("hold") * chosen["scale"]
+    table = read_spectral_csv(path, "reflectance", columns, check)
+    note = table.coverage_note()
+    if notes is not None and note is not None:
+        notes.append(note + " (end values held beyond it)")
+    return table.on_grid("hold") * chosen["scale"]
+
+
+def reflectance_grey(rho) -> float:
+    """The luminance-weighted grey of a reflectance: ``∫ ρ D65 ȳ dλ / ∫ D65 ȳ dλ``.
+
+    The albedo one-channel transport (and Russian roulette) uses for a
+    measured reflectance: the Y of its colour under D65, the sRGB white,
+    as a ``diffuseColor``'s BT.709 grey is the Y of its colour. It does
+    not depend on the run's emitter spectrum, so a stage's greys are the
+    same in every run; a flat ρ = c gives exactly c.
+
+    Parameters
+    ----------
+    rho : array_like, shape (401,)
+
+    Returns
+    -------
+    float
+    """
+    from simulator.spectra import tables
+    from simulator.spectra.grid import integrate
+
+    w = tables.illuminant("D65") * tables.cmfs_1931()[1]
+    return float(integrate(np.asarray(rho, float) * w) / integrate(w))
+
+
+def is_flat(rho, rel: float = 1e-9) -> bool:
+    """True when a reflectance is the same at every grid wavelength (to ``rel`` of its largest value)."""
+    r = np.asarray(rho, float)
+    return bool(np.ptp(r) <= rel * max(float(np.max(np.abs(r))), 1e-300))
+
+
+def measured_reflectance(path) -> tuple[np.ndarray, float, list[str]]:
+    """A material's measured reflectance: ``(ρ on the grid (401,), its grey, notes)``.
+
+    ``ρ`` from :func:`reflectance_csv` (values in [0, 1), end values held
+    beyond the file's range, with a note); the grey is
+    :func:`reflectance_grey`, exactly the value for a flat file.
+    """
+    notes: list[str] = []
+    rho = reflectance_csv(path, notes)
+    grey = float(rho[0]) if is_flat(rho) else reflectance_grey(rho)
+    return rho, grey, notes

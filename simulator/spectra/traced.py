@@ -105,4 +105,5 @@ def traced_record(tables, columns: list[str], mode: str, reason: str) -> dict:
     """What the run record says about spectral transport."""
     return {"path": f"hero wavelengths ({mode} transport)", "reason": reason,
             "estimated": [r.name for r in tables.responses], "columns": list(columns),
-            "reflectance_rows": int(tables.reflectance.shape[0]), "notes": list(tables.notes)}
+            "reflectance_rows": int(tables.reflectance.shape[0]),
+            "measured_reflectances": list(getattr(tables, "measured", [])), "notes": list(tables.notes)}

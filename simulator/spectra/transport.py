@@ -14,7 +14,8 @@ Three cases, cheapest first (docs/DESIGN.md, "Spectral transport"):
     such scenes are traced like ``spectral`` ones (unbiased, with
     wavelength noise).
 ``spectral``
-    A coloured albedo (or coloured textured emitter) can change a reading:
+    A coloured albedo, a measured reflectance that is not flat (or a
+    coloured textured emitter) can change a reading:
     hero-wavelength transport, 4 wavelengths per path; every response is
     estimated per sample and carries the wavelength noise in its stderr.
 """

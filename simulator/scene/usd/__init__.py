@@ -56,7 +56,12 @@ Materials
     textures, then ``scale`` and ``bias``; one summary warning), anything else
     falls back to the UsdPreviewSurface default and is counted as ignored.
     With no bound material, ``primvars:displayColor`` is the albedo if
-    authored, else UsdPreviewSurface's default 0.18. Colours become their
+    authored, else UsdPreviewSurface's default 0.18. ``probesim:reflectance``
+    (an asset or string path, relative to the layer authoring it) on the
+    Material or its shader names a measured reflectance CSV that replaces
+    ``diffuseColor`` (:func:`.materials._measured_reflectance`): its faces
+    keep the curve for spectral transport and, as albedo, its luminance
+    under D65. Colours become their
     luminance-weighted grey (BT.709 Y), with one warning naming the prims
     whose colour was not grey. An albedo must lie in [0, 1]; exactly 1 is
     accepted with a warning (paths end there only by escaping the scene, so
@@ -302,8 +307,11 @@ def load_stage(
       with a warning.
 
     ``emission = emission_pair(value, light_units, spectrum)`` with spectrum
-    the blackbody temperature when enabled, else ``"D65"`` (photometric) or
-    ``radiometric_spectrum`` (radiometric). Sizes are world sizes: the
+    the prim's ``probesim:spectrum`` when authored (an illuminant name, a
+    temperature or an SPD CSV relative to its layer; it wins over
+    ``colorTemperature``, with a warning), else the blackbody temperature
+    when enabled, else ``"D65"`` (photometric) or ``radiometric_spectrum``
+    (radiometric). Sizes are world sizes: the
     transform's scale (and metersPerUnit) applies to width, height, radius
     and length; a non-uniform scale on a round shape uses the mean scale of
     the affected axes, with a warning.
@@ -384,4 +392,4 @@ def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light],
                 if light.kind == LightKind.DOME:
                     domes.append((light, prim))
     attach_portals(ctx, stage, domes, portals)
-    return geo.build(), lights, sensors
+    return geo.build(ctx.reflectances, ctx.emissive_spectra), lights, sensors

@@ -7,6 +7,7 @@ stage -> world map, the light units and the warnings gathered so far;
 
 from __future__ import annotations
 
+import os
 from collections import Counter
 from dataclasses import dataclass, field
 
@@ -14,7 +15,7 @@ import numpy as np
 from pxr import Usd, UsdGeom
 
 from simulator.errors import UserError
-from simulator.units import emission_pair
+from simulator.units import NAMED_EFFICACY, emission_pair
 
 # How many prim paths a summary warning names before "and N more".
 _MAX_NAMED = 10
@@ -44,6 +45,11 @@ class _Context:
     white: dict[str, None] = field(default_factory=dict)
     #: meshes with an authored subdivisionScheme other than none, read as their cage
     subdivided: Counter = field(default_factory=Counter)
+    #: measured reflectances read (``probesim:reflectance``): (file name, ρ on the grid); by resolved path
+    reflectances: list = field(default_factory=list)
+    reflectance_index: dict[str, int] = field(default_factory=dict)
+    #: spectra of emitting triangles, ``(spectrum or None for the default, authored)`` (ordered set)
+    emissive_spectra: dict = field(default_factory=dict)
 
     def warn(self, message: str) -> None:
         if message not in self.warnings:
@@ -60,7 +66,25 @@ class _Context:
         nothing, ``(0, 0)``.
         """
         spectrum = self.default_spectrum if spectrum is None else spectrum
-        return emission_pair(value, self.light_units, spectrum) if value > 0 else (0.0, 0.0)
+        if value <= 0:
+            return (0.0, 0.0)
+        if isinstance(spectrum, str) and spectrum not in NAMED_EFFICACY:  # an illuminant or SPD file
+            from simulator.spectra.sources import emitter_spectrum
+
+            k = emitter_spectrum(spectrum).efficacy_lm_W
+            return (value / k, value) if self.light_units == "photometric" else (value, value * k)
+        return emission_pair(value, self.light_units, spectrum)
+
+
+def _layer_relative(attr: Usd.Attribute, authored: str) -> str:
+    """A path an attribute states, resolved against the folder of the layer that authors its strongest
+    opinion (an asset path the resolver did not find, or a string); absolute paths are kept."""
+    if os.path.isabs(authored):
+        return authored
+    for spec in attr.GetPropertyStack(Usd.TimeCode.Default()):
+        if spec.layer is not None and spec.layer.realPath:
+            return os.path.normpath(os.path.join(os.path.dirname(spec.layer.realPath), authored))
+    return os.path.abspath(authored)
 
 
 def _get(ctx: _Context, attr: Usd.Attribute):

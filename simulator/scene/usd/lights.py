@@ -18,12 +18,12 @@ import math
 import os
 
 import numpy as np
-from pxr import Usd, UsdGeom, UsdLux
+from pxr import Sdf, Usd, UsdGeom, UsdLux
 
 from simulator.errors import UserError
 from simulator.units import luminance_grey
 from simulator.scene.model import Light, LightKind
-from simulator.scene.usd.context import _Context, _get, _not_uniform
+from simulator.scene.usd.context import _Context, _get, _layer_relative, _not_uniform
 from simulator.scene.usd.materials import _albedo, _albedo_colour, _grey, _material_inputs
 from simulator.scene.usd.shaping import has_shaping, read_shaping
 from simulator.scene.usd.tessellation import _parallelogram_areas
@@ -39,6 +39,10 @@ _LIGHT_SCHEMAS = (
     (UsdLux.DomeLight_1, LightKind.DOME),
     (UsdLux.CylinderLight, LightKind.CYLINDER),
 )
+
+#: a light's own spectral shape: an illuminant name ("D65", "A", "LED-B3"), a temperature (a number
+#: of kelvin or "3000K") or an SPD CSV (a string ending .csv, or an asset), relative to its layer
+SPECTRUM_ATTR = "probesim:spectrum"
 
 #: ``texture:format`` values a DomeLight may have (``automatic``: a lat-long map unless an EXR header says cube)
 DOME_TEXTURE_FORMATS = ("latlong", "automatic")
@@ -71,13 +75,14 @@ def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:
         ctx.warn(f"{prim.GetPath()}: {prim.GetTypeName() or 'light'} is not a supported light; ignored")
         return None
     a, t = _world_affine(ctx, prim)
-    raw, spectrum, normalize = _light_inputs(ctx, prim)
+    raw, spectrum, normalize, source = _light_inputs(ctx, prim)
     light = Light(name=str(prim.GetPath()), kind=kind, position=t, frame=_frame(ctx, prim, a), emission=(0.0, 0.0))
     value = _shape_light(ctx, prim, light, a, raw, normalize)
     if value is None:
         return None
     light.emission = ctx.emission(value, spectrum)
     light.spectrum = spectrum
+    light.spectrum_authored = source == "own"
     colour = np.atleast_1d(np.asarray(_get(ctx, UsdLux.LightAPI(prim).GetColorAttr()), float))
     if colour.size == 3 and np.ptp(colour) > 0.0:
         light.color = tuple(float(c) for c in colour)
@@ -85,17 +90,20 @@ def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:
     return light
 
 
-def _light_inputs(ctx: _Context, prim: Usd.Prim) -> tuple[float, str | float, bool]:
-    """``(value, spectrum, normalize)`` of any light: :func:`_light_value` and its ``normalize`` flag.
+def _light_inputs(ctx: _Context, prim: Usd.Prim) -> tuple[float, str | float, bool, str]:
+    """``(value, spectrum, normalize, source)`` of any light: :func:`_light_value` and its ``normalize``
+    flag.
 
     Shaping (cone, focus, IES profile) is read by :mod:`simulator.scene.usd.shaping`.
     """
-    raw, spectrum = _light_value(ctx, prim)
-    return raw, spectrum, bool(UsdLux.LightAPI(prim).GetNormalizeAttr().Get(ctx.time))
+    raw, spectrum, source = _light_value(ctx, prim)
+    return raw, spectrum, bool(UsdLux.LightAPI(prim).GetNormalizeAttr().Get(ctx.time)), source
 
 
-def _light_value(ctx: _Context, prim: Usd.Prim) -> tuple[float, str | float]:
-    """``intensity * 2**exposure * grey(color)`` and the emitter's spectrum."""
+def _light_value(ctx: _Context, prim: Usd.Prim) -> tuple[float, str | float, str]:
+    """``intensity * 2**exposure * grey(color)``, the emitter's spectrum and where it came from:
+    ``"own"`` (the prim's :data:`SPECTRUM_ATTR`, which wins over ``colorTemperature``, with a warning
+    when both are on), ``"temperature"`` (``colorTemperature`` enabled) or ``""`` (the run's default)."""
     api = UsdLux.LightAPI(prim)
     intensity = float(_get(ctx, api.GetIntensityAttr()))
     exposure = float(_get(ctx, api.GetExposureAttr()))
@@ -106,13 +114,56 @@ def _light_value(ctx: _Context, prim: Usd.Prim) -> tuple[float, str | float]:
     grey = _grey(ctx, prim, _get(ctx, api.GetColorAttr()))
     if not (math.isfinite(grey) and grey >= 0):
         raise ctx.error(prim, f"color must be non-negative, grey {grey:g}")
-    spectrum: str | float = ctx.default_spectrum
-    if api.GetEnableColorTemperatureAttr().Get(ctx.time):
-        temperature = float(_get(ctx, api.GetColorTemperatureAttr()))
-        if not (math.isfinite(temperature) and temperature > 0):
-            raise ctx.error(prim, f"colorTemperature must be a positive number of kelvin, not {temperature:g}")
-        spectrum = temperature
-    return intensity * 2.0 ** exposure * grey, spectrum
+    value = intensity * 2.0 ** exposure * grey
+    own = _own_spectrum(ctx, prim)
+    on = bool(api.GetEnableColorTemperatureAttr().Get(ctx.time))
+    if own is not None:
+        if on:
+            ctx.warn(f"{prim.GetPath()}: colorTemperature ignored: {SPECTRUM_ATTR} names its spectrum")
+        return value, own, "own"
+    if not on:
+        return value, ctx.default_spectrum, ""
+    temperature = float(_get(ctx, api.GetColorTemperatureAttr()))
+    if not (math.isfinite(temperature) and temperature > 0):
+        raise ctx.error(prim, f"colorTemperature must be a positive number of kelvin, not {temperature:g}")
+    return value, temperature, "temperature"
+
+
+def _own_spectrum(ctx: _Context, prim: Usd.Prim) -> str | float | None:
+    """A light's :data:`SPECTRUM_ATTR` as :func:`simulator.spectra.sources.emitter_spectrum` reads it
+    (an SPD path made absolute against the authoring layer), None when not authored.
+
+    Raises
+    ------
+    UserError
+        ``<stage>: <prim>: probesim:spectrum: ...``: a value of another
+        type, an unknown illuminant, a temperature that is not positive, or
+        the SPD file's own error (naming file and line).
+    """
+    from simulator.spectra.sources import emitter_spectrum
+
+    attr = prim.GetAttribute(SPECTRUM_ATTR)
+    if not attr or not attr.HasAuthoredValue():
+        return None
+    value = attr.Get(ctx.time)
+    if isinstance(value, Sdf.AssetPath):
+        spec = value.resolvedPath or _layer_relative(attr, value.path)
+        if not value.path.lower().endswith(".csv"):
+            raise ctx.error(prim, f"{SPECTRUM_ATTR}: asset {value.path!r} is not a .csv SPD file")
+    elif isinstance(value, str):
+        spec = value.strip()
+        if spec.lower().endswith(".csv"):
+            spec = _layer_relative(attr, spec)
+    elif isinstance(value, (int, float)) and not isinstance(value, bool):
+        spec = float(value)
+    else:
+        raise ctx.error(prim, f"{SPECTRUM_ATTR} must be a string (illuminant, '3000K', SPD .csv), a number of "
+                              f"kelvin or an asset, not a {attr.GetTypeName()}")
+    try:
+        emitter_spectrum(spec)
+    except UserError as e:
+        raise ctx.error(prim, f"{SPECTRUM_ATTR}: {e}") from None
+    return spec
 
 
 def _size_attr(ctx: _Context, prim: Usd.Prim, attr: Usd.Attribute, what: str) -> float:
@@ -285,8 +336,9 @@ def _is_geometry_light(ctx: _Context, prim: Usd.Prim) -> bool:
     return True
 
 
-def _geometry_light_surface(ctx: _Context, prim: Usd.Prim) -> tuple[float, tuple[float, float], np.ndarray]:
-    """``(albedo, (0, 0), albedo colour (3,))`` of a geometry light; its emission comes from its light inputs.
+def _geometry_light_surface(ctx: _Context, prim: Usd.Prim) -> tuple[float, tuple[float, float], np.ndarray, int]:
+    """``(albedo, (0, 0), albedo colour (3,), reflectance id)`` of a geometry light; its emission comes from
+    its light inputs (the reflectance id as :func:`simulator.scene.usd.materials._surface` gives it).
 
     The albedo is the bound UsdPreviewSurface's diffuseColor; 0 with no
     (usable) bound material or with ``light:materialSyncMode``
@@ -294,24 +346,24 @@ def _geometry_light_surface(ctx: _Context, prim: Usd.Prim) -> tuple[float, tuple
     """
     sync = UsdLux.LightAPI(prim).GetMaterialSyncModeAttr().Get(ctx.time)
     if str(sync) == "noMaterialResponse":
-        return 0.0, (0.0, 0.0), np.zeros(3)
+        return 0.0, (0.0, 0.0), np.zeros(3), -1
     inputs = _material_inputs(ctx, prim)
     if inputs is None:
-        return 0.0, (0.0, 0.0), np.zeros(3)
+        return 0.0, (0.0, 0.0), np.zeros(3), -1
     albedo = _albedo(ctx, prim, inputs)
     if float(inputs["opacity"][0]) < 1.0:
         ctx.warn(f"{prim.GetPath()}: opacity of a mesh light ignored (its surface is opaque)")
     if _grey(ctx, prim, inputs["emissiveColor"][0]) != 0.0:
         ctx.warn(f"{prim.GetPath()}: emissiveColor of the bound material ignored; "
                  "a mesh light emits what its light inputs (intensity, exposure, color) say")
-    return albedo, (0.0, 0.0), _albedo_colour(inputs, albedo)
+    return albedo, (0.0, 0.0), _albedo_colour(inputs, albedo), inputs.get("reflectance", (-1, ""))[0]
 
 
 def _geometry_light_emission(ctx: _Context, prim: Usd.Prim, world: np.ndarray,
                              tris: np.ndarray) -> tuple[float, float]:
     """Emission pair of a geometry light: ``intensity * 2**exposure * grey(color)``,
     divided by its world area (one side) when ``normalize`` is on."""
-    raw, spectrum, normalize = _light_inputs(ctx, prim)
+    raw, spectrum, normalize, source = _light_inputs(ctx, prim)
     if has_shaping(prim):
         ctx.warn(f"{prim.GetPath()}: UsdLuxShapingAPI on a mesh light ignored")
     value = raw
@@ -321,4 +373,6 @@ def _geometry_light_emission(ctx: _Context, prim: Usd.Prim, world: np.ndarray,
             ctx.warn(f"{prim.GetPath()}: mesh light has zero area and emits nothing")
             return (0.0, 0.0)
         value = raw / area
+    if value > 0:
+        ctx.emissive_spectra[(spectrum if source else None, source == "own")] = None
     return ctx.emission(value, spectrum)

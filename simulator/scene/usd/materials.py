@@ -14,7 +14,8 @@ Inputs are followed through connections to authored constants; an input
 connected to a ``UsdUVTexture`` reads the texture's mean value
 (:mod:`.textures`). With no usable material, ``primvars:displayColor`` or
 the UsdPreviewSurface default is the albedo. Colours become luminance greys
-(BT.709 Y). Summary warnings, one line each, name the prims whose colour was
+(BT.709 Y); a material's ``probesim:reflectance`` names a measured curve
+that replaces ``diffuseColor`` (:func:`_measured_reflectance`). Summary warnings, one line each, name the prims whose colour was
 not grey, the inputs read as a texture mean, the albedo-1 surfaces, and the
 inputs that would change the reading but are ignored (``roughness``,
 ``metallic``, ``specularColor``, ... authored away from the UsdPreviewSurface
@@ -27,14 +28,18 @@ import math
 import os
 
 import numpy as np
-from pxr import Usd, UsdGeom, UsdShade
+from pxr import Sdf, Usd, UsdGeom, UsdShade
 
+from simulator.errors import UserError
 from simulator.units import luminance_grey
-from simulator.scene.usd.context import _Context, _get, _name_list, _not_uniform
+from simulator.scene.usd.context import _Context, _get, _layer_relative, _name_list, _not_uniform
 from simulator.scene.usd.textures import _texture_mean
 
 #: UsdPreviewSurface's fallback diffuseColor (0.18, 0.18, 0.18), used when nothing is authored
 DEFAULT_ALBEDO = 0.18
+#: a material's measured reflectance: ``asset`` (or ``string``) path of a reflectance CSV, on the
+#: Material or its UsdPreviewSurface shader (the shader's wins), relative to the layer that authors it
+REFLECTANCE_ATTR = "probesim:reflectance"
 
 # UsdPreviewSurface input fallbacks (from its specification).
 _PREVIEW_DEFAULTS = {
@@ -60,11 +65,14 @@ _IGNORED_DEFAULTS = {
 
 
 def _surface(ctx: _Context, prim: Usd.Prim,
-             bind_prim: Usd.Prim | None = None) -> tuple[float, tuple[float, float], np.ndarray] | None:
-    """``(albedo, emission pair, albedo colour (3,))`` of a gprim, or None when opacity 0 removes it.
+             bind_prim: Usd.Prim | None = None) -> tuple[float, tuple[float, float], np.ndarray, int] | None:
+    """``(albedo, emission pair, albedo colour (3,), reflectance id)`` of a gprim, or None when opacity 0
+    removes it.
 
     ``bind_prim`` (default ``prim``) is where the material binding is
-    resolved: a GeomSubset of ``prim`` for the subset's faces.
+    resolved: a GeomSubset of ``prim`` for the subset's faces. The
+    reflectance id indexes ``ctx.reflectances`` (a measured curve, whose
+    grey is then the albedo), -1 without one.
     """
     inputs = _material_inputs(ctx, prim if bind_prim is None else bind_prim)
     if inputs is None:
@@ -78,12 +86,64 @@ def _surface(ctx: _Context, prim: Usd.Prim,
         return None
     if opacity < 1.0:
         ctx.ignored["inputs:opacity between 0 and 1 (read as opaque)"] += 1
-    albedo = _albedo(ctx, prim, inputs)
+    curve = inputs.get("reflectance", (-1, ""))[0]
+    albedo = _albedo(ctx, prim, inputs) if curve < 0 else ctx.reflectances[curve][2]
     rgb, source = inputs["emissiveColor"]
     radiance = _grey(ctx, prim, rgb)
     if not (math.isfinite(radiance) and radiance >= 0.0):
         raise ctx.error(prim, f"emission {radiance:g} from {source} must be a non-negative number")
-    return albedo, ctx.emission(radiance), _albedo_colour(inputs, albedo)
+    if radiance > 0.0:
+        ctx.emissive_spectra[(None, False)] = None
+    colour = _albedo_colour(inputs, albedo) if curve < 0 else np.full(3, albedo)
+    return albedo, ctx.emission(radiance), colour, curve
+
+
+def _measured_reflectance(ctx: _Context, material: UsdShade.Material, shader: UsdShade.Shader) -> int:
+    """Index into ``ctx.reflectances`` of the curve a material names (:data:`REFLECTANCE_ATTR`), -1 if none.
+
+    The file is read once per resolved path
+    (:func:`simulator.spectra.reflectance.measured_reflectance`); a file
+    that does not cover 380–780 nm is warned about (its end values are
+    held). An authored ``diffuseColor`` beside it is counted as ignored.
+
+    Raises
+    ------
+    UserError
+        ``<stage>: <prim>: probesim:reflectance: <what is wrong>``: not an
+        asset or string, an empty path, or the file's own error (missing
+        file, bad header, a row outside [0, 1), ...) naming file and line.
+    """
+    from simulator.spectra.reflectance import measured_reflectance
+
+    attr = next((a for a in (p.GetAttribute(REFLECTANCE_ATTR) for p in (shader.GetPrim(), material.GetPrim()))
+                 if a and a.HasAuthoredValue()), None)
+    if attr is None:
+        return -1
+    owner = attr.GetPrim()
+    value = attr.Get(ctx.time)
+    if isinstance(value, Sdf.AssetPath):
+        authored, path = value.path, value.resolvedPath or _layer_relative(attr, value.path)
+    elif isinstance(value, str):
+        authored, path = value, _layer_relative(attr, value)
+    else:
+        raise ctx.error(owner, f"{REFLECTANCE_ATTR} must be an asset (or string) path of a reflectance .csv, "
+                               f"not a {attr.GetTypeName()}")
+    if not authored.strip():
+        raise ctx.error(owner, f"{REFLECTANCE_ATTR} is empty (expected the path of a reflectance .csv)")
+    key = os.path.abspath(path)
+    if key not in ctx.reflectance_index:
+        try:
+            rho, grey, notes = measured_reflectance(key)
+        except UserError as e:
+            raise ctx.error(owner, f"{REFLECTANCE_ATTR}: {e}") from None
+        for note in notes:
+            ctx.warn(f"{owner.GetPath()}: {REFLECTANCE_ATTR}: {note}")
+        ctx.reflectance_index[key] = len(ctx.reflectances)
+        ctx.reflectances.append((os.path.basename(key), rho, grey))
+    diffuse = shader.GetInput("diffuseColor")
+    if diffuse and (diffuse.HasConnectedSource() or diffuse.GetAttr().HasAuthoredValue()):
+        ctx.ignored[f"inputs:diffuseColor beside {REFLECTANCE_ATTR} (the measured curve is used)"] += 1
+    return ctx.reflectance_index[key]
 
 
 def _albedo_colour(inputs: dict, albedo: float) -> np.ndarray:
@@ -183,9 +243,18 @@ def _preview_surface_inputs(ctx: _Context, material: UsdShade.Material) -> dict 
                                if o.HasConnectedSource()})
             ident = "/".join(contexts) or "no"
         ctx.not_read[f"material(s) with a {ident} surface, not UsdPreviewSurface (displayColor or 0.18 used)"] += 1
+        attr = material.GetPrim().GetAttribute(REFLECTANCE_ATTR)
+        if attr and attr.HasAuthoredValue():
+            ctx.ignored[f"{REFLECTANCE_ATTR} on a material with no UsdPreviewSurface"] += 1
         return None
     _count_ignored_inputs(ctx, shader)
-    return {name: _input_value(ctx, shader, name, default) for name, default in _PREVIEW_DEFAULTS.items()}
+    curve = _measured_reflectance(ctx, material, shader)
+    inputs = {name: _input_value(ctx, shader, name, default) for name, default in _PREVIEW_DEFAULTS.items()
+              if curve < 0 or name != "diffuseColor"}
+    if curve >= 0:
+        inputs["diffuseColor"] = ((ctx.reflectances[curve][2],) * 3, f"{REFLECTANCE_ATTR} {ctx.reflectances[curve][0]}")
+        inputs["reflectance"] = (curve, inputs["diffuseColor"][1])
+    return inputs
 
 
 def _count_ignored_inputs(ctx: _Context, shader: UsdShade.Shader) -> None:
