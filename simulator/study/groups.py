@@ -73,7 +73,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from simulator.scene.model import Geometry, Scene, Sensor
+from simulator.scene.model import Scene, Sensor
 
 __all__ = ["GroupReadings", "trace_groups", "group_scene", "derive_seed"]
 
@@ -129,7 +129,7 @@ def group_scene(scene: Scene, light_names: list[str]) -> Scene:
     """A copy of ``scene`` with only the named lights and no emissive surfaces."""
     keep = set(light_names)
     g = scene.geometry
-    geom = Geometry(g.points, g.triangles, g.albedo, np.zeros_like(g.emission), g.two_sided, g.prim, g.prim_names)
+    geom = replace(g, emission=np.zeros_like(g.emission))  # every other field kept (colours, measured curves)
     return replace(scene, geometry=geom, lights=[l for l in scene.lights if l.name in keep], sensors=[], warnings=[])
 
 
