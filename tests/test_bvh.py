@@ -23,7 +23,7 @@ import warp as wp
 from simulator.engine import device
 from simulator.engine.device import BVH_LEAF_SIZE
 from simulator.engine.driver import Engine
-from simulator.kernels.estimators import unoccluded
+from simulator.kernels.rays import unoccluded
 from simulator.kernels.lights import SceneRec
 from simulator.reference.geometry import ray_triangles
 from simulator.scene.model import Geometry, Scene, Sensor, SensorKind

@@ -30,7 +30,7 @@ from scipy import stats
 
 from simulator.config.loader import load_config
 from simulator.engine.driver import Engine
-from simulator.kernels.estimators import SceneRec, patch_index, patch_point, pdf_guide, sample_guide
+from simulator.kernels.guide import SceneRec, patch_index, patch_point, pdf_guide, sample_guide
 from simulator.pipeline import collect_sensors, load_scene
 from simulator.reference import closed_forms as cf
 from simulator.scene.model import Geometry, Scene, Sensor, SensorKind

@@ -200,7 +200,7 @@ def test_hero_nodes_follow_the_trapezoid_weights():
     from scipy import stats
 
     from simulator.engine.device import warp
-    from simulator.kernels import estimators as K
+    from simulator.kernels import spectral
     from simulator.spectra.grid import trapezoid_weights
 
     warp()
@@ -215,13 +215,13 @@ def test_hero_nodes_follow_the_trapezoid_weights():
     counts = np.bincount(h.ravel(), minlength=401)
     expected = 4 * n * trapezoid_weights() / 400.0
     assert stats.chisquare(counts, expected).pvalue > 1e-3
-    assert K.N_HERO == 4
+    assert spectral.N_HERO == 4
 
 
 def _make_hero_kernel():
     import warp as wp
 
-    from simulator.kernels.estimators import hero_nodes
+    from simulator.kernels.spectral import hero_nodes
 
     @wp.kernel
     def draw(u: wp.array(dtype=float), out: wp.array(dtype=wp.vec4i)):

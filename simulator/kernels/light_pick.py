@@ -48,6 +48,7 @@ import warp as wp
 from simulator.scene.model import LightKind
 
 from .lights import LightRec, SceneRec
+from .records import TraceParams
 from .sampling import PI
 
 #: the uniform share α of the pick (see the module docstring); on the
@@ -281,3 +282,36 @@ def pick_probability(scene: SceneRec, pk: LightPick, li: int, p: wp.vec3, n: wp.
         return 1.0
     wc = pick_weights(scene, li, p, n, pk.row, light_masked(scene, mask_row, depth, li))
     return mixed_probability(wc[0], wc[1], pk.sum_w, pk.sum_c)
+
+
+@wp.func
+def picks_at(params: TraceParams, depth: int) -> bool:
+    """Whether the vertex at ``depth`` picks one light (pick_light 1: every
+    vertex; 2: every vertex past the sensor's own)."""
+    return params.pick_light == 1 or (params.pick_light == 2 and depth > 0)
+
+
+@wp.func
+def pick_scale(
+    scene: SceneRec, params: TraceParams, pk: LightPick, li: int, p: wp.vec3, n: wp.vec3, depth: int
+) -> float:
+    """P(li | vertex) of the light pick, 1 when every light is sampled: the
+    factor on pdf_light that makes it the next-event strategy's density."""
+    if not picks_at(params, depth):
+        return 1.0
+    return pick_probability(scene, pk, li, p, n, params.mask_row, depth)
+
+
+@wp.func
+def tally_pick(
+    scene: SceneRec, params: TraceParams, li: int, p: wp.vec3, n: wp.vec3, depth: int, weight: float, got: wp.vec2
+):
+    """A pilot's sums for light ``li``'s pick factor (light_pick.py): the
+    path weight × its estimate ê, and × the value its shadowed sample gave;
+    slot 0 for a sensor's first vertex, 1 for the rest."""
+    if is_delta(scene.lights[li]):
+        return
+    slot = wp.where(depth == 0 and params.mask_row >= 0, 0, 1)
+    k = (params.thread * 2 + slot) * scene.n_lights + li
+    e = light_estimate(scene, li, p, n)
+    scene.pick_tally[k] = scene.pick_tally[k] + weight * wp.vec2(e[0], importance(got))

@@ -1,0 +1,231 @@
+"""The surface guide of ``guided`` paths: patches, their sampler and its pdf twin.
+
+Host side: :mod:`simulator.scene.patches` (the layout) and
+:mod:`simulator.engine.guide` (the pilot and the tables).
+"""
+
+import warp as wp
+
+from .lights import SceneRec, tri_vertex
+from .rays import first_hit, offset_length
+from .records import TraceParams
+from .sampling import INV_PI, sample_triangle_bary
+
+
+# ---------------------------------------------------------------- surface guide
+#
+# Guided paths (method ``guided``) add a second way to pick the next vertex y
+# from x: a patch j of the stage's surfaces with probability P_j (from a
+# pilot's tallies of the light each patch passed on to the sensors), then a
+# point uniform on it, area pdf P_j/A_j. It is mixed with the cosine
+# direction by one-sample MIS (balance heuristic: divide by the mixture pdf,
+# in area measure, Veach 1997 §9.2.4; docs/REFERENCES.md §One-sample MIS);
+# see vertex_irradiance. The idea of
+# learning where light comes from with a pilot and sampling it is path
+# guiding's (Vorba et al. 2014, Müller et al. 2017), here on surface patches.
+
+
+@wp.func
+def patch_index(s: float, t: float, m: int) -> int:
+    """Index k (0 … m² − 1) of the sub-triangle holding (s, t) on a triangle
+    cut m × m: k = j·(2m − j) + 2i + upper (see
+    :mod:`simulator.scene.patches`). Twin of :func:`patch_point`."""
+    fm = float(m)
+    i = wp.clamp(int(wp.floor(s * fm)), 0, m - 1)
+    j = wp.clamp(int(wp.floor(t * fm)), 0, m - 1)
+    upper = int(0)
+    if i + j > m - 1:  # rounding past the hypotenuse
+        i = m - 1 - j
+    elif i + j <= m - 2 and (s * fm - float(i)) + (t * fm - float(j)) >= 1.0:
+        upper = 1
+    return j * (2 * m - j) + 2 * i + upper
+
+
+@wp.func
+def patch_point(k: int, m: int, u: wp.vec2) -> wp.vec2:
+    """(s, t) uniform on sub-triangle k of a triangle cut m × m (area pdf
+    m²/A on the triangle's plane). Twin of :func:`patch_index`."""
+    fm = float(m)
+    j = wp.clamp(int(wp.floor(fm - wp.sqrt(wp.max(fm * fm - float(k), 0.0)))), 0, m - 1)
+    while j > 0 and j * (2 * m - j) > k:
+        j -= 1
+    while j < m - 1 and (j + 1) * (2 * m - j - 1) <= k:
+        j += 1
+    r = k - j * (2 * m - j)
+    i = r // 2
+    b = sample_triangle_bary(u)  # weights of the corners B and C, A gets the rest
+    a0 = wp.vec2(float(i), float(j))
+    e1 = wp.vec2(1.0, 0.0)
+    e2 = wp.vec2(0.0, 1.0)
+    if r % 2 == 1:  # upper: corners (i+1, j+1), (i, j+1), (i+1, j)
+        a0 = wp.vec2(float(i + 1), float(j + 1))
+        e1 = wp.vec2(-1.0, 0.0)
+        e2 = wp.vec2(0.0, -1.0)
+    return (a0 + b[0] * e1 + b[1] * e2) / fm
+
+
+@wp.func
+def tri_params(scene: SceneRec, face: int, y: wp.vec3) -> wp.vec2:
+    """(s, t) of the point y on triangle ``face``: y = a + s·(b − a) + t·(c − a)
+    (least squares, so a point off the plane by rounding projects onto it)."""
+    a = tri_vertex(scene, face, 0)
+    e1 = tri_vertex(scene, face, 1) - a
+    e2 = tri_vertex(scene, face, 2) - a
+    d = y - a
+    d00 = wp.dot(e1, e1)
+    d01 = wp.dot(e1, e2)
+    d11 = wp.dot(e2, e2)
+    d20 = wp.dot(d, e1)
+    d21 = wp.dot(d, e2)
+    den = d00 * d11 - d01 * d01
+    if den <= 0.0:
+        return wp.vec2(0.0, 0.0)
+    return wp.vec2((d11 * d20 - d01 * d21) / den, (d00 * d21 - d01 * d20) / den)
+
+
+@wp.func
+def patch_at(scene: SceneRec, face: int, y: wp.vec3) -> int:
+    """The patch (global index) holding the point y of triangle ``face``."""
+    st = tri_params(scene, face, y)
+    return scene.guide.tri_offset[face] + patch_index(st[0], st[1], scene.guide.tri_m[face])
+
+
+@wp.struct
+class GuideSample:
+    y: wp.vec3  # the point drawn
+    face: int  # its triangle
+    density: float  # area pdf P_j/A_j there (m⁻²)
+
+
+@wp.func
+def guide_row(scene: SceneRec, depth: int, face: int) -> int:
+    """The guide table a vertex samples from: row 0 at a path's first
+    vertex, else its triangle's (see GuideRec)."""
+    if depth == 0 or face < 0:
+        return 0
+    return scene.guide.tri_row[face]
+
+
+@wp.func
+def sample_guide(scene: SceneRec, row: int, u: wp.vec3) -> GuideSample:
+    """A patch j with row ``row``'s probability P_j (binary search of its
+    CDF: P_j = cdf[k] − cdf[k−1]), then a point uniform on it: area pdf
+    P_j/A_j. Twin of :func:`pdf_guide`. Needs the row to be non-empty."""
+    lo = scene.guide.row_start[row]
+    hi = scene.guide.row_start[row + 1] - 1
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if scene.guide.cdf[mid] <= u[0]:
+            lo = mid + 1
+        else:
+            hi = mid
+    j = scene.guide.ids[lo]
+    face = scene.guide.patch_tri[j]
+    st = patch_point(j - scene.guide.tri_offset[face], scene.guide.tri_m[face], wp.vec2(u[1], u[2]))
+    a = tri_vertex(scene, face, 0)
+    g = GuideSample()
+    g.y = a + st[0] * (tri_vertex(scene, face, 1) - a) + st[1] * (tri_vertex(scene, face, 2) - a)
+    g.face = face
+    g.density = scene.guide.density[row * scene.guide.n_patches + j]
+    return g
+
+
+@wp.func
+def pdf_guide(scene: SceneRec, row: int, face: int, y: wp.vec3) -> float:
+    """Area pdf (m⁻²) with which :func:`sample_guide` draws the point y of
+    triangle ``face``: row ``row``'s P_j/A_j of its patch, 0 where that row
+    never goes."""
+    if scene.guide.n == 0:
+        return 0.0
+    return scene.guide.density[row * scene.guide.n_patches + patch_at(scene, face, y)]
+
+
+@wp.func
+def guide_fraction(scene: SceneRec, params: TraceParams, depth: int, row: int) -> float:
+    """c: the probability of the guide strategy at a vertex of this depth
+    that samples guide row ``row`` (0: cosine only). None where the row is
+    empty, outside [guide_first, guide_depth), or at the last vertex a
+    bounce limit allows (the next one would add nothing)."""
+    if params.guide_c <= 0.0 or scene.guide.n == 0:
+        return 0.0
+    if scene.guide.row_start[row + 1] <= scene.guide.row_start[row]:
+        return 0.0
+    if depth < params.guide_first or (params.guide_depth >= 0 and depth >= params.guide_depth):
+        return 0.0
+    if params.bounces >= 0 and depth >= params.bounces:
+        return 0.0
+    return params.guide_c
+
+
+@wp.func
+def mixture_factor(c: float, pdf_guide_area: float, pdf_cos_area: float) -> float:
+    """p_cos,A(y) / p_mix(y), p_mix = c·p_guide,A + (1 − c)·p_cos,A: what a
+    vertex reached by either strategy multiplies the path's throughput by
+    (besides ρ; it is 1 for c = 0 and at most 1/(1 − c)).
+
+    Notes
+    -----
+    Light leaving y toward x contributes L(y) = ρ/π·E(y) to E(x) through
+    ∫ L G dA_y with G = cosθx·cosθy/r²; one-sample MIS with the balance
+    heuristic estimates it by L·G/p_mix(y) whichever strategy drew y (Veach
+    1997, §9.2.4). Since p_cos,A = cosθx·cosθy/(π r²) = G/π, the next
+    vertex's weight is weight·ρ·G/(π·p_mix) = weight·ρ·p_cos,A/p_mix."""
+    den = c * pdf_guide_area + (1.0 - c) * pdf_cos_area
+    if den <= 0.0:
+        return 0.0
+    return pdf_cos_area / den
+
+
+@wp.struct
+class GuideStep:
+    y: wp.vec3  # the next vertex
+    n: wp.vec3  # its normal, facing the previous vertex
+    face: int  # its triangle; −1: the strategy gave nothing (the path ends)
+    factor: float  # p_cos,A / p_mix at y (see mixture_factor)
+
+
+@wp.func
+def guided_step(scene: SceneRec, row: int, o: wp.vec3, n: wp.vec3, c: float, u: wp.vec3) -> GuideStep:
+    """The guide strategy at a vertex with ray origin o and normal n: a point
+    y from :func:`sample_guide`, kept when it faces o, o sees its side, and
+    the segment o → y first meets y's triangle (within the ray offset of y:
+    a coplanar neighbour met at y by rounding does not block it)."""
+    g = GuideStep()
+    g.face = -1
+    gs = sample_guide(scene, row, u)
+    d = gs.y - o
+    dist = wp.length(d)
+    if dist <= 0.0:
+        return g
+    wi = d / dist
+    cos_x = wp.dot(wi, n)
+    a = tri_vertex(scene, gs.face, 0)
+    ng = wp.cross(tri_vertex(scene, gs.face, 1) - a, tri_vertex(scene, gs.face, 2) - a)
+    if cos_x <= 0.0 or wp.length(ng) <= 0.0:
+        return g
+    ng = wp.normalize(ng)
+    cos_y = -wp.dot(wi, ng)
+    if cos_y < 0.0:
+        ng = -ng
+        cos_y = -cos_y
+    if cos_y <= 0.0:
+        return g
+    off = offset_length(scene, gs.y)
+    h = first_hit(scene, o, wi, dist + off)
+    if h.face >= 0 and h.face != gs.face and h.t < dist - off:
+        return g
+    g.y = gs.y
+    g.n = ng
+    g.face = gs.face
+    g.factor = mixture_factor(c, gs.density, cos_x * cos_y * INV_PI / (dist * dist))
+    return g
+
+
+@wp.func
+def tally_patch(scene: SceneRec, params: TraceParams, row: int, face: int, y: wp.vec3, value: wp.vec2):
+    """Pilot: add a next-event contribution made at the vertex y of triangle
+    ``face``, reached from a vertex sampling guide row ``row``, to that
+    row's tally of y's patch (in the worker's block ``params.tally_row``)."""
+    if scene.guide.n_patches > 0 and face >= 0:
+        k = (params.tally_row * scene.guide.n_rows + row) * scene.guide.n_patches + patch_at(scene, face, y)
+        wp.atomic_add(scene.guide.tally, k, value)
