@@ -123,6 +123,7 @@ class TraceParams:
     # per group (G), Σ(x_g − K_g) (G), Σ(x_g − K_g)(x_h − K_h) at g·G + h, h ≤ g (G × G).
     group_tally: int  # 1: tally each sample's light per group as well as its total
     n_groups: int  # G
+    group_batch: int  # 1: a thread keeps this sample's light (G) and Σx_g (G) only; batch means give the covariance
     group_state: wp.array(dtype=wp.vec2d)  # (threads × G·(G + 3))
     guide_c: float  # guided paths: probability of sampling the surface guide at a vertex (0: plain paths)
     guide_first: int  # the guide is used at vertices of depth ≥ guide_first ...
@@ -566,20 +567,100 @@ def light_contribution(scene: SceneRec, params: TraceParams, li: int, value: wp.
     if params.spectral != 0:
         v = spectral_contribution(scene, params, li, value, tint)
     if params.group_tally != 0 and li >= 0:
-        g = scene.light_group[li]
-        if g >= 0:
-            k = params.thread * params.n_groups * (params.n_groups + 3) + g
-            params.group_state[k] = params.group_state[k] + wp.vec2d(v)
+        tally_group(params, scene.light_group[li], v)
     return v
-    return value
+
+
+@wp.func
+def tregenza_patch(d: wp.vec3) -> int:
+    """Tregenza sky patch of direction ``d`` (world frame, +Z up, +Y north, +X east): 0…144 above the
+    horizon, 145 at or below it; the twin of :func:`simulator.study.sky_patches.patch_index`."""
+    if d[2] <= 0.0:
+        return 145
+    alt = wp.asin(wp.clamp(d[2] / wp.length(d), -1.0, 1.0)) * (180.0 / PI)
+    band = wp.min(int(alt / 12.0), 7)
+    if band == 7:
+        return 144
+    n = 30
+    start = 0
+    if band == 1:
+        start = 30
+    elif band == 2:
+        n = 24
+        start = 60
+    elif band == 3:
+        n = 24
+        start = 84
+    elif band == 4:
+        n = 18
+        start = 108
+    elif band == 5:
+        n = 12
+        start = 126
+    elif band == 6:
+        n = 6
+        start = 138
+    az = wp.atan2(d[0], d[1])
+    if az < 0.0:
+        az = az + 2.0 * PI
+    j = int(wp.floor(az / (2.0 * PI / float(n)) + 0.5))
+    return start + j % n
+
+
+@wp.func
+def light_contribution_dir(scene: SceneRec, params: TraceParams, li: int, value: wp.vec2, tint: wp.vec4,
+                           wi: wp.vec3) -> wp.vec2:  # fmt: skip
+    """:func:`light_contribution` for light arriving along ``wi`` (toward the light): a dome split into
+    sky patches (``scene.patch_base[li]`` ≥ 0) tallies it in the group of the patch ``wi`` points
+    into, ``patch_base + tregenza_patch(wi)`` (146 slots: 145 patches and the ground)."""
+    if params.group_tally == 0 or li < 0:
+        return light_contribution(scene, params, li, value, tint)
+    pb = scene.patch_base[li]
+    if pb < 0:
+        return light_contribution(scene, params, li, value, tint)
+    v = value
+    if params.spectral != 0:
+        v = spectral_contribution(scene, params, li, value, tint)
+    tally_group(params, pb + tregenza_patch(wi), v)
+    return v
+
+
+@wp.func
+def group_width(params: TraceParams) -> int:
+    """Slots of a thread's group state: G·(G + 3), or 2G for batch tallies."""
+    if params.group_batch != 0:
+        return 2 * params.n_groups
+    return params.n_groups * (params.n_groups + 3)
+
+
+@wp.func
+def tally_group(params: TraceParams, g: int, v: wp.vec2):
+    """Add ``v`` to this sample's slot of group ``g`` (none for g < 0)."""
+    if g >= 0:
+        k = params.thread * group_width(params) + g
+        params.group_state[k] = params.group_state[k] + wp.vec2d(v)
 
 
 @wp.func
 def clear_group_sample(params: TraceParams, t: int):
     """Zero thread ``t``'s per-group slots of this sample."""
-    base = t * params.n_groups * (params.n_groups + 3)
+    base = t * group_width(params)
     for g in range(params.n_groups):
         params.group_state[base + g] = wp.vec2d(wp.float64(0.0), wp.float64(0.0))
+
+
+@wp.func
+def fold_group_batch(params: TraceParams, t: int, keep: int):
+    """Batch tallies: add thread ``t``'s sample, per group, to its sums Σx_g (no shift, no cross
+    products); the host estimates the covariance from the threads' block means
+    (:class:`simulator.engine.stats.GroupBatchStats`). A non-finite sample (``keep`` 0) adds nothing."""
+    if keep == 0:
+        return
+    x0 = t * 2 * params.n_groups
+    s0 = x0 + params.n_groups
+    st = params.group_state
+    for g in range(params.n_groups):
+        st[s0 + g] = st[s0 + g] + st[x0 + g]
 
 
 @wp.func
@@ -595,6 +676,9 @@ def fold_group_sample(params: TraceParams, t: int, first: int, keep: int):
     A non-finite sample (``keep`` 0) counts as 0 in every group, as it does
     in the total."""
     n_g = params.n_groups
+    if params.group_batch != 0:
+        fold_group_batch(params, t, keep)
+        return
     x0 = t * n_g * (n_g + 3)  # this sample's light per group
     k0 = x0 + n_g  # shifts
     s0 = k0 + n_g  # sums
@@ -956,7 +1040,7 @@ def vertex_irradiance(
                         count_ray(scene, params)
                         if shadow_ray_clear(scene, o, p, li, ls):
                             got = ls.value
-                            c_light = light_contribution(scene, params, li, (weight * w) * ls.value, tint)
+                            c_light = light_contribution_dir(scene, params, li, (weight * w) * ls.value, tint, ls.wi)
                             total += c_light
                             if params.tally != 0 and depth > 0:
                                 tally_patch(scene, params, prev_row, cur_face, p, c_light)
@@ -1023,7 +1107,7 @@ def vertex_irradiance(
                     if params.mis != 0 and params.nee != 0:
                         pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, RAY_INF, -1)
                         w = power_heuristic(pdf_b, pdf_l)
-                    total += light_contribution(scene, params, li, (w_dir * w) * le, tint)
+                    total += light_contribution_dir(scene, params, li, (w_dir * w) * le, tint, wi)
             break
         cos_view = -wp.dot(wi, ng)
         le = tri_emitted(scene, face, cos_view)
@@ -1083,7 +1167,7 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     if face < 0:
         if direct:
             for li in range(scene.n_lights):
-                total += light_contribution(scene, params, li, escaped_radiance(scene.lights[li], d), params.tint)
+                total += light_contribution_dir(scene, params, li, escaped_radiance(scene.lights[li], d), params.tint, d)
         return total
     cos_view = -wp.dot(d, ng)
     if direct:
