@@ -44,13 +44,16 @@ def test_patch_index_round_trip():
 
 
 def test_patch_azimuth_convention():
-    """Patch 0 is centred on north (+Y), and azimuth runs toward east (+X): a horizon direction at
-    azimuth 90° (east, +X) lies in patch 30·90/360 = 7.5 → 8 − … precisely the patch centred at 84°
-    or 96°; at 12° (the second patch's centre in a band of 30) it is patch 1."""
+    """Patch 0 is centred on north (+Y) and azimuth runs toward east (+X), as the study's sun
+    (simulator.study.sun): in the horizon band of 30 patches 12° wide, a direction at azimuth 12°
+    (north-north-east) is patch 1, one at −12° (west of north) the band's last, 29, and due east
+    (90°, +X) is patch 90/12 = 7.5 → the boundary; at 93° it is patch 8."""
     a = math.radians(12.0)
     assert int(sp.patch_index(np.array([math.sin(a), math.cos(a), 0.05]))) == 1
     a = math.radians(-12.0)  # west of north: the band's last patch
     assert int(sp.patch_index(np.array([math.sin(a), math.cos(a), 0.05]))) == 29
+    a = math.radians(93.0)
+    assert int(sp.patch_index(np.array([math.sin(a), math.cos(a), 0.05]))) == 8
 
 
 def test_overcast_zenith_horizon_ratio():
