@@ -124,7 +124,13 @@ class LightGroups:
 
     def state_width(self) -> int:
         """Slots of a kernel thread's group state (``group_width`` in the kernels)."""
-        return 2 * self.n_groups if self.uses_batches else self.n_groups * (self.n_groups + 3)
+        return self.width_of(self.n_groups, self.uses_batches)
+
+    @staticmethod
+    def width_of(n_groups: int, batch: bool) -> int:
+        from simulator.kernels.estimators import GROUP_TOUCHED
+
+        return 2 * n_groups + 1 + int(GROUP_TOUCHED) if batch else n_groups * (n_groups + 3)
 
 
 @dataclass
@@ -422,7 +428,7 @@ class Engine:
             if n_resp:
                 rec.response_lanes = wp.zeros(n, dtype=wp.vec4)
             n_g = int(params.n_groups)
-            width = 2 * n_g if params.group_batch else n_g * (n_g + 3)
+            width = LightGroups.width_of(n_g, bool(params.group_batch))
             if params.group_tally:
                 params.group_state = wp.zeros(n * width, dtype=wp.vec2d)
 
@@ -460,7 +466,7 @@ class Engine:
                 return (*out, nonfinite, r_mean, r_m2, None, None)
             st = params.group_state.numpy().reshape(n, width, 2)
             if params.group_batch:
-                return (*out, nonfinite, r_mean, r_m2, (t_sensor, t_count, st[:, n_g:]), None)
+                return (*out, nonfinite, r_mean, r_m2, (t_sensor, t_count, st[:, n_g : 2 * n_g]), None)
             _, _, g_mean, g_m2 = GroupStats.reduce_blocks(
                 t_sensor, t_count, st[:, n_g : 2 * n_g], st[:, 2 * n_g : 3 * n_g], st[:, 3 * n_g :].reshape(n, n_g, n_g, 2),
             )  # fmt: skip

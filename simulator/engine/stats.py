@@ -258,8 +258,12 @@ class GroupBatchStats:
         self.total[sens] += np.add.reduceat(bsum, starts)
         y = bsum / np.sqrt(cnt)[:, None, None]
         for s, a, b in zip(sens, starts, ends):
-            yy = y[a:b]  # (m, C, G)
-            self.w2[s] += np.matmul(np.transpose(yy, (1, 2, 0)), np.transpose(yy, (1, 0, 2)))
+            ys = y[a:b]  # (m, C, G)
+            nz = np.flatnonzero(np.any(ys != 0.0, axis=(0, 1)))  # the groups this sensor's blocks reached
+            if not len(nz):
+                continue
+            yc = np.ascontiguousarray(np.transpose(ys[:, :, nz], (1, 0, 2)))  # (C, m, K)
+            self.w2[s][np.ix_(np.arange(yc.shape[0]), nz, nz)] += np.einsum("cmg,cmh->cgh", yc, yc)
 
     @property
     def mean(self) -> np.ndarray:
@@ -269,10 +273,12 @@ class GroupBatchStats:
 
     def cov(self) -> np.ndarray:
         """Batch-means covariance of the group means, shape (S, C, G, G); inf below 2 batches."""
-        n = self.count.astype(np.float64)[:, None, None, None]
-        b = self.blocks.astype(np.float64)[:, None, None, None]
-        m = self.mean
-        outer = m[..., :, None] * m[..., None, :]
+        n = self.count.astype(np.float64)
+        b = self.blocks.astype(np.float64)
+        m = self.mean * np.sqrt(n)[:, None, None]
+        c = self.w2 - m[..., :, None] * m[..., None, :]
+        few = b <= 1
         with np.errstate(invalid="ignore", divide="ignore"):
-            c = (self.w2 - n * outer) / (n * (b - 1.0))
-        return np.where(b > 1, c, np.inf)
+            c /= (n * (b - 1.0))[:, None, None, None]
+        c[few] = np.inf
+        return c

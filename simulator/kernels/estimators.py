@@ -625,25 +625,43 @@ def light_contribution_dir(scene: SceneRec, params: TraceParams, li: int, value:
     return v
 
 
+#: batch tallies: distinct groups a sample's touched list holds; past it the fold scans all G slots
+GROUP_TOUCHED = wp.constant(32)
+
+
 @wp.func
 def group_width(params: TraceParams) -> int:
-    """Slots of a thread's group state: G·(G + 3), or 2G for batch tallies."""
+    """Slots of a thread's group state: G·(G + 3), or for batch tallies 2G + 1 + ``GROUP_TOUCHED``
+    (this sample's light, the sums, the touched count, the touched list)."""
     if params.group_batch != 0:
-        return 2 * params.n_groups
+        return 2 * params.n_groups + 1 + GROUP_TOUCHED
     return params.n_groups * (params.n_groups + 3)
 
 
 @wp.func
 def tally_group(params: TraceParams, g: int, v: wp.vec2):
-    """Add ``v`` to this sample's slot of group ``g`` (none for g < 0)."""
-    if g >= 0:
-        k = params.thread * group_width(params) + g
-        params.group_state[k] = params.group_state[k] + wp.vec2d(v)
+    """Add ``v`` to this sample's slot of group ``g`` (none for g < 0). Batch tallies also note a
+    slot the sample touches for the first time in the thread's touched list (its index in the
+    first component of a list slot), so the fold visits only those."""
+    if g < 0:
+        return
+    base = params.thread * group_width(params)
+    k = base + g
+    x = params.group_state[k]
+    if params.group_batch != 0 and x[0] == wp.float64(0.0) and x[1] == wp.float64(0.0):
+        c0 = base + 2 * params.n_groups  # the touched count, in the first component
+        n = int(params.group_state[c0][0])
+        if n < GROUP_TOUCHED:
+            params.group_state[c0 + 1 + n] = wp.vec2d(wp.float64(g), wp.float64(0.0))
+        params.group_state[c0] = wp.vec2d(wp.float64(wp.min(n + 1, GROUP_TOUCHED + 1)), wp.float64(0.0))
+    params.group_state[k] = x + wp.vec2d(v)
 
 
 @wp.func
 def clear_group_sample(params: TraceParams, t: int):
-    """Zero thread ``t``'s per-group slots of this sample."""
+    """Zero thread ``t``'s per-group slots of this sample (batch tallies: the fold leaves them zero)."""
+    if params.group_batch != 0:
+        return
     base = t * group_width(params)
     for g in range(params.n_groups):
         params.group_state[base + g] = wp.vec2d(wp.float64(0.0), wp.float64(0.0))
@@ -652,15 +670,28 @@ def clear_group_sample(params: TraceParams, t: int):
 @wp.func
 def fold_group_batch(params: TraceParams, t: int, keep: int):
     """Batch tallies: add thread ``t``'s sample, per group, to its sums Σx_g (no shift, no cross
-    products); the host estimates the covariance from the threads' block means
+    products) and zero the sample's slots, visiting only the touched ones (all G when the list
+    overflowed); the host estimates the covariance from the threads' block means
     (:class:`simulator.engine.stats.GroupBatchStats`). A non-finite sample (``keep`` 0) adds nothing."""
-    if keep == 0:
-        return
-    x0 = t * 2 * params.n_groups
-    s0 = x0 + params.n_groups
+    n_g = params.n_groups
+    x0 = t * group_width(params)
+    s0 = x0 + n_g
+    c0 = x0 + 2 * n_g
     st = params.group_state
-    for g in range(params.n_groups):
-        st[s0 + g] = st[s0 + g] + st[x0 + g]
+    zero = wp.vec2d(wp.float64(0.0), wp.float64(0.0))
+    n = int(st[c0][0])
+    if n <= GROUP_TOUCHED:
+        for j in range(n):
+            g = int(st[c0 + 1 + j][0])
+            if keep != 0:
+                st[s0 + g] = st[s0 + g] + st[x0 + g]
+            st[x0 + g] = zero
+    else:
+        for g in range(n_g):
+            if keep != 0:
+                st[s0 + g] = st[s0 + g] + st[x0 + g]
+            st[x0 + g] = zero
+    st[c0] = zero
 
 
 @wp.func
