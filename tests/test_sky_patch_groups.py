@@ -52,7 +52,7 @@ def _office_sky_and_sensors():
 
 def test_open_sky_patch_coefficients_are_the_closed_form():
     """An unobstructed horizontal receiver under a dome of luminance L: patch p's coefficient is
-    E_p = L·∫_p cosθ dω = L·(π/n)(sin²a₁ − sin²a₀) (docs/REFERENCES.md §Tregenza sky patches). With
+    E_p = L·∫_p cosθ dω = L·(π/n)(sin²a₁ − sin²a₀) (docs/REFERENCES.md §Tregenza sky patches); with
     cosine-weighted sampling (method light, 16384 samples) each sample's light lands in one patch;
     the 145 z-scores (estimate − E_p)/σ_p are checked as a χ²(145) sum below its 1e-4 upper quantile
     (a missing or misplaced patch would give a z of tens), the ground slot reads 0 (no direction

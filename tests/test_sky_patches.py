@@ -67,11 +67,13 @@ def test_overcast_zenith_horizon_ratio():
 
 
 def test_overcast_weights_horizontal_illuminance():
-    """A horizontal receiver under the overcast sky reads 7π L_z/9 (docs/REFERENCES.md §CIE standard
-    overcast sky). The cosine-weighted integral over each patch (the same midpoint cells) sums to it
-    to 1e-4 (the midpoint rule's error on the quadratic cosθ·(1 + 2cosθ), 12 cells a side: 3e-5); the 145-patch sky, each patch at its mean luminance, gives Σ L̄_p ∫_p cosθ dω, 0.42% low
-    (the sky is piecewise constant over 12° bands, where L and cosθ both rise with altitude):
-    asserted between 0.2% and 0.6% low, so the patch sky's discretisation is known, not hidden."""
+    """A horizontal receiver under the overcast sky reads 7π L_z/9
+    (docs/REFERENCES.md §CIE standard overcast sky). The cosine-weighted integral over each patch
+    (the same midpoint cells) sums to it to 1e-4 (the midpoint rule's error on the quadratic
+    cosθ·(1 + 2cosθ), 12 cells a side: 3e-5); the 145-patch sky, each patch at its mean
+    luminance, gives Σ L̄_p ∫_p cosθ dω, 0.42% low (the sky is piecewise constant over 12° bands,
+    where L and cosθ both rise with altitude): asserted between 0.2% and 0.6% low, so the patch
+    sky's discretisation is known, not hidden."""
     rel = sp.patch_means(sp.overcast_luminance)
     proj = np.array([sp.patch_projected_solid_angle(p) for p in range(145)])
     exact = 7 * math.pi / 9

@@ -47,7 +47,7 @@ References
 ----------
 Tregenza, P. R. (1987). Subdivision of the sky hemisphere for luminance
 measurements. Lighting Research and Technology 19(1), 13–14.
-docs/REFERENCES.md §Tregenza sky patches; §CIE standard general sky;
+docs/REFERENCES.md §Tregenza sky patches, §CIE standard general sky and
 §CIE standard overcast sky.
 """
 
