@@ -96,3 +96,25 @@ def test_sky_mistakes_are_one_line(tmp_path, old, new, message):
         study, p = _study(tmp_path, SKY.replace(old, new, 1))
         run_study(study, p, tmp_path / "out", reference_run=False, mode="inprocess")
     assert message in str(e.value) and "\n" not in str(e.value)
+
+
+def test_the_bundled_daylight_study_is_one_trace():
+    """configs/studies/office_daylight.toml: 8 scenarios (CIE overcast, two clear skies with the sun
+    from pvlib for Munich on 21 March at 09:00 and 16:00, the overcast sky with the rows dimmed, the
+    authored dome) over a split sky and the rows, all in one trace group (the skies' suns shape the
+    sky only). The morning sun is in the east (azimuth 90°–150°) and the afternoon one in the west
+    (210°–270°), both above the horizon."""
+    pytest.importorskip("pvlib")
+    from simulator.scene.usd import load_stage
+    from simulator.study.scenarios import check_split_groups, expand_scenarios, resolve_groups, trace_groups_of
+
+    study, path = load_study(Path(__file__).resolve().parent.parent / "configs" / "studies" / "office_daylight.toml")
+    scene = load_stage(path.parent / study.stage, light_units="photometric", radiometric_spectrum="E")
+    groups, _ = resolve_groups(scene, study.group, str(path))
+    assert check_split_groups(scene, study.group, groups, str(path)) == ("sky",)
+    scen = expand_scenarios(study.scenario, list(groups), str(path), scene=scene, groups=groups)
+    assert len(scen) == 8 and len(trace_groups_of(scen, scene, groups, str(path))) == 1
+    import re
+
+    az = {s.name: float(re.search(r"azimuth ([0-9.]+)", s.notes[0]).group(1)) for s in scen if s.name.startswith("clear")}
+    assert 90 < az["clear_morning"] < 150 and 210 < az["clear_afternoon"] < 270

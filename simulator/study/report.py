@@ -183,7 +183,9 @@ def record(res, versions: dict) -> dict:
         "timings_s": res.timings_s,
         "cost": cost(res),
         "reference_run": res.reference,
-        "group_covariance": "full: the light groups of a trace group are tallied on the same paths in one pass",
+        "group_covariance": "full: the light groups of a trace group are tallied on the same paths in one pass"
+                            + ("; a sky split into patches: from batch means (each kernel thread's 32 samples a batch)"
+                               if any(g.sky is not None for g in res.study.group) else ""),
         "placement": None if pl is None else {
             "objective": pl.objective, "zones": pl.zones, "candidates": pl.candidates, "scenarios": pl.scenarios,
             "evaluations": pl.evaluations, "replicates": pl.replicates, "assignment": pl.assignment, "baseline_score": pl.baseline,
