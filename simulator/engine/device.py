@@ -148,6 +148,7 @@ class DeviceScene:
         rec.light_mask = wp.ones(max(1, n_sensors * (len(scene.lights) + 1)), dtype=wp.int32)
         self._upload_hero(wp, rec, None)
         rec.light_group = wp.full(len(scene.lights) + 1, -1, dtype=wp.int32)  # no groups until a run tallies them
+        rec.patch_base = wp.full(len(scene.lights) + 1, -1, dtype=wp.int32)  # no dome split into sky patches
         n_rec = len(scene.lights) + 1  # the lights, and room for the emissive record
         rec.pick_factor = wp.ones((1 + n_sensors) * n_rec, dtype=float)
         rec.pick_tally = wp.zeros(1, dtype=wp.vec2)

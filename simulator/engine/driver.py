@@ -30,7 +30,7 @@ from simulator.engine.fanout import fan_out
 from simulator.engine.methods import (
     COMPONENTS, GUIDED_METHODS, LIGHT_PICK_MODES, METHOD_FLAGS, light_pick_rule, rr_threshold_rule,
 )
-from simulator.engine.stats import GroupStats, RunningStats
+from simulator.engine.stats import GroupBatchStats, GroupStats, RunningStats
 from simulator.errors import UserError
 from simulator.interrupts import StopFlag
 from simulator.scene.model import MAX_PROBE_PIXELS, Scene, Sensor, SensorKind
@@ -97,12 +97,40 @@ class LightGroups:
         ``sqrt(d_jᵀ C d_j)``); without, when the total does.
     emissive_group : int
         Group of the emissive surfaces (−1: none).
+    patch_base : ndarray of int, shape (L,), optional
+        Per light: −1, or (a dome split into sky patches) the first of its
+        146 groups, ``patch_base + p`` for Tregenza patch p and
+        ``patch_base + 145`` below the horizon
+        (:mod:`simulator.study.sky_patches`).
+    batch : bool
+        Covariance from batch means (each kernel thread's block of samples a
+        batch; :class:`~simulator.engine.stats.GroupBatchStats`) in place of
+        per-sample cross products: a thread holds 2G slots, not G(G + 3).
+        Needed for many groups; ``None`` chooses it when a dome is split.
     """
 
     light_group: np.ndarray
     n_groups: int
     levels: np.ndarray | None = None
     emissive_group: int = -1
+    patch_base: np.ndarray | None = None
+    batch: bool | None = None
+
+    @property
+    def uses_batches(self) -> bool:
+        if self.batch is not None:
+            return bool(self.batch)
+        return self.patch_base is not None and bool(np.any(np.asarray(self.patch_base) >= 0))
+
+    def state_width(self) -> int:
+        """Slots of a kernel thread's group state (``group_width`` in the kernels)."""
+        return self.width_of(self.n_groups, self.uses_batches)
+
+    @staticmethod
+    def width_of(n_groups: int, batch: bool) -> int:
+        from simulator.kernels.estimators import GROUP_TOUCHED
+
+        return 2 * n_groups + 1 + int(GROUP_TOUCHED) if batch else n_groups * (n_groups + 3)
 
 
 @dataclass
@@ -286,6 +314,7 @@ class Engine:
         p.tint = warp().vec4(1.0, 1.0, 1.0, 1.0)
         p.group_tally = 0
         p.n_groups = 0
+        p.group_batch = 0
         p.group_state = self._no_groups
         p.guide_c = G.GUIDE_C if method in GUIDED_METHODS else 0.0
         p.guide_first = G.GUIDE_FIRST
@@ -398,7 +427,7 @@ class Engine:
             if n_resp:
                 rec.response_lanes = wp.zeros(n, dtype=wp.vec4)
             n_g = int(params.n_groups)
-            width = n_g * (n_g + 3)
+            width = LightGroups.width_of(n_g, bool(params.group_batch))
             if params.group_tally:
                 params.group_state = wp.zeros(n * width, dtype=wp.vec2d)
 
@@ -435,6 +464,8 @@ class Engine:
             if not params.group_tally:
                 return (*out, nonfinite, r_mean, r_m2, None, None)
             st = params.group_state.numpy().reshape(n, width, 2)
+            if params.group_batch:
+                return (*out, nonfinite, r_mean, r_m2, (t_sensor, t_count, st[:, n_g : 2 * n_g]), None)
             _, _, g_mean, g_m2 = GroupStats.reduce_blocks(
                 t_sensor, t_count, st[:, n_g : 2 * n_g], st[:, 2 * n_g : 3 * n_g], st[:, 3 * n_g :].reshape(n, n_g, n_g, 2),
             )  # fmt: skip
@@ -567,7 +598,7 @@ class Engine:
         rstats = RunningStats(n_s, n_resp) if n_resp else None
         gstats = None
         if groups is not None:
-            gstats = GroupStats(n_s, groups.n_groups)
+            gstats = (GroupBatchStats if groups.uses_batches else GroupStats)(n_s, groups.n_groups)
             self._set_groups(params, groups)
         seconds = np.zeros(n_s)
         nonfinite = np.zeros(n_s, np.int64)
@@ -584,7 +615,7 @@ class Engine:
         def step(ids, first, count):
             parts = [(ids, first, count)]
             if gstats is not None:
-                width = groups.n_groups * (groups.n_groups + 3)
+                width = groups.state_width()
                 parts = _split_batch(ids, first, count, max(1, GROUP_STATE_BYTES // (16 * width)) * BLOCK)
             for p_ids, p_first, p_count in parts:
                 tb = time.perf_counter()
@@ -593,7 +624,9 @@ class Engine:
                 stats.merge(sens, cnt, mean, m2)
                 if rstats is not None:
                     rstats.merge(sens, cnt, r_mean, r_m2)
-                if gstats is not None:
+                if isinstance(gstats, GroupBatchStats):
+                    gstats.merge_blocks(*g_mean)
+                elif gstats is not None:
                     gstats.merge(sens, cnt, g_mean, g_m2)
                 seconds[sens] += dt * cnt / cnt.sum()
                 nonfinite[sens] += bad
@@ -669,10 +702,15 @@ class Engine:
         lg[: len(groups.light_group)] = groups.light_group
         if self.emissive_light >= 0:
             lg[self.emissive_light] = groups.emissive_group
+        pb = np.full(max(n_l, 1), -1, np.int32)
+        if groups.patch_base is not None:
+            pb[: len(groups.patch_base)] = groups.patch_base
         params.group_tally = 1
         params.n_groups = int(groups.n_groups)
+        params.group_batch = 1 if groups.uses_batches else 0
         with wp.ScopedDevice(self.device):
             self._dev.rec.light_group = wp.array(lg, dtype=wp.int32)
+            self._dev.rec.patch_base = wp.array(pb, dtype=wp.int32)
 
     def _closed_form_groups(self, method: str, ids: np.ndarray, groups: LightGroups) -> EngineResult:
         """Closed-form readings per light group: each group's lights alone (exact, so the covariance is 0)."""

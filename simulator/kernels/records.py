@@ -43,7 +43,11 @@ class TraceParams:
     # per group (G), Σ(x_g − K_g) (G), Σ(x_g − K_g)(x_h − K_h) at g·G + h, h ≤ g (G × G).
     group_tally: int  # 1: tally each sample's light per group as well as its total
     n_groups: int  # G
-    group_state: wp.array(dtype=wp.vec2d)  # (threads × G·(G + 3))
+    # Batch tallies (group_batch 1, for many groups: a dome split into sky patches): 2G + 1 + GROUP_TOUCHED
+    # slots a thread, this sample's light per group (G), Σx_g (G), the touched count and list; the host's
+    # batch means give the covariance (see group_width, fold_group_batch).
+    group_batch: int  # 1: batch tallies
+    group_state: wp.array(dtype=wp.vec2d)  # (threads × group_width)
     guide_c: float  # guided paths: probability of sampling the surface guide at a vertex (0: plain paths)
     guide_first: int  # the guide is used at vertices of depth ≥ guide_first ...
     guide_depth: int  # ... and < guide_depth (−1: no upper bound)

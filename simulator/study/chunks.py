@@ -31,7 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from simulator.scene.model import LightKind, Sensor
-from simulator.study.groups import GroupReadings, derive_seed, trace_groups
+from simulator.study.groups import GroupReadings, derive_seed, level_of, patch_names, trace_groups
 from simulator.study.sun import sun_direction, sun_frame
 
 __all__ = ["ChunkSpec", "ChunkStore", "compute_chunk", "atomic_write", "make_chunks", "StudyInterrupted"]
@@ -62,6 +62,7 @@ class ChunkSpec:
     seed: int
     levels: tuple[tuple[tuple[str, float], ...], ...] = ()  #: the trace group's dimming vectors (adaptive targets)
     threads: int = 0
+    sky_split: tuple[str, ...] = ()  #: groups whose sky is traced as Tregenza patches
 
 
 def atomic_write(path: Path, data: bytes) -> None:
@@ -88,25 +89,32 @@ def _sensor_text(s: Sensor) -> str:
 
 
 def make_chunks(trace_groups, sensors: list[Sensor], groups: dict[str, list[str]], stage: Path, light_units: str,
-                sim: dict, seed: int, block: int) -> list[ChunkSpec]:  # fmt: skip
-    """One chunk per (trace group, block of ``block`` sensors), in a fixed order."""
+                sim: dict, seed: int, block: int, sky_split: tuple[str, ...] = ()) -> list[ChunkSpec]:  # fmt: skip
+    """One chunk per (trace group, block of ``block`` sensors), in a fixed order.
+
+    ``sky_split``: groups traced as sky patches; their slots' levels
+    (``group/pNNN``, ``group/ground``) join the dimming vectors."""
     stage_sha = hashlib.sha256(stage.read_bytes()).hexdigest()
     out = []
     for tg in trace_groups:
         if not tg.groups:
             continue
         gl = tuple((g, tuple(groups[g])) for g in tg.groups)
-        levels = tuple(tuple((g, float(sc.levels.get(g, 0.0))) for g in tg.groups) for sc in tg.scenarios)
+        split = tuple(g for g in tg.groups if g in sky_split)
+        slots = [n for g in tg.groups for n in ([g] + (patch_names(g) if g in split else []))]
+        levels = tuple(tuple((n, level_of(sc.levels, n)) for n in slots) for sc in tg.scenarios)
         for b, lo in enumerate(range(0, len(sensors), block)):
             ids = tuple(range(lo, min(lo + block, len(sensors))))
             cseed = derive_seed(seed, tg.key, b)
-            ident = json.dumps({
+            ident = {
                 "format": CHUNK_FORMAT, "stage": stage_sha, "light_units": light_units, "key": tg.key, "groups": gl,
                 "sensors": [_sensor_text(sensors[i]) for i in ids], "sim": sim, "seed": cseed, "levels": levels,
-            }, sort_keys=True)  # fmt: skip
-            cid = hashlib.sha256(ident.encode()).hexdigest()[:20]
+            }  # fmt: skip
+            if split:
+                ident["sky_split"] = split
+            cid = hashlib.sha256(json.dumps(ident, sort_keys=True).encode()).hexdigest()[:20]
             out.append(ChunkSpec(cid, tg.key, b, str(stage), light_units, tuple(sorted(tg.variants.items())), tg.sun, gl, ids,
-                                 tuple(sensors[i] for i in ids), sim, cseed, levels))  # fmt: skip
+                                 tuple(sensors[i] for i in ids), sim, cseed, levels, sky_split=split))  # fmt: skip
     return out
 
 
@@ -135,7 +143,7 @@ def compute_chunk(spec: ChunkSpec) -> dict:
     scene = chunk_scene(spec)
     sim = SimulationConfig(**spec.sim)
     gr = trace_groups(scene, list(spec.sensors), {g: list(ls) for g, ls in spec.groups}, sim, spec.seed, threads=spec.threads,
-                      scenarios=[dict(lv) for lv in spec.levels])  # fmt: skip
+                      scenarios=[dict(lv) for lv in spec.levels], sky_split=spec.sky_split)  # fmt: skip
     return {
         "id": spec.id, "names": gr.names, "mean": gr.mean, "stderr": gr.stderr, "cov": gr.cov, "samples": gr.samples,
         "trace_s": gr.trace_s, "trace_cpu_s": gr.trace_cpu_s, "wall_s": time.perf_counter() - t0, "host": socket.gethostname(), "pid": os.getpid(),

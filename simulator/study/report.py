@@ -172,7 +172,8 @@ def record(res, versions: dict) -> dict:
                                 "grids": {p: {"n_u": g.n_u, "n_v": g.n_v, "pitch_u_m": g.pitch_u_m, "pitch_v_m": g.pitch_v_m,
                                               "relevant_d_m": g.relevant_d_m, "max_spacing_m": g.max_spacing_m}
                                           for p, g in s.grids.items()}} for s in res.sets},  # fmt: skip
-        "scenarios": [{"name": s.name, "levels": s.levels, "sun_az_el_deg": s.sun, "variants": dict(s.variants), "notes": list(s.notes),
+        "scenarios": [{"name": s.name, "levels": {g: v for g, v in s.levels.items() if "/" not in g},  # no sky patches
+                       "sun_az_el_deg": s.sun, "variants": dict(s.variants), "notes": list(s.notes),
                        "trace_group": s.trace_key} for s in res.scenarios],  # fmt: skip
         "trace_groups": [{"key": t.key, "light_groups": t.groups, "scenarios": len(t.scenarios)} for t in res.trace_groups],
         "zones": {z: len(ix) for z, ix in res.zones.items()},
@@ -182,7 +183,9 @@ def record(res, versions: dict) -> dict:
         "timings_s": res.timings_s,
         "cost": cost(res),
         "reference_run": res.reference,
-        "group_covariance": "full: the light groups of a trace group are tallied on the same paths in one pass",
+        "group_covariance": "full: the light groups of a trace group are tallied on the same paths in one pass"
+                            + ("; a sky split into patches: from batch means (each kernel thread's 32 samples a batch)"
+                               if any(g.sky is not None for g in res.study.group) else ""),
         "placement": None if pl is None else {
             "objective": pl.objective, "zones": pl.zones, "candidates": pl.candidates, "scenarios": pl.scenarios,
             "evaluations": pl.evaluations, "replicates": pl.replicates, "assignment": pl.assignment, "baseline_score": pl.baseline,

@@ -16,7 +16,7 @@ from simulator.study.distributed import choose_mode, run_chunks
 from simulator.study.groups import derive_seed, group_scene
 from simulator.study.objectives import compliance, zone_figures
 from simulator.study.placement import place_sensors
-from simulator.study.scenarios import expand_scenarios, resolve_groups, trace_groups_of
+from simulator.study.scenarios import check_split_groups, expand_scenarios, resolve_groups, trace_groups_of
 from simulator.study.schema import Study
 
 __all__ = ["StudyResult", "run_study", "zone_members"]
@@ -109,7 +109,7 @@ def _reference_scenario(first: list, specs: list, results: dict, adaptive: bool)
     stops a sensor once its hardest scenario meets the target. Fixed budget,
     or a tie: the first of them.
     """
-    lit = [sum(v > 0 for v in sc.levels.values()) for sc in first]
+    lit = [sum(v > 0 for g, v in sc.levels.items() if "/" not in g) for sc in first]  # groups, not a sky's patches
     cands = [j for j, n in enumerate(lit) if n == max(lit)]
     if not adaptive or not specs or len(cands) == 1:
         return first[cands[0]]
@@ -161,7 +161,8 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
         warnings.append(f"lights in no [[group]] stay off in every scenario: {', '.join(unassigned)}")
     if (base.geometry.emission > 0).any():
         warnings.append("emissive surfaces are in no light group and are left out of every scenario")
-    scenarios = expand_scenarios(study.scenario, list(groups), label)
+    sky_split = check_split_groups(base, study.group, groups, label)
+    scenarios = expand_scenarios(study.scenario, list(groups), label, scene=base, groups=groups)
     tgs = trace_groups_of(scenarios, base, groups, label)
     for tg in tgs:  # variant names are checked by the reader: fail before any chunk runs
         if tg.variants:
@@ -172,7 +173,8 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     zones = zone_members(study, sets, candidates, label)
     t_setup = time.perf_counter()
 
-    specs = make_chunks(tgs, sensors, groups, stage, study.light_units, _sim_dict(study), study.seed, study.compute.sensor_block)
+    specs = make_chunks(tgs, sensors, groups, stage, study.light_units, _sim_dict(study), study.seed, study.compute.sensor_block,
+                        sky_split)  # fmt: skip
     store = ChunkStore(out_dir)
     results: dict[str, dict] = {}
     for s in specs:
@@ -244,8 +246,15 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
         j0 = scenarios.index(sc0)
         spec0 = next(s for s in specs if s.trace_key == sc0.trace_key)
         ref = _reference_run(study, chunk_scene(spec0), candidates, groups, sc0, derive_seed(study.seed, "reference"), study.simulation.threads)
-        sig = np.sqrt(ref["stderr"][:, ch] ** 2 + stderr[j0, :, ch] ** 2)
-        dev = np.abs(ref["mean"][:, ch] - mean[j0, :, ch])
+        m0, e0 = mean[j0], stderr[j0]
+        if any("/" in g for g in sc0.levels):  # a sky of patches: the run traces the uniform dome, so compare with that recombination
+            plain = {g: v for g, v in sc0.levels.items() if "/" not in g}
+            m0, e0 = np.zeros_like(m0), np.zeros_like(e0)
+            for s in by_tg.get(sc0.trace_key, []):
+                ids = np.asarray(s.sensor_ids)
+                m0[ids], e0[ids] = readings_of(results[s.id]).combine(plain)
+        sig = np.sqrt(ref["stderr"][:, ch] ** 2 + e0[:, ch] ** 2)
+        dev = np.abs(ref["mean"][:, ch] - m0[:, ch])
         ok = dev <= 4 * sig + 1e-9 * np.abs(ref["mean"][:, ch])
         pass_samples = sum(int(results[s.id]["samples"][0].sum()) for s in by_tg.get(sc0.trace_key, []))
         reference = {"scenario": sc0.name, "wall_s": ref["wall_s"], "cpu_s": ref["cpu_s"], "sensors_within_4_sigma": int(ok.sum()), "sensors": n_s,

@@ -6,22 +6,33 @@ same variant selections and sun direction form a *trace group*: one scene
 whose light groups are traced once and recombined for each scenario of the
 group (:mod:`simulator.study.groups`). A sun at or below the horizon
 contributes nothing: its level is set to 0 in that scenario (and said so).
+
+A scenario's ``sky`` on a group split into sky patches (``[[group]] sky =
+"tregenza"``) sets each patch's level ``group/pNNN`` to the group's level
+times L_p / L_dome, the patch's mean luminance in the CIE sky over the
+dome's authored luminance (:func:`simulator.study.sky_patches.sky_weights`),
+and the ground slot ``group/ground`` to the group's level times ``ground``.
+The sky's sun only shapes the sky's luminance: it does not enter the trace
+key, so skies of any sun position share one trace of the patches (a
+scenario's own ``sun`` still turns the DistantLight, as without a sky).
 """
 
 from __future__ import annotations
 
 import itertools
+import math
 from pathlib import Path
 from dataclasses import dataclass, field
 
+import numpy as np
 
 from simulator.errors import UserError
 from simulator.scene.model import LightKind, Scene
 from simulator.study.candidates import match_prims
-from simulator.study.schema import GroupSpec, ScenarioSpec
-from simulator.study.sun import solar_position
+from simulator.study.schema import GroupSpec, ScenarioSpec, SkySpec, SunSpec
+from simulator.study.sun import solar_position, sun_direction
 
-__all__ = ["Scenario", "TraceGroup", "expand_scenarios", "resolve_groups", "trace_groups_of"]
+__all__ = ["Scenario", "TraceGroup", "expand_scenarios", "resolve_groups", "trace_groups_of", "sky_levels", "check_split_groups"]
 
 
 @dataclass(frozen=True)
@@ -66,18 +77,89 @@ def _fmt_level(x: float) -> str:
     return f"{x:g}"
 
 
-def expand_scenarios(specs: list[ScenarioSpec], group_names: list[str], file_label: str, log=print) -> list[Scenario]:
-    """Every scenario, list-valued levels expanded into their product, in file order."""
+def _sun_of(spec: SunSpec, key: str) -> tuple[float, float]:
+    if spec.azimuth_deg is not None:
+        return float(spec.azimuth_deg), float(spec.elevation_deg)
+    return solar_position(spec.latitude_deg, spec.longitude_deg, spec.time, key)
+
+
+def sky_levels(sky: SkySpec, sun: tuple[float, float] | None, scene: Scene | None, groups: dict[str, list[str]] | None,
+               key: str) -> tuple[dict[str, float], str]:  # fmt: skip
+    """Patch levels ``group/pNNN`` and ``group/ground`` of a scenario's sky (per unit of the group's level), and a note.
+
+    The sky's sun: ``sky.sun``, else the scenario's ``sun``, else the stage's
+    DistantLight. Raises UserError for a sky that needs a sun and has none, or
+    a split group that is not one DomeLight."""
+    from simulator.study import sky_patches as SP
+    from simulator.study.groups import patch_names
+
+    if sky.sun is not None:
+        sun = _sun_of(sky.sun, f"{key}.sun")
+    direction = None
+    if sun is not None:
+        direction = sun_direction(*sun)
+    elif scene is not None:
+        distant = [l for l in scene.lights if l.kind == LightKind.DISTANT]
+        if len(distant) == 1:
+            direction = np.asarray(distant[0].frame, float)[:, 2]
+    needs_sun = sky.cie not in ("overcast", "uniform") and (SP.CIE_TYPES[int(sky.cie)][2] != 0.0 or SP.CIE_TYPES[int(sky.cie)][4] != 0.0)
+    if needs_sun and direction is None:
+        raise UserError(f"{key}: CIE sky type {sky.cie} depends on the sun: give sky.sun or the scenario's sun "
+                        "(the stage has no single DistantLight)")  # fmt: skip
+    scale = math.pi
+    if sky.horizontal_lx is not None:
+        dome = _split_dome(scene, groups, sky.group, key) if scene is not None else None
+        if dome is None or dome.emission[1] <= 0:
+            raise UserError(f"{key}.horizontal_lx: group {sky.group!r} has no DomeLight with a luminance to scale")
+        scale = float(sky.horizontal_lx) / float(dome.emission[1])
+    w = SP.sky_weights(sky.cie, direction, scale)
+    names = patch_names(sky.group)
+    levels = {n: float(x) for n, x in zip(names[:-1], w)}
+    levels[names[-1]] = float(sky.ground)
+    what = "uniform sky" if sky.cie == "uniform" else ("CIE overcast sky" if sky.cie == "overcast" else f"CIE sky type {sky.cie}")
+    note = f"{what} on {sky.group!r} (Tregenza patches)"
+    if needs_sun and sun is not None:
+        note += f", sun at azimuth {sun[0]:.1f} deg, elevation {sun[1]:.1f} deg"
+    return levels, note
+
+
+def _split_dome(scene: Scene, groups: dict[str, list[str]] | None, group: str, key: str):
+    """The one DomeLight of a split sky group (UserError otherwise)."""
+    names = (groups or {}).get(group, [])
+    domes = [l for l in scene.lights if l.name in names and l.kind == LightKind.DOME]
+    if len(names) != 1 or len(domes) != 1:
+        raise UserError(f"{key}: group {group!r} has sky = \"tregenza\" and must hold exactly one DomeLight, "
+                        f"holds {', '.join(names) or 'none'}")  # fmt: skip
+    return domes[0]
+
+
+def check_split_groups(scene: Scene, specs: list[GroupSpec], groups: dict[str, list[str]], file_label: str) -> tuple[str, ...]:
+    """Names of the groups whose sky is split into patches, each checked to be one DomeLight."""
+    out = []
+    for k, g in enumerate(specs):
+        if g.sky is not None:
+            _split_dome(scene, groups, g.name, f"{file_label}: group[{k}]")
+            out.append(g.name)
+    return tuple(out)
+
+
+def expand_scenarios(specs: list[ScenarioSpec], group_names: list[str], file_label: str, log=print, scene: Scene | None = None,
+                     groups: dict[str, list[str]] | None = None) -> list[Scenario]:  # fmt: skip
+    """Every scenario, list-valued levels expanded into their product, in file order.
+
+    ``scene`` and ``groups`` are needed only by a scenario's ``sky`` with
+    ``horizontal_lx`` (the dome's luminance) or without a sun of its own (the stage's)."""
     out: list[Scenario] = []
     seen: set[str] = set()
     for k, sp in enumerate(specs):
         sun = None
         notes: list[str] = []
         if sp.sun is not None:
-            if sp.sun.azimuth_deg is not None:
-                sun = (float(sp.sun.azimuth_deg), float(sp.sun.elevation_deg))
-            else:
-                sun = solar_position(sp.sun.latitude_deg, sp.sun.longitude_deg, sp.sun.time, f"{file_label}: scenario[{k}].sun")
+            sun = _sun_of(sp.sun, f"{file_label}: scenario[{k}].sun")
+        patch = {}
+        if sp.sky is not None:
+            patch, note = sky_levels(sp.sky, sun, scene, groups, f"{file_label}: scenario[{k}].sky")
+            notes.append(note)
         listed = [(g, v) for g, v in sp.levels.items() if isinstance(v, list)]
         fixed = {g: float(v) for g, v in sp.levels.items() if not isinstance(v, list)}
         combos = itertools.product(*[v for _, v in listed]) if listed else [()]
@@ -85,6 +167,9 @@ def expand_scenarios(specs: list[ScenarioSpec], group_names: list[str], file_lab
             levels = {g: 0.0 for g in group_names}
             levels.update(fixed)
             levels.update({g: float(x) for (g, _), x in zip(listed, combo)})
+            if patch:
+                lv = levels.get(sp.sky.group, 0.0)
+                levels.update({n: lv * x for n, x in patch.items()})
             name = sp.name if not listed else f"{sp.name}[{','.join(f'{g}={_fmt_level(x)}' for (g, _), x in zip(listed, combo))}]"
             if name in seen:
                 raise UserError(f"{file_label}: scenario[{k}]: scenario name {name!r} is used twice")

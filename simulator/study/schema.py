@@ -53,12 +53,32 @@ Schema
     name = "window_side"
     collection = "/Office/Lights.collection:windowSide"
 
+    [[group]]                          # ... or a sky split into Tregenza's 145 patches
+    name = "sky"                       # (one DomeLight): daylight coefficients,
+    lights = ["/Office/Sky"]           # any sky a recombination of them
+    sky = "tregenza"
+
     [[scenario]]                       # levels: group -> dimming (lists: a product)
     name = "evening"
     levels = { window_row = [0.5, 1.0], corridor_row = 1.0 }
     sun = { azimuth_deg = 250, elevation_deg = 30 }   # or latitude_deg,
                                        # longitude_deg, time (ISO 8601 with offset)
     variants = { reflectance = "light" }
+
+    [[scenario]]                       # a CIE sky on a split sky group: patch levels
+    name = "clear_sky"                 # L_p / L_dome, times the group's level
+    levels = { sky = 1.0 }
+    sky = { group = "sky", cie = 12, horizontal_lx = 15000, ground = 0.0,
+            sun = { azimuth_deg = 200, elevation_deg = 40 } }
+                                       # cie: 1..15 (ISO 15469 general sky),
+                                       # "overcast" (the traditional CIE sky) or
+                                       # "uniform"; horizontal_lx: the sky's
+                                       # unobstructed horizontal illuminance
+                                       # (default: the dome's authored π·L); sun:
+                                       # for the sky's formula only (default: the
+                                       # scenario's sun, else the stage's); ground:
+                                       # the dome below the horizon, relative to
+                                       # its authored radiance (default 0)
 
     [[zone]]
     name = "window_zone"
@@ -89,7 +109,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 
 from simulator.errors import UserError
 
-__all__ = ["Study", "load_study", "CandidateSpec", "GroupSpec", "ScenarioSpec", "ZoneSpec", "PlacementSpec", "SunSpec"]
+__all__ = ["Study", "load_study", "CandidateSpec", "GroupSpec", "ScenarioSpec", "ZoneSpec", "PlacementSpec", "SunSpec", "SkySpec"]
 
 _SEED_LIMIT = 2**31
 Level = Annotated[float, Field(ge=0.0, le=1e6, allow_inf_nan=False)]
@@ -178,6 +198,7 @@ class GroupSpec(_Model):
     name: str = Field(min_length=1)
     lights: list[str] = []
     collection: str | None = Field(None, min_length=1)
+    sky: Literal["tregenza"] | None = None
 
     @model_validator(mode="after")
     def _some_lights(self):
@@ -206,10 +227,21 @@ class SunSpec(_Model):
         return self
 
 
+class SkySpec(_Model):
+    """A sky on a split sky group (``[[group]] sky = "tregenza"``): its patch levels L_p / L_dome."""
+
+    group: str = Field(min_length=1)
+    cie: Union[Literal["overcast", "uniform"], Annotated[int, Field(ge=1, le=15)]]
+    horizontal_lx: float | None = Field(None, gt=0.0, allow_inf_nan=False)
+    ground: float = Field(0.0, ge=0.0, le=1e6, allow_inf_nan=False)
+    sun: SunSpec | None = None
+
+
 class ScenarioSpec(_Model):
     name: str = Field(min_length=1)
     levels: dict[str, Union[Level, list[Level]]]
     sun: SunSpec | None = None
+    sky: SkySpec | None = None
     variants: dict[str, str] = {}
 
     @field_validator("levels")
@@ -278,10 +310,14 @@ class Study(_Model):
         groups = unique(self.group, "group")
         unique(self.scenario, "scenario")
         zones = unique(self.zone, "zone")
+        split = {g.name for g in self.group if g.sky is not None}
         for i, sc in enumerate(self.scenario):
             for g in sc.levels:
                 if g not in groups:
                     raise _RefError(f"scenario[{i}].levels.{g}", f"no [[group]] of that name{_hint(g, groups)}")
+            if sc.sky is not None and sc.sky.group not in split:
+                raise _RefError(f"scenario[{i}].sky.group", f"no [[group]] named {sc.sky.group!r} with sky = \"tregenza\""
+                                f"{_hint(sc.sky.group, split)}")  # fmt: skip
         for i, z in enumerate(self.zone):
             if z.candidates not in cands:
                 raise _RefError(f"zone[{i}].candidates", f"no [[candidates]] named {z.candidates!r}{_hint(z.candidates, cands)}")

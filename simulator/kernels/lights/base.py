@@ -131,6 +131,7 @@ class SceneRec:
     response_lanes: wp.array(dtype=wp.vec4)  # per kernel thread: this sample's spectral density per hero lane
     colour_weights: wp.array2d(dtype=float)  # (3 × 401): a lane's weight of linear sRGB (cd/m²), for probe maps
     light_group: wp.array(dtype=wp.int32)  # per light record: its light group, −1 for none (TraceParams.group_tally)
+    patch_base: wp.array(dtype=wp.int32)  # per light record: first group of its sky patches (a split dome), −1 when not split
     guide: GuideRec  # surface patches for guided paths
     pick_factor: wp.array(dtype=float)  # ((1 + sensors) × n_lights): learned factors of the light pick (light_pick.py)
     pick_tally: wp.array(dtype=wp.vec2)  # (threads × 2 × n_lights): a pilot's Σ(ê, shadowed value), TraceParams.tally_pick
