@@ -160,7 +160,7 @@ def test_kernel_patch_index_is_the_python_twin():
     import warp as wp
 
     from simulator.engine.driver import load_kernels
-    from simulator.kernels.estimators import tregenza_patch
+    from simulator.kernels.group_tally import tregenza_patch
 
     load_kernels("cpu")
 

@@ -128,7 +128,7 @@ class LightGroups:
 
     @staticmethod
     def width_of(n_groups: int, batch: bool) -> int:
-        from simulator.kernels.estimators import GROUP_TOUCHED
+        from simulator.kernels.group_tally import GROUP_TOUCHED
 
         return 2 * n_groups + 1 + int(GROUP_TOUCHED) if batch else n_groups * (n_groups + 3)
 
