@@ -112,11 +112,13 @@ def mean_albedo(scene) -> float:
     """Area-weighted mean albedo ρ̄ of the scene's triangles (0 without any)."""
     import numpy as np
 
+    from simulator.scene.vectors import cross3
+
     g = scene.geometry
     if g.n_triangles == 0:
         return 0.0
     p = g.points[g.triangles]
-    area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+    area = 0.5 * np.linalg.norm(cross3(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
     total = float(area.sum())
     return float((area * g.albedo).sum() / total) if total > 0 else 0.0
 
