@@ -92,14 +92,17 @@ def light_pick_rule(method: str, scene) -> tuple[str, str]:
 #   integrating sphere ρ = 0.8     1.00   3.35  11.9  62.6  199   956   2640  6760
 #
 # (fixed seeds, variance from the readings' own standard errors; a shared
-# 2-core machine, so CPU times were not used.) No single
+# 2-core machine, so CPU times were not used; measured with the roulette
+# before a vertex's next-event estimate, since moved after it: docs/DESIGN.md
+# §Russian roulette.) No single
 # value wins: a room wants 0.1–0.25, an enclosure of high albedo 0.02 or
 # less. The rule t = min(0.1, 0.2·(1 − ρ̄)), at least 0.01, with ρ̄ the
 # scene's area-weighted albedo, is within ~10% of the best on every row but
 # the integrating sphere, where the walls see the lamp from everywhere, so
 # the light each bounce adds by next-event estimation hardly varies and the
 # roulette's own noise is all there is (the rule's 0.04 gains ~5× over 0.1
-# there; 0.005 would gain 60× more, which a rule by albedo alone cannot see).
+# there; 0.005 would gain 60× more, which a rule by albedo alone cannot see:
+# the engine's pilot, rr_pilot_choice below, finds it).
 #: the threshold of a scene of low albedo (and the cap of the rule)
 RR_THRESHOLD_MAX = 0.1
 #: t = RR_SLOPE·(1 − ρ̄) below the cap
