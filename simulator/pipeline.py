@@ -163,10 +163,12 @@ def config_engine(cfg, scene, sensors, device: str | None = None, threads: int |
         engine.set_hero_tables(hero)
     return engine
 
+
 def _roulette_record(found: dict) -> dict:
     """The roulette pilot's finding (Engine.rr_pilot) for the run record."""
     return {"threshold": found["threshold"], "rule": found["rule"], "seconds": found["seconds"],
-            "tried": [{"threshold": t, "relvar_mean": a, "relvar_max": b, "rays_per_sample": r} for t, a, b, r in found["tried"]]}
+            "tried": [{"threshold": t, "relvar_mean": a, "relvar_max": b, "rays_per_sample": r}
+                      for t, a, b, r in found["tried"]]}
 
 
 def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:

@@ -385,7 +385,8 @@ class Engine:
         key = (method, max_depth, component, ids.tobytes(), first_batch, rel_error)
         if key not in self._rr_found:
             tb = time.perf_counter()
-            pick = ids[np.unique(np.linspace(0, len(ids) - 1, min(len(ids), RR_PILOT_SENSORS)).round().astype(np.int64))]
+            spread = np.linspace(0, len(ids) - 1, min(len(ids), RR_PILOT_SENSORS)).round().astype(np.int64)
+            pick = ids[np.unique(spread)]
             count = np.full(len(pick), max(RR_PILOT_SAMPLES, -(-RR_PILOT_TOTAL // len(pick))), np.int64)
             kept = (params.seed, params.count_rays, params.rr_threshold)  # the run's, restored below
             params.seed = (int(params.seed) + 0x5851F42D) & 0x7FFFFFFF

@@ -74,7 +74,6 @@ SH coefficients), in W/m² and lx; see :func:`probe_record`.
 
 from __future__ import annotations
 
-import io
 import json
 import math
 import re
