@@ -22,8 +22,8 @@ Irradiance at a vertex is estimated by the strategies the method enables:
   β (relative to the first vertex) is multiplied by the albedo ρ; while
   β ≥ ``params.rr_threshold`` the path simply goes on, below it Russian roulette
   lets it survive with probability β/rr_threshold and lifts β back to the
-  threshold (a weight window: unbiased, since E[β'] = β), so no fixed bounce
-  limit truncates the light;
+  threshold (a weight window: unbiased, since E[β'] = β), played at a vertex
+  after its next-event estimate, so no fixed bounce limit truncates the light;
 - guided paths (``guide_c`` > 0): the next vertex drawn, with probability c,
   on surface patches a pilot found bright (``sample_guide``), combined with
   the cosine direction by one-sample MIS (see vertex_irradiance).
