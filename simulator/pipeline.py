@@ -163,6 +163,14 @@ def config_engine(cfg, scene, sensors, device: str | None = None, threads: int |
         engine.set_hero_tables(hero)
     return engine
 
+
+def _roulette_record(found: dict) -> dict:
+    """The roulette pilot's finding (Engine.rr_pilot) for the run record."""
+    return {"threshold": found["threshold"], "rule": found["rule"], "seconds": found["seconds"],
+            "tried": [{"threshold": t, "relvar_mean": a, "relvar_max": b, "rays_per_sample": r}
+                      for t, a, b, r in found["tried"]]}
+
+
 def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     """Run a validated config and write its CSV and run record.
 
@@ -348,6 +356,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         "timings_s": {"load": t_read - t0, "plan": t_load - t_read, "setup": t_setup - t_load, "trace": res.wall_s + sum(p.seconds for p in probe_res),
                       "guide": engine.guide.seconds if engine.guide is not None else 0.0, "total": t_end - t0},
         **({} if engine.guide is None else {"guide": engine.guide.to_record()}),
+        **({} if engine.rr_pilot is None else {"roulette": _roulette_record(engine.rr_pilot)}),
         "sensors": len(sensors),
         "triangles": scene.geometry.n_triangles,
         "warnings": _scene_warnings(scene, engine) + list(res.warnings),

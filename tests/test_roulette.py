@@ -72,3 +72,46 @@ def test_furnace_reads_its_closed_form_at_any_threshold(t):
         checked += 1
         assert abs(res.mean[i, ch] - truth) <= 4 * res.stderr[i, ch] + 2e-6 * abs(truth), (t, s.name, res.mean[i, ch], truth)
     assert checked >= 3
+
+
+def test_pilot_lowers_the_threshold_where_the_roulette_is_the_noise():
+    """The threshold pilot (engine.methods.rr_pilot_choice). In the
+    integrating sphere (ρ = 0.8, a point source at the centre) every wall
+    point gets the same direct light, I/R², so next-event estimation adds
+    an almost fixed amount at each vertex and the roulette's own noise is
+    nearly all there is: past the threshold the path goes on with weight t
+    for a geometric number of vertices (mean ρ/(1 − ρ)), so the relative
+    variance per sample is ∝ t² while a path is only ln t/ln ρ vertices
+    longer. The pilot must go below the rule's t = 0.2·(1 − 0.8) = 0.04,
+    each step of 4× cutting variance × rays by well over its margin of 2,
+    down to its last step t/64 = 6.25e-4 in a fixed-budget run; with a 1%
+    target and 32 samples drawn anyway it stops at 0.01, where its noisiest
+    sensor needs 1.96²·relvar/0.01² ≤ 32 samples. In the furnace at ρ = 0.5
+    (emitting walls) a vertex's light varies with the direction drawn, and
+    a lower t only lengthens paths: the rule's 0.1 stays."""
+    cfg_case = case("integrating_sphere")
+    _, scene, sensors, _ = _load_case(cfg_case, default_configs_dir())
+    sensors = [s for s in sensors if s.kind == SensorKind.IRRADIANCE]
+    eng = Engine(scene, sensors)
+    eng.run("path", samples=32, seed=5)
+    p = eng.rr_pilot
+    assert p["rule"] == pytest.approx(0.04, rel=1e-3)
+    assert p["threshold"] == pytest.approx(0.04 / 64, rel=1e-6), p["tried"]
+    costs = [rv * rays for _, rv, _, rays in p["tried"]]
+    assert all(b * 2.0 <= a for a, b in zip(costs, costs[1:])), p["tried"]
+    eng.run("path", samples=32, seed=5, rel_error=0.01, max_samples=32)
+    assert eng.rr_pilot["threshold"] == pytest.approx(0.01, rel=1e-6), eng.rr_pilot["tried"]
+    _, fscene, fsensors = _furnace("rho_0_5")
+    feng = Engine(fscene, [s for s in fsensors if s.kind == SensorKind.IRRADIANCE])
+    feng.run("path", samples=64, seed=5)
+    assert feng.rr_pilot["threshold"] == pytest.approx(0.1, rel=1e-6), feng.rr_pilot["tried"]
+    assert len(feng.rr_pilot["tried"]) == 2
+
+
+def test_no_pilot_with_an_explicit_threshold():
+    """engine.rr_threshold set: the run uses it as it is, no pilot runs."""
+    _, scene, sensors = _furnace("rho_0_9")
+    eng = Engine(scene, [s for s in sensors if s.kind == SensorKind.IRRADIANCE])
+    eng.rr_threshold = 0.3
+    eng.run("path", samples=32, seed=2)
+    assert eng.rr_pilot is None

@@ -28,9 +28,9 @@ from simulator.engine.adaptive import StoppingRule, run_batches
 from simulator.engine.device import DeviceScene, cuda_available, resolve_device, warp, warp_version
 from simulator.engine.fanout import fan_out
 from simulator.engine.methods import (
-    COMPONENTS, GUIDED_METHODS, LIGHT_PICK_MODES, METHOD_FLAGS, light_pick_rule, rr_threshold_rule,
+    COMPONENTS, GUIDED_METHODS, LIGHT_PICK_MODES, METHOD_FLAGS, light_pick_rule, rr_pilot_choice, rr_threshold_rule,
 )
-from simulator.engine.stats import GroupBatchStats, GroupStats, RunningStats
+from simulator.engine.stats import GroupBatchStats, GroupStats, RunningStats, z_for_confidence
 from simulator.errors import UserError
 from simulator.interrupts import StopFlag
 from simulator.scene.model import MAX_PROBE_PIXELS, Scene, Sensor, SensorKind
@@ -57,6 +57,11 @@ PICK_PILOT_SAMPLES = 16
 #: a sensor's own first-vertex pick factor is shrunk toward all sensors'
 #: by this many pseudo-samples (a sensor's 16 pilot samples are few)
 PICK_PRIOR_SAMPLES = 4
+#: the roulette threshold's pilot (methods.rr_pilot_choice): samples per sensor, at least this many in all,
+#: over at most this many sensors (evenly spread over the run's)
+RR_PILOT_SAMPLES = 8
+RR_PILOT_TOTAL = 256
+RR_PILOT_SENSORS = 32
 
 
 @dataclass
@@ -220,6 +225,10 @@ class Engine:
         #: Russian roulette threshold of path throughput; None: methods.rr_threshold_rule
         self.rr_threshold: float | None = None
         self._pick_key: tuple | None = None
+        #: the roulette pilot's findings per (method, depth, component, sensors, target):
+        #: {"threshold", "rule", "tried": [(t, relvar_mean, relvar_max, rays)], "seconds"}
+        self._rr_found: dict[tuple, dict] = {}
+        self.rr_pilot: dict | None = None  #: the roulette pilot's finding for the latest path run (None: none ran)
         self._mask_version = 0
 
     def _upload(self) -> DeviceScene:
@@ -387,6 +396,48 @@ class Engine:
         factors[1:] = np.where(est > 0, got / np.where(est > 0, est, 1.0), overall)
         dev.set_pick_factors(factors)
         self._pick_key = key
+
+    def _prepare_rr(self, params, method: str, max_depth: int, component: str, ids: np.ndarray,
+                    first_batch: int, z: float, rel_error: float | None) -> float:
+        """The Russian roulette threshold for this run: the rule's, lowered
+        where a pilot measures that it pays (``methods.rr_pilot_choice``).
+
+        The pilot draws :data:`RR_PILOT_SAMPLES` samples (at least
+        :data:`RR_PILOT_TOTAL` in all) of up to :data:`RR_PILOT_SENSORS` of
+        the run's sensors per threshold tried, counting rays, on random
+        streams of its own, and is discarded: any threshold leaves the
+        readings unbiased, the pilot only picks the cheaper one. Done once
+        per (method, depth, component, sensors, target); with
+        ``rr_threshold`` set the pilot does not run."""
+        t_rule = rr_threshold_rule(self.scene)[0]
+        key = (method, max_depth, component, ids.tobytes(), first_batch, rel_error)
+        if key not in self._rr_found:
+            tb = time.perf_counter()
+            spread = np.linspace(0, len(ids) - 1, min(len(ids), RR_PILOT_SENSORS)).round().astype(np.int64)
+            pick = ids[np.unique(spread)]
+            count = np.full(len(pick), max(RR_PILOT_SAMPLES, -(-RR_PILOT_TOTAL // len(pick))), np.int64)
+            kept = (params.seed, params.count_rays, params.rr_threshold)  # the run's, restored below
+            params.seed = (int(params.seed) + 0x5851F42D) & 0x7FFFFFFF
+            params.count_rays = 1
+
+            def measure(t: float) -> tuple[float, float, float]:
+                params.rr_threshold = float(t)
+                self.rays_traced = 0
+                _, cnt, mean, m2 = self._launch(params, pick, np.zeros(len(pick), np.int64), count)[:4]
+                n = cnt[:, None].astype(np.float64)
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    rv = np.where(np.abs(mean) > 0, m2 / np.maximum(n - 1, 1) / mean**2, np.nan)
+                rv = np.nanmax(np.where(np.isnan(rv).all(axis=1, keepdims=True), 0.0, rv), axis=1)
+                return float(rv.mean()), float(rv.max()), self.rays_traced / max(1, int(cnt.sum()))
+
+            try:
+                t, tried = rr_pilot_choice(t_rule, measure, first_batch, z, rel_error)
+            finally:
+                params.seed, params.count_rays, params.rr_threshold = kept
+            self.rays_traced = 0
+            self._rr_found[key] = {"threshold": t, "rule": t_rule, "tried": tried, "seconds": time.perf_counter() - tb}
+        self.rr_pilot = self._rr_found[key]
+        return self.rr_pilot["threshold"]
 
     # ------------------------------------------------------------ sensors
 
@@ -592,6 +643,10 @@ class Engine:
         params.pick_light = LIGHT_PICK_MODES[self.light_pick_mode(method)]
         if params.pick_light:
             self._prepare_pick(method, seed, max_depth, component, ids_all)
+        if METHOD_FLAGS[method][3] and params.bounces != 0 and self.rr_threshold is None:
+            params.rr_threshold = self._prepare_rr(params, method, max_depth, component, ids_all,
+                                                   min(samples, max_samples) if rel_error is not None else samples,
+                                                   z_for_confidence(confidence), rel_error)
         self.rays_traced = 0  # shadow and path rays, counted when count_rays
         stats = RunningStats(n_s)
         n_resp = self._dev.n_responses if params.spectral else 0

@@ -15,7 +15,7 @@ per sensor.
 from __future__ import annotations
 
 __all__ = ["METHOD_FLAGS", "GUIDED_METHODS", "MC_METHODS", "READ_METHODS", "METHODS", "COMPONENTS", "LIGHT_PICK_MODES",
-           "light_pick_rule", "rr_threshold_rule"]
+           "light_pick_rule", "rr_threshold_rule", "rr_pilot_choice"]
 
 #: Monte Carlo method → (next-event estimation, cosine directions, MIS, interreflection)
 METHOD_FLAGS = {
@@ -92,14 +92,17 @@ def light_pick_rule(method: str, scene) -> tuple[str, str]:
 #   integrating sphere ρ = 0.8     1.00   3.35  11.9  62.6  199   956   2640  6760
 #
 # (fixed seeds, variance from the readings' own standard errors; a shared
-# 2-core machine, so CPU times were not used.) No single
+# 2-core machine, so CPU times were not used; measured with the roulette
+# before a vertex's next-event estimate, since moved after it: docs/DESIGN.md
+# §Russian roulette.) No single
 # value wins: a room wants 0.1–0.25, an enclosure of high albedo 0.02 or
 # less. The rule t = min(0.1, 0.2·(1 − ρ̄)), at least 0.01, with ρ̄ the
 # scene's area-weighted albedo, is within ~10% of the best on every row but
 # the integrating sphere, where the walls see the lamp from everywhere, so
 # the light each bounce adds by next-event estimation hardly varies and the
 # roulette's own noise is all there is (the rule's 0.04 gains ~5× over 0.1
-# there; 0.005 would gain 60× more, which a rule by albedo alone cannot see).
+# there; 0.005 would gain 60× more, which a rule by albedo alone cannot see:
+# the engine's pilot, rr_pilot_choice below, finds it).
 #: the threshold of a scene of low albedo (and the cap of the rule)
 RR_THRESHOLD_MAX = 0.1
 #: t = RR_SLOPE·(1 − ρ̄) below the cap
@@ -112,11 +115,13 @@ def mean_albedo(scene) -> float:
     """Area-weighted mean albedo ρ̄ of the scene's triangles (0 without any)."""
     import numpy as np
 
+    from simulator.scene.vectors import cross3
+
     g = scene.geometry
     if g.n_triangles == 0:
         return 0.0
     p = g.points[g.triangles]
-    area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+    area = 0.5 * np.linalg.norm(cross3(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
     total = float(area.sum())
     return float((area * g.albedo).sum() / total) if total > 0 else 0.0
 
@@ -127,4 +132,66 @@ def rr_threshold_rule(scene) -> tuple[float, str]:
     rho = mean_albedo(scene)
     t = min(RR_THRESHOLD_MAX, max(RR_THRESHOLD_MIN, RR_SLOPE * (1.0 - rho)))
     rule = f"min({RR_THRESHOLD_MAX:g}, {RR_SLOPE:g}·(1 − ρ̄)), ρ̄ = {rho:.2f}"
-    return t, f"Russian roulette below throughput {t:.3g}: {rule}"
+    return t, f"Russian roulette below throughput {t:.3g}: {rule}, lowered where a pilot measures that it pays"
+
+
+#: the pilot (rr_pilot_choice) tries thresholds t/RR_PILOT_STEP, t/RR_PILOT_STEP², …
+RR_PILOT_STEP = 4.0
+#: … at most this many below the rule's
+RR_PILOT_STEPS = 3
+#: a lower threshold is taken only when it divides variance × rays per sample by this much
+RR_PILOT_GAIN = 2.0
+
+
+def rr_pilot_choice(t_rule: float, measure, first_batch: int | None = None, z: float = 1.96,
+                    rel_error: float | None = None) -> tuple[float, list[tuple[float, float, float, float]]]:
+    """The roulette threshold a pilot measures best, starting from the rule's.
+
+    Parameters
+    ----------
+    t_rule : float
+        The rule's threshold (:func:`rr_threshold_rule`).
+    measure : callable
+        ``measure(t) -> (relvar_mean, relvar_max, rays)``: over the pilot's
+        sensors, the mean and the largest relative variance per sample
+        (stderr²·n/mean²), and rays traced per sample, at threshold ``t``.
+    first_batch : int, optional
+        With ``rel_error``: the samples every sensor draws anyway (an adaptive
+        run's first batch).
+    z, rel_error : float, optional
+        An adaptive run's target z·stderr ≤ rel_error·|mean|.
+
+    Returns
+    -------
+    t : float
+        The threshold chosen.
+    tried : list of (t, relvar_mean, relvar_max, rays)
+        What the pilot measured, in the order tried.
+
+    Notes
+    -----
+    The cost of a reading at equal error is relvar × rays per sample. The
+    threshold is lowered by :data:`RR_PILOT_STEP` while that divides the
+    cost by at least :data:`RR_PILOT_GAIN` (a margin over the pilot's own
+    noise: lowering t only lengthens the paths where the roulette is not
+    most of the noise), at most :data:`RR_PILOT_STEPS` times. In an
+    adaptive run it stops as soon as the pilot's noisiest sensor would meet
+    the target within ``first_batch`` samples, z²·relvar_max/rel_error² ≤
+    first_batch: a lower t could then save no samples, only lengthen them.
+    """
+    def enough(rv_max: float) -> bool:
+        return rel_error is not None and first_batch is not None and z * z * rv_max / rel_error**2 <= first_batch
+
+    t = t_rule
+    rv, rv_max, rays = measure(t)
+    tried = [(t, rv, rv_max, rays)]
+    for _ in range(RR_PILOT_STEPS):
+        if enough(rv_max) or not rv > 0:
+            break
+        t_next = t / RR_PILOT_STEP
+        rv_n, rv_max_n, rays_n = measure(t_next)
+        tried.append((t_next, rv_n, rv_max_n, rays_n))
+        if not rv_n * rays_n * RR_PILOT_GAIN <= rv * rays:
+            break
+        t, rv, rv_max, rays = t_next, rv_n, rv_max_n, rays_n
+    return t, tried

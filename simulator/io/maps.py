@@ -74,7 +74,6 @@ SH coefficients), in W/m² and lx; see :func:`probe_record`.
 
 from __future__ import annotations
 
-import io
 import json
 import math
 import re
@@ -183,28 +182,15 @@ def grid_png(grid, images: dict[str, np.ndarray], channel: str = "Ev_lx", title:
     The colour bar is in ``unit``; axes are metres along ``right`` and ``up``
     from the grid centre; the title gives min, mean, max and uniformity.
     """
-    from matplotlib.figure import Figure  # no pyplot: no global state, no display
+    from simulator.io.map_png import map_png
 
     lx = images[channel]
     lo, mean, hi, uni = _stats(lx)
     w, h = grid.size
-    fig = Figure(figsize=(6.4, 4.8), dpi=100, layout="constrained")
-    ax = fig.add_subplot()
+    lines = [f"{grid.name}: {title}, {grid.nx} x {grid.ny} cells",
+             f"min / mean / max: {lo:.4g} / {mean:.4g} / {hi:.4g} {unit}", f"uniformity (min/mean): {uni:.3f}"]
     # row 0 is the far end along up: drawn on top
-    im = ax.imshow(lx, cmap="viridis", origin="upper", extent=(-w / 2, w / 2, -h / 2, h / 2), interpolation="nearest")
-    cbar = fig.colorbar(im, ax=ax)
-    cbar.set_label(f"{title} ({unit})")
-    ax.set_xlabel("along right (m)")
-    ax.set_ylabel("along up (m)")
-    ax.set_title(
-        f"{grid.name}: {title}, {grid.nx} x {grid.ny} cells\n"
-        f"min / mean / max: {lo:.4g} / {mean:.4g} / {hi:.4g} {unit}\n"
-        f"uniformity (min/mean): {uni:.3f}",
-        fontsize=10,
-    )
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", metadata={"Software": None})
-    return buf.getvalue()
+    return map_png(lx, (w, h), lines, f"{title} ({unit})", "along right (m)", "along up (m)")
 
 
 def grid_outputs(csv_path: Path, grids: list, rows: list, meta: dict[str, str],

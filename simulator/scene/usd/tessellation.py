@@ -10,6 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from simulator.scene.usd.transforms import _unit
+from simulator.scene.vectors import cross3
 
 
 def _cube_polygons(size: float):
@@ -207,14 +208,14 @@ def _triangulate_faces(points: np.ndarray, counts: np.ndarray,
 
 def _newell_normal(poly: np.ndarray) -> np.ndarray:
     """Newell's area vector of polygons (..., n, 3): robust for non-planar faces, points along the winding."""
-    return 0.5 * np.cross(poly, np.roll(poly, -1, axis=-2)).sum(axis=-2)
+    return 0.5 * cross3(poly, np.roll(poly, -1, axis=-2)).sum(axis=-2)
 
 
 def _convex_faces(poly: np.ndarray) -> np.ndarray:
     """True where a polygon (F, n, 3) turns the same way as its area normal at every vertex."""
     normal = _newell_normal(poly)
     edge = np.roll(poly, -1, axis=1) - poly  # e_i = p_{i+1} - p_i
-    turn = np.cross(np.roll(edge, 1, axis=1), edge)  # at vertex i: e_{i-1} x e_i
+    turn = cross3(np.roll(edge, 1, axis=1), edge)  # at vertex i: e_{i-1} x e_i
     dots = np.einsum("fni,fi->fn", turn, normal)
     tol = 1e-12 * np.linalg.norm(turn, axis=-1) * np.linalg.norm(normal, axis=-1)[:, None]
     return np.all(dots >= -tol, axis=1)
@@ -265,7 +266,7 @@ def _ear_clip(poly: np.ndarray) -> tuple[np.ndarray, bool]:
 def _parallelogram_areas(points: np.ndarray, tris: np.ndarray) -> np.ndarray:
     """``|(p1 - p0) x (p2 - p0)|`` per triangle (T,): twice each triangle's area."""
     p = points[tris]
-    return np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+    return np.linalg.norm(cross3(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
 
 
 def _drop_zero_area(points: np.ndarray, tris: np.ndarray) -> np.ndarray:
