@@ -131,3 +131,23 @@ def test_patch_width_axis_is_right_handed():
     right = patch_width_axis(up, normal)
     np.testing.assert_allclose(right, [1.0, 0.0, 0.0], atol=1e-15)
     np.testing.assert_allclose(np.cross(right, up), normal, atol=1e-15)
+
+
+def test_a_cloned_trace_record_is_its_own():
+    """Each CPU worker of a guide pilot tallies into a row of its own
+    (``tally_row`` on its own copy of the trace parameters). ``copy.copy``
+    of a Warp struct shares the record the kernel reads, so every worker
+    launched with the last row set; the engine's clone must not."""
+    from simulator.engine.device import warp
+    from simulator.engine.driver import _clone_struct
+
+    warp()
+    from simulator.kernels.records import TraceParams
+
+    p = TraceParams()
+    p.tally_row, p.rr_threshold = 0, 0.1
+    q = _clone_struct(p)
+    q.tally_row = 5
+    assert (p.tally_row, p._ctype.tally_row) == (0, 0)
+    assert (q.tally_row, q._ctype.tally_row) == (5, 5)
+    assert abs(q.rr_threshold - 0.1) < 1e-7

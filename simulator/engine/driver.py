@@ -14,7 +14,6 @@ Sensors (irradiance, radiance, patch): each kernel thread draws a block of
 
 from __future__ import annotations
 
-import copy
 import os
 import threading
 import time
@@ -489,7 +488,7 @@ class Engine:
                 prm = params
                 if params.tally:
                     with lock:
-                        prm = copy.copy(params)
+                        prm = _clone_struct(params)
                         prm.tally_row = next(rows)
                 wp.launch(
                     self._K.estimate_kernel,
@@ -993,3 +992,13 @@ def _split_batch(ids: np.ndarray, first: np.ndarray, count: np.ndarray, max_samp
     if cur[0]:
         out.append(cur)
     return [(np.asarray(a, np.int64), np.asarray(b, np.int64), np.asarray(c, np.int64)) for a, b, c in out]
+
+
+def _clone_struct(rec):
+    """A Warp struct's own copy: ``copy.copy`` shares the device-side record,
+    so a field set on the copy changed the original too (a pilot's workers
+    then tallied into one row)."""
+    out = type(rec)()
+    for name in rec._cls.vars:
+        setattr(out, name, getattr(rec, name))
+    return out
