@@ -118,6 +118,7 @@ def run_bench(configs: list[Path], device: str = "cpu", samples: int = 4096, cap
             if m in METHOD_FLAGS and not METHOD_FLAGS[m][3] and reflects:
                 row = BenchRow(path.stem, m, len(sensors), None, None, None, False, "biased: ignores interreflection")
             elif m in ("analytic", "exact"):
+                engine.run(m, samples=1, seed=1)  # warm-up: importing Warp and loading the kernels is not timed
                 t0 = time.perf_counter()
                 engine.run(m, samples=1, seed=1)
                 dt = time.perf_counter() - t0
