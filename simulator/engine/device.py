@@ -209,15 +209,20 @@ class DeviceScene:
         if tables is None:
             one = np.zeros((1, 1), np.float32)
             refl, face, emis, weights, colour = one, np.zeros(1, np.int32), one, one, one
+            face_em = np.full(1, -1, np.int32)
         else:
             refl, emis, weights, colour = (np.ascontiguousarray(a, np.float32) for a in
                                            (tables.reflectance, tables.emission, tables.weights, tables.colour))
             face = np.ascontiguousarray(tables.face_reflectance, np.int32)
             if not len(face):
                 face = np.zeros(1, np.int32)
+            face_em = np.ascontiguousarray(getattr(tables, "face_emission", np.zeros(0)), np.int32)
+            if len(face_em) != len(face):  # none coloured (or no triangles): every face its record's row
+                face_em = np.full(len(face), -1, np.int32)
         rec.spectral_reflectance = wp.array2d(refl, dtype=float)
         rec.spectral_face = wp.array(face, dtype=wp.int32)
         rec.spectral_emission = wp.array2d(emis, dtype=float)
+        rec.spectral_face_emission = wp.array(face_em, dtype=wp.int32)
         rec.response_weights = wp.array2d(weights, dtype=float)
         rec.response_lanes = wp.zeros(1, dtype=wp.vec4)
         rec.colour_weights = wp.array2d(colour, dtype=float)

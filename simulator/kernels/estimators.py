@@ -126,6 +126,26 @@ def light_contribution(scene: SceneRec, params: TraceParams, li: int, value: wp.
 
 
 @wp.func
+def emissive_contribution(scene: SceneRec, params: TraceParams, face: int, value: wp.vec2, tint: wp.vec4) -> wp.vec2:
+    """:func:`light_contribution` of emissive triangle ``face`` (its record
+    ``params.emissive_light``). Spectral transport reads the face's own
+    emission row, ``scene.spectral_face_emission[face]`` (a coloured
+    ``emissiveColor``), where it has one (≥ 0), else the record's; the
+    light-group tally stays the record's. Grey transport is
+    :func:`light_contribution` unchanged."""
+    li = params.emissive_light
+    if params.spectral == 0 or face < 0:
+        return light_contribution(scene, params, li, value, tint)
+    row = scene.spectral_face_emission[face]
+    if row < 0:
+        row = li
+    v = spectral_contribution(scene, params, row, value, tint)
+    if params.group_tally != 0 and li >= 0:
+        tally_group(params, scene.light_group[li], v)
+    return v
+
+
+@wp.func
 def light_contribution_dir(scene: SceneRec, params: TraceParams, li: int, value: wp.vec2, tint: wp.vec4,
                            wi: wp.vec3) -> wp.vec2:  # fmt: skip
     """:func:`light_contribution` for light arriving along ``wi`` (toward the light): a dome split into
@@ -233,7 +253,11 @@ def vertex_irradiance(
                         count_ray(scene, params)
                         if shadow_ray_clear(scene, o, p, li, ls):
                             got = ls.value
-                            c_light = light_contribution_dir(scene, params, li, (weight * w) * ls.value, tint, ls.wi)
+                            c_light = wp.vec2(0.0, 0.0)
+                            if params.spectral != 0 and li == params.emissive_light:
+                                c_light = emissive_contribution(scene, params, ls.tri, (weight * w) * ls.value, tint)
+                            else:
+                                c_light = light_contribution_dir(scene, params, li, (weight * w) * ls.value, tint, ls.wi)
                             total += c_light
                             if params.tally != 0 and depth > 0:
                                 tally_patch(scene, params, prev_row, cur_face, p, c_light)
@@ -315,7 +339,7 @@ def vertex_irradiance(
             if params.mis != 0 and params.nee != 0 and params.emissive_light >= 0:
                 w = power_heuristic(pdf_b, pick_scale(scene, params, pk, params.emissive_light, p, n, depth)
                                     * pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
-            total += light_contribution(scene, params, params.emissive_light, (w_dir * w) * le, tint)
+            total += emissive_contribution(scene, params, face, (w_dir * w) * le, tint)
         if params.bounces >= 0 and depth >= params.bounces:
             break
         # -- reflect: L_o = ρ/π·E, so the next vertex's weight is w_dir·ρ/π
@@ -367,7 +391,7 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     if direct:
         le = tri_emitted(scene, face, cos_view)
         if le[0] > 0.0 or le[1] > 0.0:
-            total += light_contribution(scene, params, params.emissive_light, le, params.tint)
+            total += emissive_contribution(scene, params, face, le, params.tint)
     refl = surface_albedo(scene, params, face, params.tint)
     if refl.rho > 0.0:
         n = wp.where(cos_view > 0.0, ng, -ng)

@@ -297,6 +297,12 @@ class Geometry:
     emissive_spectrum_authored : bool
         ``emissive_spectrum`` came from ``probesim:spectrum``, which a run's
         ``[spectra] lights`` does not override.
+    emission_rgb : ndarray, shape (T, 3), float64, or None
+        The linear sRGB ``emissiveColor`` each emitting triangle's
+        ``emission`` is the BT.709 grey of, (1, 1, 1) where it is grey; for
+        spectral transport (the emissive spectrum × its uplift,
+        :func:`simulator.spectra.sources.colour_emission`). None: grey
+        everywhere.
     """
 
     points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
@@ -311,6 +317,7 @@ class Geometry:
     reflectances: list = field(default_factory=list)
     emissive_spectrum: str | float | None = None
     emissive_spectrum_authored: bool = False
+    emission_rgb: np.ndarray | None = None
 
     @property
     def n_triangles(self) -> int:

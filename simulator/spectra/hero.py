@@ -24,6 +24,11 @@ the sample's response. Tables, one row per item, 401 columns:
   sample adds. Each shape is scaled to the stage's stated column (its
   photometric value with ``light_units = "photometric"``, radiometric
   otherwise), as :func:`simulator.spectra.sources.spectral_emission` does;
+  then one row per distinct coloured ``emissiveColor``
+  (``Geometry.emission_rgb``): the emissive record's shape times the
+  colour's uplift (:func:`simulator.spectra.sources.colour_emission`),
+  scaled the same way, so a face keeps its stated value; a triangle's row
+  (``face_emission``) is −1 where it uses its record's;
 - response weights ``W``: radiometric and photopic first (the engine's
   two channels), then the run's other responses;
 - colour weights: the ``W`` of linear sRGB luminance channels,
@@ -64,8 +69,9 @@ class HeroTables:
         ρ(λ) of each distinct surface colour, in [0, 1].
     face_reflectance : ndarray, shape (T,), int32
         Row of ``reflectance`` of each triangle.
-    emission : ndarray, shape (L, 401)
-        Per light record: spectral density per unit radiometric value (nm⁻¹).
+    emission : ndarray, shape (L + C, 401)
+        Per light record, then per distinct emissive colour: spectral density
+        per unit radiometric value (nm⁻¹).
     weights : ndarray, shape (R, 401)
         Per response: the per-lane weight ``W = 400 q / w`` (see module docstring).
     responses : list of Response
@@ -78,6 +84,9 @@ class HeroTables:
         emissive triangles of several spectra).
     measured : list of str
         File names of the measured reflectance rows (the last rows of ``reflectance``).
+    face_emission : ndarray, shape (T,), int32
+        Row of ``emission`` of each emitting triangle with a coloured
+        ``emissiveColor``; −1 elsewhere (the emissive record's row).
     """
 
     reflectance: np.ndarray
@@ -88,6 +97,7 @@ class HeroTables:
     notes: list[str] = field(default_factory=list)
     colour: np.ndarray = field(default_factory=lambda: colour_weights())
     measured: list[str] = field(default_factory=list)
+    face_emission: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int32))
 
 
 def response_weights(resp) -> np.ndarray:
@@ -151,6 +161,37 @@ def _emissive_base(geometry, default_spectrum, declared):
     return declared if declared is not None else emitter_spectrum(default_spectrum)
 
 
+def _emissive_colour_rows(geometry, emitting, base, stated: int, first_row: int):
+    """Rows and per-triangle row indices of the coloured emissive faces.
+
+    Returns ``(rows, face_row)``: one row per distinct chromaticity of
+    ``Geometry.emission_rgb`` among the ``emitting`` triangles that are not
+    grey, ``colour_emission(c, base)`` scaled to the stated column of the
+    first such face (:func:`_per_radiometric`; the scale of ``c`` drops out,
+    so ``c`` is taken relative to its largest channel), and (T,) int32:
+    ``first_row + k`` for a face of colour k, −1 for the others.
+    """
+    from simulator.spectra.sources import colour_emission
+
+    n_tri = geometry.n_triangles
+    face_row = np.full(n_tri, -1, np.int32)
+    rgb = getattr(geometry, "emission_rgb", None)
+    if rgb is None or len(rgb) != n_tri or not len(emitting):
+        return [], face_row
+    c = np.asarray(rgb, float)[emitting]
+    top = np.max(np.abs(c), axis=1)
+    coloured = np.ptp(c, axis=1) > 1e-6 * np.maximum(top, 1e-300)
+    if not coloured.any():
+        return [], face_row
+    tris = emitting[coloured]
+    key = np.round(c[coloured] / top[coloured, None], 9)
+    colours, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    em = np.asarray(geometry.emission, float)
+    rows = [_per_radiometric(colour_emission(col, base), em[tris[i]], stated) for col, i in zip(colours, first)]
+    face_row[tris] = first_row + np.asarray(inverse, np.int32).reshape(-1)
+    return rows, face_row
+
+
 def hero_tables(scene, light_units: str, default_spectrum, responses=(), declared=None) -> HeroTables:
     """The tables for ``scene`` (see :class:`HeroTables`).
 
@@ -195,9 +236,12 @@ def hero_tables(scene, light_units: str, default_spectrum, responses=(), declare
     rows = [_per_radiometric(light_spectrum(l, default_spectrum, declared), l.emission, stated) for l in scene.lights]
     em = np.asarray(g.emission, float).reshape(-1, 2)
     emitting = np.flatnonzero(np.any(em > 0, axis=1)) if n_tri else np.zeros(0, int)
+    face_emission = np.full(n_tri, -1, np.int32)
     if len(emitting):
         base = _emissive_base(g, default_spectrum, declared)
         rows.append(_per_radiometric(base, em[emitting[0]], stated))
+        coloured_rows, face_emission = _emissive_colour_rows(g, emitting, base, stated, len(rows))
+        rows += coloured_rows
         k = em[emitting, 1] / np.where(em[emitting, 0] > 0, em[emitting, 0], np.inf)
         k = k[k > 0]
         if k.size and np.ptp(k) > 1e-9 * k.max():
@@ -213,4 +257,5 @@ def hero_tables(scene, light_units: str, default_spectrum, responses=(), declare
         responses=resp,
         notes=notes,
         measured=measured_names,
+        face_emission=face_emission,
     )

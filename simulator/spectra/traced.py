@@ -26,11 +26,11 @@ _COLOURED = "coloured albedo/emission/light colour reduced to luminance grey: "
 
 def traced_warning(warning: str) -> str:
     """A stage warning as it reads in a spectrally traced run: the reader's grey reduction of colours
-    no longer applies to albedos and light colours, which the kernels trace spectrally."""
+    no longer applies to albedos, emissiveColor and light colours, which the kernels trace spectrally."""
     if not warning.startswith(_COLOURED):
         return warning
-    return ("coloured albedo or light color traced with hero wavelengths (an emissiveColor's colour and "
-            "texture colours still read as luminance grey): " + warning[len(_COLOURED):])
+    return ("coloured albedo, emissiveColor or light color traced with hero wavelengths (texture colours "
+            "still read as luminance grey): " + warning[len(_COLOURED):])
 
 
 def run_hero_tables(cfg, scene):

@@ -127,6 +127,7 @@ class SceneRec:
     spectral_reflectance: wp.array2d(dtype=float)  # (colours × 401): ρ(λ)
     spectral_face: wp.array(dtype=wp.int32)  # per triangle: its row of spectral_reflectance
     spectral_emission: wp.array2d(dtype=float)  # (light records × 401): density per unit radiometric value
+    spectral_face_emission: wp.array(dtype=wp.int32)  # per triangle: its coloured row of spectral_emission, −1: its record's
     response_weights: wp.array2d(dtype=float)  # (responses × 401): a lane's weight 400·q/w
     response_lanes: wp.array(dtype=wp.vec4)  # per kernel thread: this sample's spectral density per hero lane
     colour_weights: wp.array2d(dtype=float)  # (3 × 401): a lane's weight of linear sRGB (cd/m²), for probe maps

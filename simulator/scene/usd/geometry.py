@@ -48,6 +48,7 @@ class _GeometryBuilder:
         self._albedo: list[np.ndarray] = []
         self._albedo_rgb: list[np.ndarray] = []
         self._reflectance_id: list[np.ndarray] = []
+        self._emission_rgb: list[np.ndarray] = []
         self._emission: list[np.ndarray] = []
         self._two_sided: list[np.ndarray] = []
         self._prim: list[np.ndarray] = []
@@ -55,10 +56,11 @@ class _GeometryBuilder:
         self._n_points = 0
 
     def add(self, name: str, points: np.ndarray, tris: np.ndarray, albedo,
-            emission, two_sided: bool, albedo_rgb=None, reflectance_id=None) -> None:
+            emission, two_sided: bool, albedo_rgb=None, reflectance_id=None, emission_rgb=None) -> None:
         """Add one prim's world triangles; ``albedo`` (T,) or scalar, ``emission`` (T, 2) or (2,),
         ``albedo_rgb`` (T, 3) or (3,), default grey ``(a, a, a)``; ``reflectance_id`` (T,) or scalar,
-        default -1 (no measured reflectance)."""
+        default -1 (no measured reflectance); ``emission_rgb`` (T, 3) or (3,), default (1, 1, 1)
+        (the emission's colour is the shared spectrum's)."""
         t = len(tris)
         if t == 0:
             return
@@ -73,6 +75,8 @@ class _GeometryBuilder:
         rid = -1 if reflectance_id is None else reflectance_id
         self._reflectance_id.append(np.broadcast_to(np.asarray(rid, np.int32), (t,)))
         self._emission.append(np.broadcast_to(np.asarray(emission, float), (t, 2)))
+        self._emission_rgb.append(np.broadcast_to(np.asarray(1.0 if emission_rgb is None else emission_rgb, float),
+                                                  (t, 3)))
         self._two_sided.append(np.full(t, bool(two_sided)))
         self._prim.append(np.full(t, index, np.int32))
 
@@ -82,6 +86,7 @@ class _GeometryBuilder:
         if not self._tris:
             return Geometry()
         ids = np.concatenate(self._reflectance_id).astype(np.int32)
+        emission_rgb = np.concatenate(self._emission_rgb)
         spectra = list(dict.fromkeys(emissive_spectra))
         one = spectra[0] if len(spectra) == 1 else (None, False)
         return Geometry(
@@ -97,6 +102,7 @@ class _GeometryBuilder:
             prim=np.concatenate(self._prim),
             prim_names=list(self._names),
             albedo_rgb=np.concatenate(self._albedo_rgb),
+            emission_rgb=emission_rgb if np.any(emission_rgb != 1.0) else None,
         )
 
 
@@ -106,8 +112,9 @@ class _Part:
 
     ``points`` (P, 3) and ``tris`` (T, 3) are local (stage units, the prim's
     own frame); ``tris`` already carries the ``leftHanded`` re-winding.
-    ``albedo`` (T,), ``albedo_rgb`` (T, 3) and ``emission`` (T, 2) are per
-    triangle (GeomSubsets may bind different materials to different faces).
+    ``albedo`` (T,), ``albedo_rgb`` (T, 3), ``emission`` (T, 2) and
+    ``emission_rgb`` (T, 3) are per triangle (GeomSubsets may bind
+    different materials to different faces).
     """
 
     name: str
@@ -119,6 +126,7 @@ class _Part:
     is_light: bool
     albedo_rgb: np.ndarray | None = None
     reflectance_id: np.ndarray | None = None
+    emission_rgb: np.ndarray | None = None
 
 
 def _read_gprim(ctx: _Context, prim: Usd.Prim, geo: _GeometryBuilder) -> None:
@@ -141,12 +149,12 @@ def _gprim_part(ctx: _Context, prim: Usd.Prim) -> _Part | None:
     if is_light:
         surface = _geometry_light_surface(ctx, prim)
         faces = (np.full(n_faces, surface[0]), np.zeros((n_faces, 2)), np.ones(n_faces, bool),
-                 np.tile(surface[2], (n_faces, 1)), np.full(n_faces, surface[3], np.int32))
+                 np.tile(surface[2], (n_faces, 1)), np.full(n_faces, surface[3], np.int32), np.ones((n_faces, 3)))
     else:
         faces = _face_surfaces(ctx, prim, n_faces)
     if faces is None:  # opacity 0 everywhere: it lets light through
         return None
-    albedo, emission, keep, albedo_rgb, curve = faces
+    albedo, emission, keep, albedo_rgb, curve, emission_rgb = faces
     tris, fanned, face_of = _triangulate_faces(points, counts, indices)
     if fanned:
         ctx.warn(f"{prim.GetPath()}: {fanned} self-intersecting or non-planar face(s) fan-triangulated")
@@ -157,12 +165,13 @@ def _gprim_part(ctx: _Context, prim: Usd.Prim) -> _Part | None:
         tris = tris[:, [0, 2, 1]]
     return _Part(name=str(prim.GetPath()), points=points, tris=tris, albedo=albedo[face_of],
                  emission=emission[face_of], two_sided=bool(gprim.GetDoubleSidedAttr().Get(ctx.time)),
-                 is_light=is_light, albedo_rgb=albedo_rgb[face_of], reflectance_id=curve[face_of])
+                 is_light=is_light, albedo_rgb=albedo_rgb[face_of], reflectance_id=curve[face_of],
+                 emission_rgb=emission_rgb[face_of])
 
 
 def _face_surfaces(ctx: _Context, prim: Usd.Prim, n_faces: int):
-    """Per-face ``(albedo (F,), emission (F, 2), kept (F,), albedo colour (F, 3), reflectance id (F,))`` of a
-    gprim; None when nothing is kept.
+    """Per-face ``(albedo (F,), emission (F, 2), kept (F,), albedo colour (F, 3), reflectance id (F,),
+    emission colour (F, 3))`` of a gprim; None when nothing is kept.
 
     The prim's own bound material (or displayColor) covers every face; each
     ``GeomSubset`` of the ``materialBind`` family with a material bound to
@@ -175,10 +184,11 @@ def _face_surfaces(ctx: _Context, prim: Usd.Prim, n_faces: int):
         if base is None:
             return None
         return (np.full(n_faces, base[0]), np.tile(np.asarray(base[1], float), (n_faces, 1)), np.ones(n_faces, bool),
-                np.tile(base[2], (n_faces, 1)), np.full(n_faces, base[3], np.int32))
+                np.tile(base[2], (n_faces, 1)), np.full(n_faces, base[3], np.int32), np.tile(base[4], (n_faces, 1)))
     albedo = np.full(n_faces, base[0] if base else 0.0)
     albedo_rgb = np.tile(base[2] if base else np.zeros(3), (n_faces, 1))
     curve = np.full(n_faces, base[3] if base else -1, np.int32)
+    emission_rgb = np.tile(base[4] if base else np.ones(3), (n_faces, 1))
     emission = np.tile(np.asarray(base[1] if base else (0.0, 0.0), float), (n_faces, 1))
     keep = np.full(n_faces, base is not None)
     for subset in subsets:
@@ -195,8 +205,8 @@ def _face_surfaces(ctx: _Context, prim: Usd.Prim, n_faces: int):
             keep[faces] = False
             continue
         albedo[faces], emission[faces], keep[faces], albedo_rgb[faces] = surface[0], surface[1], True, surface[2]
-        curve[faces] = surface[3]
-    return (albedo, emission, keep, albedo_rgb, curve) if keep.any() else None
+        curve[faces], emission_rgb[faces] = surface[3], surface[4]
+    return (albedo, emission, keep, albedo_rgb, curve, emission_rgb) if keep.any() else None
 
 
 def _add_placed(ctx: _Context, prim: Usd.Prim, part: _Part, a: np.ndarray, t: np.ndarray,
@@ -232,7 +242,8 @@ def _add_placed(ctx: _Context, prim: Usd.Prim, part: _Part, a: np.ndarray, t: np
             emission[mine] = _geometry_light_emission(ctx, prim, world, tris[mine])
     rgb = None if part.albedo_rgb is None else part.albedo_rgb[per_tri]
     rid = None if part.reflectance_id is None else part.reflectance_id[per_tri]
-    geo.add(name, world, tris, part.albedo[per_tri], emission, part.two_sided, rgb, rid)
+    e_rgb = None if part.emission_rgb is None or part.is_light else part.emission_rgb[per_tri]
+    geo.add(name, world, tris, part.albedo[per_tri], emission, part.two_sided, rgb, rid, e_rgb)
 
 
 def _gprim_polygons(ctx: _Context, prim: Usd.Prim):

@@ -65,14 +65,16 @@ _IGNORED_DEFAULTS = {
 
 
 def _surface(ctx: _Context, prim: Usd.Prim,
-             bind_prim: Usd.Prim | None = None) -> tuple[float, tuple[float, float], np.ndarray, int] | None:
-    """``(albedo, emission pair, albedo colour (3,), reflectance id)`` of a gprim, or None when opacity 0
-    removes it.
+             bind_prim: Usd.Prim | None = None) -> tuple[float, tuple[float, float], np.ndarray, int, np.ndarray] | None:
+    """``(albedo, emission pair, albedo colour (3,), reflectance id, emission colour (3,))`` of a gprim, or
+    None when opacity 0 removes it.
 
     ``bind_prim`` (default ``prim``) is where the material binding is
     resolved: a GeomSubset of ``prim`` for the subset's faces. The
     reflectance id indexes ``ctx.reflectances`` (a measured curve, whose
-    grey is then the albedo), -1 without one.
+    grey is then the albedo), -1 without one. The emission colour is the
+    linear sRGB ``emissiveColor`` whose grey the pair carries, (1, 1, 1)
+    where it is grey (:func:`_emission_colour`).
     """
     inputs = _material_inputs(ctx, prim if bind_prim is None else bind_prim)
     if inputs is None:
@@ -95,7 +97,16 @@ def _surface(ctx: _Context, prim: Usd.Prim,
     if radiance > 0.0:
         ctx.emissive_spectra[(None, False)] = None
     colour = _albedo_colour(inputs, albedo) if curve < 0 else np.full(3, albedo)
-    return albedo, ctx.emission(radiance), colour, curve
+    return albedo, ctx.emission(radiance), colour, curve, _emission_colour(rgb, radiance)
+
+
+def _emission_colour(rgb, radiance: float) -> np.ndarray:
+    """The linear sRGB ``emissiveColor`` of a face, shape (3,), for spectral transport: the colour itself
+    where it is not grey (its BT.709 grey is the face's radiance), else (1, 1, 1), the shared spectrum."""
+    c = np.atleast_1d(np.asarray(rgb, float))
+    if c.size != 3 or radiance <= 0.0 or not _not_uniform(np.ptp(c), float(np.max(np.abs(c)))):
+        return np.ones(3)
+    return c.copy()
 
 
 def _measured_reflectance(ctx: _Context, material: UsdShade.Material, shader: UsdShade.Shader) -> int:

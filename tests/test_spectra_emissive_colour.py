@@ -1,0 +1,197 @@
+"""Coloured emissive geometry in spectral transport: each face keeps its ``emissiveColor``'s spectrum.
+
+A UsdPreviewSurface ``emissiveColor`` c (linear sRGB) on a stage in
+photometric units states the face's luminance L_v = Y(c) (BT.709 grey, cd/m²);
+its spectrum is the emissive record's white shape (D65 here) times the
+Mallett–Yuksel uplift of c, ``S_c = colour_emission(c, D65)``
+(simulator.spectra.sources), scaled so that K_m ∫ S_c ȳ dλ = L_v. A response
+r (quadrature vector q_r, simulator.spectra.responses) of light straight from
+the face is then the photopic reading times
+
+    k_r(c) = (q_r · S_c) / (q_photopic · S_c),
+
+the ratio of the response integrals of S_c; the grey reduction (every face
+D65) would give k_r(D65) instead. The panel's illuminance below it is the
+closed form E_v = L_v · ∫ cos θ dω over the polygon (Lambert's contour formula,
+simulator.reference.closed_forms.polygon_irradiance), and a radiance meter
+whose cone lies inside a face reads L_v exactly in lux terms (cd/m²).
+"""
+
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from simulator.config.loader import load_config
+from simulator.pipeline import run
+from simulator.reference.closed_forms import polygon_irradiance
+from simulator.spectra import responses as R, sources
+
+NAMES = ("par", "melanopic_edi")
+RED = (1.0, 0.05, 0.02)
+GREEN = (0.03, 1.0, 0.05)
+
+
+def _panel(name: str, x0: float, x1: float, rgb, scale: float) -> str:
+    """A 1 m-wide quad in z = 2 m from x0 to x1, wound so its emitting front face looks down (−Z), with its
+    own material of emissiveColor ``scale · rgb`` and diffuseColor 0 (it reflects nothing)."""
+    c = ", ".join(f"{scale * v:g}" for v in rgb)
+    return (f'    def Mesh "{name}" (\n        prepend apiSchemas = ["MaterialBindingAPI"]\n    )\n    {{\n'
+            f'        int[] faceVertexCounts = [4]\n        int[] faceVertexIndices = [0, 1, 2, 3]\n'
+            f'        point3f[] points = [({x0}, -0.5, 2), ({x0}, 0.5, 2), ({x1}, 0.5, 2), ({x1}, -0.5, 2)]\n'
+            f'        uniform bool doubleSided = 0\n        rel material:binding = </World/M{name}>\n    }}\n'
+            f'    def Material "M{name}"\n    {{\n'
+            f'        token outputs:surface.connect = </World/M{name}/S.outputs:surface>\n'
+            f'        def Shader "S"\n        {{\n            uniform token info:id = "UsdPreviewSurface"\n'
+            f'            color3f inputs:diffuseColor = (0, 0, 0)\n            color3f inputs:emissiveColor = ({c})\n'
+            f'            token outputs:surface\n        }}\n    }}\n')
+
+
+def _stage(tmp: Path, panels) -> Path:
+    p = tmp / "panels.usda"
+    body = "".join(_panel(*a) for a in panels)
+    p.write_text('#usda 1.0\n(\n    metersPerUnit = 1\n    upAxis = "Z"\n    defaultPrim = "World"\n)\n'
+                 f'def Xform "World"\n{{\n{body}}}\n')
+    return p
+
+
+def _config(tmp: Path, stage: Path, sensors: str, samples: int, responses=NAMES) -> Path:
+    p = tmp / "run.toml"
+    names = ", ".join(f'"{n}"' for n in responses)
+    p.write_text(f'stage = "{stage.as_posix()}"\n\n[simulation]\nmethod = "path"\nsamples = {samples}\nseed = 3\n'
+                 f'{sensors}\n[output]\ncsv = "out/panels.csv"\nresponses = [{names}]\n')
+    return p
+
+
+def _irradiance_sensor(name: str, x: float) -> str:
+    return f'[[sensor]]\nname = "{name}"\nkind = "irradiance"\nposition = [{x}, 0, 0]\nnormal = [0, 0, 1]\n'
+
+
+def _meter(name: str, x: float) -> str:
+    return (f'[[sensor]]\nname = "{name}"\nkind = "radiance"\nposition = [{x}, 0, 0]\ndirection = [0, 0, 1]\n'
+            'half_angle_deg = 5.0\n')
+
+
+def _rows(out) -> dict:
+    with open(out.csv_path, newline="") as f:
+        return {r["sensor"]: r for r in csv.DictReader(f)}
+
+
+def _ratio(rgb, name: str) -> float:
+    """k_r(c) = (q_r · S_c)/(q_photopic · S_c), S_c = colour_emission(c, D65) (rgb None: D65 itself)."""
+    d65 = sources.cie_illuminant("D65")
+    s = d65 if rgb is None else sources.colour_emission(rgb, d65)
+    return float(R.response(name).of(s.values)) / float(R.response("photopic").of(s.values))
+
+
+def _value(row: dict, name: str, quantity: str) -> tuple[float, float]:
+    col, col_se = R.response(name).columns(quantity)
+    return float(row[col]), float(row[col_se])
+
+
+def _luminance(rgb) -> float:
+    """BT.709 grey Y of a linear sRGB colour (the reader's stated cd/m² of emissiveColor ``rgb``)."""
+    return float(np.dot([0.2126, 0.7152, 0.0722], rgb))
+
+
+@pytest.fixture(scope="module")
+def red_run(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("red_panel")
+    stage = _stage(tmp, [("Red", -0.5, 0.5, RED, 400.0)])
+    out = run(load_config(_config(tmp, stage, _irradiance_sensor("below", 0.0) + _meter("meter", 0.0), 40000)),
+              log=lambda *a: None)
+    return out, _rows(out)
+
+
+def test_a_red_panel_reads_its_own_spectrum_below_it(red_run):
+    """A 1 m × 1 m panel of emissiveColor 400·(1, 0.05, 0.02) 2 m above an upward irradiance sensor: the plan
+    traces hero wavelengths; illuminance is the closed form L_v ∫cos θ dω (L_v = 400·Y(c) cd/m²), and PPFD and
+    melanopic EDI are that illuminance times k_r(c) of S_c = colour_emission(c, D65), each within 4 standard
+    errors; the grey reduction's k_r(D65) lies more than 20 standard errors away (red light: about 1.9× the
+    PPFD per lux of D65 and a fifth of its melanopic EDI)."""
+    out, rows = red_run
+    assert out.record["plan"]["transport"] != "grey"
+    row = rows["below"]
+    lv = 400.0 * _luminance(RED)
+    assert out.scene.geometry.emission[:, 1] == pytest.approx(lv, rel=1e-9)
+    verts = [(-0.5, -0.5, 2), (-0.5, 0.5, 2), (0.5, 0.5, 2), (0.5, -0.5, 2)]
+    ev = float(polygon_irradiance(lv, verts, (0, 0, 0), (0, 0, 1)))
+    e, se = float(row["illuminance_lx"]), float(row["illuminance_stderr_lx"])
+    assert se > 0 and abs(e - ev) <= 4 * se, (e, ev, se)
+    for name in NAMES:
+        v, s = _value(row, name, "irradiance")
+        truth, grey = ev * _ratio(RED, name), ev * _ratio(None, name)
+        assert s > 0 and abs(v - truth) <= 4 * s, (name, v, truth, s)
+        assert abs(v - grey) > 20 * s, (name, v, grey, s)
+
+
+def test_a_radiance_meter_sees_the_red_panel_s_colour(red_run):
+    """The radiance meter (5° cone inside the panel, the first surface's emission) reads L_v = 400·Y(c) cd/m²
+    and its PAR and melanopic radiances are L_v · k_r(c), within 4 standard errors."""
+    out, rows = red_run
+    row = rows["meter"]
+    lv = 400.0 * _luminance(RED)
+    l, se = _value(row, "photopic", "radiance")
+    assert abs(l - lv) <= 4 * se + 1e-6 * lv, (l, lv, se)
+    for name in NAMES:
+        v, s = _value(row, name, "radiance")
+        truth = lv * _ratio(RED, name)
+        assert abs(v - truth) <= 4 * s + 1e-6 * truth, (name, v, truth, s)
+
+
+def test_the_hero_tables_give_the_red_faces_their_own_row(red_run):
+    """The hero tables hold one row beyond the emissive record's, ``colour_emission(c, D65)`` scaled so that
+    its photopic response per radiometric unit is the faces' K = L_v/L_e (the stated lm value kept), and every
+    emitting triangle indexes it."""
+    from simulator.spectra.hero import hero_tables
+    from simulator.spectra.responses import response
+
+    scene = out_scene = red_run[0].scene
+    t = hero_tables(out_scene, "photometric", "D65")
+    g = scene.geometry
+    assert t.emission.shape[0] == 2
+    assert np.all(t.face_emission[g.emission[:, 0] > 0] == 1)
+    d65 = sources.cie_illuminant("D65")
+    shape = sources.colour_emission(RED, d65).values
+    k = g.emission[0, 1] / g.emission[0, 0]
+    row = t.emission[1]
+    assert float(response("photopic").of(row)) == pytest.approx(k, rel=1e-9)
+    assert np.allclose(row / row.max(), shape / shape.max(), rtol=1e-9)
+
+
+def test_two_emissive_colours_in_one_stage_each_keep_theirs(tmp_path):
+    """A red and a green panel side by side (x ∈ [−1, 0] and [0, 1]), a radiance meter under each looking up
+    at its centre (5° cone inside it): each reads its own L_v = 300·Y(c) and PAR and melanopic radiances
+    L_v · k_r(c) of its own colour within 4 standard errors, and the two ratios differ."""
+    stage = _stage(tmp_path, [("Red", -1.0, 0.0, RED, 300.0), ("Green", 0.0, 1.0, GREEN, 300.0)])
+    out = run(load_config(_config(tmp_path, stage, _meter("red", -0.5) + _meter("green", 0.5), 20000)),
+              log=lambda *a: None)
+    rows = _rows(out)
+    for sensor, rgb in (("red", RED), ("green", GREEN)):
+        lv = 300.0 * _luminance(rgb)
+        l, se = _value(rows[sensor], "photopic", "radiance")
+        assert abs(l - lv) <= 4 * se + 1e-6 * lv, (sensor, l, lv, se)
+        for name in NAMES:
+            v, s = _value(rows[sensor], name, "radiance")
+            truth = lv * _ratio(rgb, name)
+            assert abs(v - truth) <= 4 * s + 1e-6 * truth, (sensor, name, v, truth, s)
+    assert _ratio(RED, "melanopic_edi") < 0.5 * _ratio(GREEN, "melanopic_edi")
+
+
+def test_a_grey_emissive_stage_is_traced_as_before(tmp_path):
+    """A grey panel (emissiveColor 400·(1, 1, 1)): no colour kept (``Geometry.emission_rgb`` None), one
+    channel (transport grey), no colour warning, and the CSV's illuminance is the closed form L_v ∫cos θ dω
+    (400 cd/m²) within 4 standard errors."""
+    stage = _stage(tmp_path, [("White", -0.5, 0.5, (1.0, 1.0, 1.0), 400.0)])
+    out = run(load_config(_config(tmp_path, stage, _irradiance_sensor("below", 0.0), 4000)), log=lambda *a: None)
+    assert out.scene.geometry.emission_rgb is None
+    assert out.record["plan"]["transport"] == "grey"
+    assert not any("luminance grey" in w for w in out.record["warnings"])
+    row = _rows(out)["below"]
+    verts = [(-0.5, -0.5, 2), (-0.5, 0.5, 2), (0.5, 0.5, 2), (0.5, -0.5, 2)]
+    ev = float(polygon_irradiance(400.0, verts, (0, 0, 0), (0, 0, 1)))
+    e, se = float(row["illuminance_lx"]), float(row["illuminance_stderr_lx"])
+    assert se > 0 and abs(e - ev) <= 4 * se, (e, ev, se)
