@@ -110,7 +110,7 @@ def test_a_red_panel_reads_its_own_spectrum_below_it(red_run):
     """A 1 m × 1 m panel of emissiveColor 400·(1, 0.05, 0.02) 2 m above an upward irradiance sensor: the plan
     traces hero wavelengths; illuminance is the closed form L_v ∫cos θ dω (L_v = 400·Y(c) cd/m²), and PPFD and
     melanopic EDI are that illuminance times k_r(c) of S_c = colour_emission(c, D65), each within 4 standard
-    errors; the grey reduction's k_r(D65) lies more than 20 standard errors away (red light: about 1.9× the
+    errors; the grey reduction's k_r(D65) lies more than 20 standard errors away (this red: about 1.4× the
     PPFD per lux of D65 and a fifth of its melanopic EDI)."""
     out, rows = red_run
     assert out.record["plan"]["transport"] != "grey"
@@ -149,8 +149,8 @@ def test_the_hero_tables_give_the_red_faces_their_own_row(red_run):
     from simulator.spectra.hero import hero_tables
     from simulator.spectra.responses import response
 
-    scene = out_scene = red_run[0].scene
-    t = hero_tables(out_scene, "photometric", "D65")
+    scene = red_run[0].scene
+    t = hero_tables(scene, "photometric", "D65")
     g = scene.geometry
     assert t.emission.shape[0] == 2
     assert np.all(t.face_emission[g.emission[:, 0] > 0] == 1)

@@ -9,7 +9,8 @@ Emission is carried as a pair of numbers per emitter: the radiometric value
 (watts) and its photometric twin (lumens): where materials are grey the two
 integrals are all a reading needs (no spectrum is traced where nothing is
 coloured). Albedos are carried as their luminance grey and, for spectral
-transport, the linear sRGB it came from (``Geometry.albedo_rgb``); lights
+transport, the linear sRGB it came from (``Geometry.albedo_rgb``), and so
+is a coloured ``emissiveColor`` (``Geometry.emission_rgb``); lights
 name their spectral shape and colour (``Light.spectrum``, ``Light.color``).
 What the pair measures depends on the light kind; see :class:`Light`.
 """

@@ -14,7 +14,8 @@ Inputs are followed through connections to authored constants; an input
 connected to a ``UsdUVTexture`` reads the texture's mean value
 (:mod:`.textures`). With no usable material, ``primvars:displayColor`` or
 the UsdPreviewSurface default is the albedo. Colours become luminance greys
-(BT.709 Y); a material's ``probesim:reflectance`` names a measured curve
+(BT.709 Y), each kept beside its grey for spectral transport (the albedo
+colour, and ``emissiveColor``'s where it is not grey); a material's ``probesim:reflectance`` names a measured curve
 that replaces ``diffuseColor`` (:func:`_measured_reflectance`). Summary warnings, one line each, name the prims whose colour was
 not grey, the inputs read as a texture mean, the albedo-1 surfaces, and the
 inputs that would change the reading but are ignored (``roughness``,
