@@ -35,13 +35,13 @@ RED = (1.0, 0.05, 0.02)
 GREEN = (0.03, 1.0, 0.05)
 
 
-def _panel(name: str, x0: float, x1: float, rgb, scale: float) -> str:
-    """A 1 m-wide quad in z = 2 m from x0 to x1, wound so its emitting front face looks down (−Z), with its
+def _panel(name: str, x0: float, x1: float, rgb, scale: float, y: float = 0.5) -> str:
+    """A quad in z = 2 m over x ∈ [x0, x1], y ∈ [−y, y], wound so its emitting front face looks down (−Z), with its
     own material of emissiveColor ``scale · rgb`` and diffuseColor 0 (it reflects nothing)."""
     c = ", ".join(f"{scale * v:g}" for v in rgb)
     return (f'    def Mesh "{name}" (\n        prepend apiSchemas = ["MaterialBindingAPI"]\n    )\n    {{\n'
             f'        int[] faceVertexCounts = [4]\n        int[] faceVertexIndices = [0, 1, 2, 3]\n'
-            f'        point3f[] points = [({x0}, -0.5, 2), ({x0}, 0.5, 2), ({x1}, 0.5, 2), ({x1}, -0.5, 2)]\n'
+            f'        point3f[] points = [({x0}, {-y}, 2), ({x0}, {y}, 2), ({x1}, {y}, 2), ({x1}, {-y}, 2)]\n'
             f'        uniform bool doubleSided = 0\n        rel material:binding = </World/M{name}>\n    }}\n'
             f'    def Material "M{name}"\n    {{\n'
             f'        token outputs:surface.connect = </World/M{name}/S.outputs:surface>\n'
@@ -195,3 +195,35 @@ def test_a_grey_emissive_stage_is_traced_as_before(tmp_path):
     ev = float(polygon_irradiance(400.0, verts, (0, 0, 0), (0, 0, 1)))
     e, se = float(row["illuminance_lx"]), float(row["illuminance_stderr_lx"])
     assert se > 0 and abs(e - ev) <= 4 * se, (e, ev, se)
+
+
+def test_a_probe_under_a_red_ceiling_maps_its_colour(tmp_path):
+    """A probe 2 m below a 6 m × 6 m red panel (emissiveColor 400·c). The map's frame is the stage's
+    (an untransformed DomeLight's: longitude 0 toward +Z, latitude toward +Y; simulator.io.latlong), so on
+    a 16 × 8 map the 4 × 4 pixels of longitude and latitude within ±45° (columns 6–9, rows 2–5) look up
+    at the panel, every direction meeting it at |x| ≤ 2 m, |y| ≤ 2√2 m; each of them reads the panel's
+    linear sRGB ``M K_m ∫ L (x̄, ȳ, z̄) dλ`` (cd/m²), L(λ) = S_c(λ) scaled to K_m ∫ S_c ȳ dλ = L_v =
+    400·Y(c): the 16 pixels' mean R, G, B each within 4 standard errors (the pixels' spread gives the
+    mean's stderr: each has the same expectation). The grey reduction would read R = G = B = L_v; the
+    colour's is (4.00, 0.202, 0.080) L_v: R over 3 L_v, G and B under L_v/4."""
+    import math
+
+    import OpenEXR
+
+    from simulator.spectra.grid import trapezoid_weights
+    from simulator.spectra.hero import colour_weights
+
+    stage = _stage(tmp_path, [("Red", -3.0, 3.0, RED, 400.0, 3.0)])
+    probe = '[[sensor]]\nname = "ball"\nkind = "probe"\nposition = [0, 0, 0]\nresolution = [16, 8]\n'
+    run(load_config(_config(tmp_path, stage, probe, 128 * 200)), log=lambda *a: None)
+    lv = 400.0 * _luminance(RED)
+    shape = sources.colour_emission(RED, sources.cie_illuminant("D65")).values
+    radiance = shape * lv / float(R.response("photopic").of(shape))  # W m⁻² sr⁻¹ nm⁻¹
+    rgb_truth = colour_weights() / 400.0 @ (trapezoid_weights() * radiance)  # cd/m²
+    exr = OpenEXR.File(str(tmp_path / "out" / "panels.ball.exr"), separate_channels=True)
+    ch = {k: c.pixels.astype(float) for k, c in exr.channels().items()}
+    assert "traced spectrum" in exr.header()["probesim:rgb"]
+    for k, c in enumerate("RGB"):
+        pix = ch[c][2:6, 6:10].reshape(-1)
+        assert abs(pix.mean() - rgb_truth[k]) <= 4 * pix.std(ddof=1) / math.sqrt(pix.size), (c, pix, rgb_truth[k])
+    assert rgb_truth[0] > 3 * lv and rgb_truth[1] < 0.25 * lv and rgb_truth[2] < 0.25 * lv
