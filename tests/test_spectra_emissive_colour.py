@@ -26,8 +26,10 @@ import numpy as np
 import pytest
 
 from simulator.config.loader import load_config
+from simulator.errors import UserError
 from simulator.pipeline import run
 from simulator.reference.closed_forms import polygon_irradiance
+from simulator.scene.usd import load_stage
 from simulator.spectra import responses as R, sources
 
 NAMES = ("par", "melanopic_edi")
@@ -227,3 +229,13 @@ def test_a_probe_under_a_red_ceiling_maps_its_colour(tmp_path):
         pix = ch[c][2:6, 6:10].reshape(-1)
         assert abs(pix.mean() - rgb_truth[k]) <= 4 * pix.std(ddof=1) / math.sqrt(pix.size), (c, pix, rgb_truth[k])
     assert rgb_truth[0] > 3 * lv and rgb_truth[1] < 0.25 * lv and rgb_truth[2] < 0.25 * lv
+
+
+def test_an_emissive_colour_with_a_negative_channel_is_one_line_naming_the_prim(tmp_path):
+    """emissiveColor (10, −1, 0) has a positive grey (2.126 − 0.7152 > 0) but no spectrum (a negative
+    emission): the stage is refused with one line naming the prim and the input."""
+    stage = _stage(tmp_path, [("Bad", -0.5, 0.5, (10.0, -1.0, 0.0), 1.0)])
+    with pytest.raises(UserError) as e:
+        load_stage(stage, light_units="photometric")
+    msg = str(e.value)
+    assert "\n" not in msg and "/World/Bad" in msg and "emissiveColor" in msg and "non-negative" in msg, msg

@@ -97,8 +97,12 @@ def _surface(ctx: _Context, prim: Usd.Prim,
         raise ctx.error(prim, f"emission {radiance:g} from {source} must be a non-negative number")
     if radiance > 0.0:
         ctx.emissive_spectra[(None, False)] = None
+    emission_colour = _emission_colour(rgb, radiance)
+    if np.any(emission_colour < 0.0) or not np.all(np.isfinite(emission_colour)):
+        raise ctx.error(prim, f"emissiveColor {tuple(float(v) for v in emission_colour)} from {source} must have "
+                              "non-negative channels")
     colour = _albedo_colour(inputs, albedo) if curve < 0 else np.full(3, albedo)
-    return albedo, ctx.emission(radiance), colour, curve, _emission_colour(rgb, radiance)
+    return albedo, ctx.emission(radiance), colour, curve, emission_colour
 
 
 def _emission_colour(rgb, radiance: float) -> np.ndarray:
