@@ -12,44 +12,36 @@ docs/DESIGN.md "Light groups in one pass".
 
 import warp as wp
 
+from simulator.study.sky_patches import BAND_COUNTS, BAND_DEG, BAND_START, GROUND
+
 from .records import TraceParams
 from .sampling import PI
+
+
+# Tregenza's bands, from the one table the host uses (simulator.study.sky_patches)
+_BAND_VEC = wp.types.vector(length=len(BAND_COUNTS), dtype=wp.int32)
+BAND_COUNT = wp.constant(_BAND_VEC(*BAND_COUNTS))
+BAND_FIRST = wp.constant(_BAND_VEC(*BAND_START))
+N_BANDS = wp.constant(len(BAND_COUNTS))
+GROUND_SLOT = wp.constant(GROUND)
+BAND_WIDTH_DEG = wp.constant(BAND_DEG)
 
 
 @wp.func
 def tregenza_patch(d: wp.vec3) -> int:
     """Tregenza sky patch of direction ``d`` (world frame, +Z up, +Y north, +X east): 0…144 above the
-    horizon, 145 at or below it; the twin of :func:`simulator.study.sky_patches.patch_index`."""
+    horizon, 145 at or below it; the twin of :func:`simulator.study.sky_patches.patch_index`
+    (12° altitude bands, the last the polar cap; patch 0 of a band centred on north)."""
     if d[2] <= 0.0:
-        return 145
+        return GROUND_SLOT
     alt = wp.asin(wp.clamp(d[2] / wp.length(d), -1.0, 1.0)) * (180.0 / PI)
-    band = wp.min(int(alt / 12.0), 7)
-    if band == 7:
-        return 144
-    n = 30
-    start = 0
-    if band == 1:
-        start = 30
-    elif band == 2:
-        n = 24
-        start = 60
-    elif band == 3:
-        n = 24
-        start = 84
-    elif band == 4:
-        n = 18
-        start = 108
-    elif band == 5:
-        n = 12
-        start = 126
-    elif band == 6:
-        n = 6
-        start = 138
+    band = wp.min(int(alt / BAND_WIDTH_DEG), N_BANDS - 1)
+    n = BAND_COUNT[band]
     az = wp.atan2(d[0], d[1])
     if az < 0.0:
         az = az + 2.0 * PI
     j = int(wp.floor(az / (2.0 * PI / float(n)) + 0.5))
-    return start + j % n
+    return BAND_FIRST[band] + j % n
 
 
 #: batch tallies: distinct groups a sample's touched list holds; past it the fold scans all G slots
