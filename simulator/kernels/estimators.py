@@ -106,23 +106,42 @@ def power_heuristic(pdf_a: float, pdf_b: float) -> float:
 
 
 @wp.func
-def light_contribution(scene: SceneRec, params: TraceParams, li: int, value: wp.vec2, tint: wp.vec4) -> wp.vec2:
-    """Light ``li``'s share ``value`` (W and lm channels) of one sample, as
-    the trace tallies it; ``tint`` is the path's spectral tint there (see
-    :class:`Reflection`). Every place a sample adds emitted light goes
-    through here, so per-light tallies (light groups) and per-light scalings
-    have one hook. Grey transport passes the value on; spectral transport
-    tallies its lanes and passes on its spectral (W, lm) responses. With
-    ``params.group_tally`` the value passed on is also added to this
-    sample's slot of the light's group (``scene.light_group[li]``; a light
-    in no group, or ``li`` = −1, adds to none), in the thread's state (see
-    :class:`TraceParams`)."""
+def tallied_contribution(
+    scene: SceneRec, params: TraceParams, row: int, group: int, value: wp.vec2, tint: wp.vec4
+) -> wp.vec2:
+    """An emitted share ``value`` (W and lm channels) of one sample as the
+    trace counts it: spectral transport tallies its lanes with emission row
+    ``row`` and passes on its spectral (W, lm) responses (grey transport
+    passes ``value`` on); with ``params.group_tally`` what is passed on is
+    also added to this sample's slot of light group ``group`` (none for
+    ``group`` < 0), in the thread's state (see :class:`TraceParams`)."""
     v = value
     if params.spectral != 0:
-        v = spectral_contribution(scene, params, li, value, tint)
-    if params.group_tally != 0 and li >= 0:
-        tally_group(params, scene.light_group[li], v)
+        v = spectral_contribution(scene, params, row, value, tint)
+    if params.group_tally != 0:
+        tally_group(params, group, v)
     return v
+
+
+@wp.func
+def light_group_of(scene: SceneRec, params: TraceParams, li: int) -> int:
+    """The light group of light record ``li`` while groups are tallied (−1
+    for none, for ``li`` = −1, and when ``params.group_tally`` is off: the
+    table is then not read at all)."""
+    if params.group_tally == 0 or li < 0:
+        return -1
+    return scene.light_group[li]
+
+
+@wp.func
+def light_contribution(scene: SceneRec, params: TraceParams, li: int, value: wp.vec2, tint: wp.vec4) -> wp.vec2:
+    """Light ``li``'s share ``value`` of one sample, as the trace tallies it
+    (:func:`tallied_contribution`: its emission row and its group); ``tint``
+    is the path's spectral tint there (see :class:`Reflection`). Every place
+    a sample adds emitted light goes through here or through its two
+    variants below, so per-light tallies (light groups) and per-light
+    scalings have one hook."""
+    return tallied_contribution(scene, params, li, light_group_of(scene, params, li), value, tint)
 
 
 @wp.func
@@ -131,18 +150,14 @@ def emissive_contribution(scene: SceneRec, params: TraceParams, face: int, value
     ``params.emissive_light``). Spectral transport reads the face's own
     emission row, ``scene.spectral_face_emission[face]`` (a coloured
     ``emissiveColor``), where it has one (≥ 0), else the record's; the
-    light-group tally stays the record's. Grey transport is
-    :func:`light_contribution` unchanged."""
+    light-group tally stays the record's."""
     li = params.emissive_light
-    if params.spectral == 0 or face < 0:
-        return light_contribution(scene, params, li, value, tint)
-    row = scene.spectral_face_emission[face]
-    if row < 0:
-        row = li
-    v = spectral_contribution(scene, params, row, value, tint)
-    if params.group_tally != 0 and li >= 0:
-        tally_group(params, scene.light_group[li], v)
-    return v
+    row = li
+    if params.spectral != 0 and face >= 0:
+        own = scene.spectral_face_emission[face]
+        if own >= 0:
+            row = own
+    return tallied_contribution(scene, params, row, light_group_of(scene, params, li), value, tint)
 
 
 @wp.func
@@ -151,16 +166,12 @@ def light_contribution_dir(scene: SceneRec, params: TraceParams, li: int, value:
     """:func:`light_contribution` for light arriving along ``wi`` (toward the light): a dome split into
     sky patches (``scene.patch_base[li]`` ≥ 0) tallies it in the group of the patch ``wi`` points
     into, ``patch_base + tregenza_patch(wi)`` (146 slots: 145 patches and the ground)."""
-    if params.group_tally == 0 or li < 0:
-        return light_contribution(scene, params, li, value, tint)
-    pb = scene.patch_base[li]
-    if pb < 0:
-        return light_contribution(scene, params, li, value, tint)
-    v = value
-    if params.spectral != 0:
-        v = spectral_contribution(scene, params, li, value, tint)
-    tally_group(params, pb + tregenza_patch(wi), v)
-    return v
+    group = light_group_of(scene, params, li)
+    if params.group_tally != 0 and li >= 0:
+        pb = scene.patch_base[li]
+        if pb >= 0:
+            group = pb + tregenza_patch(wi)
+    return tallied_contribution(scene, params, li, group, value, tint)
 
 
 @wp.func
