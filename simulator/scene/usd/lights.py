@@ -76,7 +76,8 @@ def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:
         return None
     a, t = _world_affine(ctx, prim)
     raw, spectrum, normalize, source = _light_inputs(ctx, prim)
-    light = Light(name=str(prim.GetPath()), kind=kind, position=t, frame=_frame(ctx, prim, a), emission=(0.0, 0.0))
+    light = Light(name=str(prim.GetPath()), kind=kind, position=t, frame=_frame(ctx, prim, a, right_handed=False),
+                  emission=(0.0, 0.0))
     value = _shape_light(ctx, prim, light, a, raw, normalize)
     if value is None:
         return None
@@ -87,6 +88,10 @@ def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:
     if colour.size == 3 and np.ptp(colour) > 0.0:
         light.color = tuple(float(c) for c in colour)
     read_shaping(ctx, prim, light)
+    if light.kind == LightKind.POINT and light.emission[1] == 0.0 and raw > 0:
+        # a radius-0 sphere without normalize has I = L pi r^2 = 0, unless absolute photometry
+        # (probesim:ies:absolute) set its candelas from the file: warn only when nothing is left
+        ctx.warn(f"{prim.GetPath()}: SphereLight of radius 0 without normalize emits nothing")
     return light
 
 
@@ -186,10 +191,7 @@ def _shape_light(ctx: _Context, prim: Usd.Prim, light: Light, a: np.ndarray, raw
         if sphere.GetTreatAsPointAttr().Get(ctx.time) or r == 0.0:
             light.kind = LightKind.POINT
             # I = L * pi r^2, with L = raw / (4 pi r^2) when normalized -> raw / 4.
-            intensity = raw / 4.0 if normalize else raw * math.pi * r * r
-            if intensity == 0.0 and raw > 0:
-                ctx.warn(f"{prim.GetPath()}: SphereLight of radius 0 without normalize emits nothing")
-            return intensity
+            return raw / 4.0 if normalize else raw * math.pi * r * r
         light.radius = r
         return raw / (4 * math.pi * r * r) if normalize else raw
     if kind == LightKind.RECT:

@@ -39,17 +39,25 @@ def _unit(v: np.ndarray) -> np.ndarray | None:
     return v / n if n > 0 and math.isfinite(n) else None
 
 
-def _frame(ctx: _Context, prim: Usd.Prim, a: np.ndarray) -> np.ndarray:
-    """Right-handed orthonormal frame whose Z (and X, as far as possible) follow the prim's.
+def _frame(ctx: _Context, prim: Usd.Prim, a: np.ndarray, right_handed: bool = True) -> np.ndarray:
+    """Orthonormal frame whose Z (and X, as far as possible) follow the prim's.
 
-    Gram-Schmidt from Z keeps the emission axis exact; Y = Z x X makes the
-    frame right-handed even under a mirroring transform.
+    Gram-Schmidt from Z keeps the emission axis exact; Y = ±(Z x X). With
+    ``right_handed`` (portals) Y = Z x X whatever the transform. Without it
+    (lights) Y takes the sign of ``det(a)``: a mirroring transform (a
+    negative scale) gives a left-handed frame, the prim's own, so a
+    direction at local φ in a luminaire's web leaves the world at the
+    mirror image of φ, as it does off the mirrored prim (a right-handed
+    frame would rotate the web instead: φ 75° would read φ 285°).
     """
     z = _unit(a[:, 2])
     x = None if z is None else _unit(a[:, 0] - np.dot(a[:, 0], z) * z)
     if z is None or x is None:
         raise ctx.error(prim, "transform is degenerate (zero scale); cannot orient it")
-    return np.column_stack([x, np.cross(z, x), z])
+    y = np.cross(z, x)
+    if not right_handed and np.linalg.det(a) < 0:
+        y = -y
+    return np.column_stack([x, y, z])
 
 
 def _mean_scale(ctx: _Context, prim: Usd.Prim, scales: np.ndarray, what: str) -> float:
