@@ -223,6 +223,24 @@ def rgb_per_luminance(spectrum: Spectrum) -> np.ndarray:
     return np.asarray(colour.models.RGB_COLOURSPACE_sRGB.matrix_XYZ_to_RGB, float) @ xyz
 
 
+def _shared_temperature(scene) -> float | None:
+    """The one ``colorTemperature`` (kelvin) every emitting light and emissive face has, or None.
+
+    The stage reader gives a light with ``enableColorTemperature`` (and no
+    ``probesim:spectrum``) its temperature as ``Light.spectrum``, a float;
+    emitters on the run's default spectrum have its name, a str. None
+    unless every emitter that emits has the same float.
+    """
+    spectra = [l.spectrum for l in scene.lights if l.emission[0] > 0]
+    g = scene.geometry
+    if g.n_triangles and np.any(np.asarray(g.emission)[:, 0] > 0):
+        spectra.append(g.emissive_spectrum)
+    kelvin = {float(s) for s in spectra if isinstance(s, (int, float)) and not isinstance(s, bool)}
+    if len(kelvin) != 1 or len(kelvin) != len(set(map(str, spectra))):
+        return None
+    return kelvin.pop()
+
+
 def _own_spectrum(scene, declared) -> Spectrum | None:
     """The spectrum the emitters name themselves (``probesim:spectrum``) in a grey scene; None when none does.
 
@@ -275,15 +293,17 @@ def run_spectrum(settings, scene, light_units: str, radiometric_spectrum) -> Spe
     -------
     Spectrum or None
         ``[spectra] lights`` if declared, else the spectrum the stage reader
-        gave the lights (D65 photometric, ``radiometric_spectrum`` otherwise).
+        gave the lights: the blackbody of their one ``colorTemperature`` when
+        every emitter has it, else D65 photometric, ``radiometric_spectrum``
+        otherwise.
 
     Raises
     ------
     UserError
         The scene needs spectral or per-emitter transport
         (:func:`posthoc_refusal`), or the lights share a spectrum the run
-        does not name (all with one ``colorTemperature``): name it in
-        ``[spectra] lights``.
+        does not name and the scene does not tell (not a blackbody
+        temperature): name it in ``[spectra] lights``.
     """
     from simulator.errors import UserError
     from simulator.spectra.sources import emitter_spectrum
@@ -301,6 +321,9 @@ def run_spectrum(settings, scene, light_units: str, radiometric_spectrum) -> Spe
         return own
     if settings.lights is not None:
         return settings.lights
+    temperature = _shared_temperature(scene)
+    if temperature is not None:  # every emitter is a blackbody at one colorTemperature
+        return emitter_spectrum(temperature)
     spectrum = emitter_spectrum("D65" if light_units == "photometric" else radiometric_spectrum)
     k = emitter_efficacies(scene)
     if k.size and abs(float(k[0]) - spectrum.efficacy_lm_W) > 1e-6 * spectrum.efficacy_lm_W:
