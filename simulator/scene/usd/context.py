@@ -50,6 +50,16 @@ class _Context:
     reflectance_index: dict[str, int] = field(default_factory=dict)
     #: spectra of emitting triangles, ``(spectrum or None for the default, authored)`` (ordered set)
     emissive_spectra: dict = field(default_factory=dict)
+    #: legacy (pre-``inputs:``) UsdLux attributes read, legacy name -> prims (ordered set), see :mod:`.legacy`
+    legacy: dict = field(default_factory=dict)
+
+    def summary_parts(self) -> list[str]:
+        """Parts of the stage's one summary warning line beyond what was not read or ignored."""
+        parts = []
+        if self.legacy:
+            names = ", ".join(f"{len(prims)} x {name}" for name, prims in sorted(self.legacy.items()))
+            parts.append(f"legacy UsdLux attributes (no inputs: prefix) read: {names}")
+        return parts
 
     def warn(self, message: str) -> None:
         if message not in self.warnings:

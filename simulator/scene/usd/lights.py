@@ -23,6 +23,7 @@ from pxr import Sdf, Usd, UsdGeom, UsdLux
 from simulator.errors import UserError
 from simulator.units import luminance_grey
 from simulator.scene.model import Light, LightKind
+from simulator.scene.usd.legacy import lux_get
 from simulator.scene.usd.context import _Context, _get, _layer_relative, _not_uniform
 from simulator.scene.usd.materials import _albedo, _albedo_colour, _grey, _material_inputs
 from simulator.scene.usd.shaping import has_shaping, read_shaping
@@ -84,7 +85,7 @@ def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:
     light.emission = ctx.emission(value, spectrum)
     light.spectrum = spectrum
     light.spectrum_authored = source == "own"
-    colour = np.atleast_1d(np.asarray(_get(ctx, UsdLux.LightAPI(prim).GetColorAttr()), float))
+    colour = np.atleast_1d(np.asarray(lux_get(ctx, prim, UsdLux.LightAPI(prim).GetColorAttr()), float))
     if colour.size == 3 and np.ptp(colour) > 0.0:
         light.color = tuple(float(c) for c in colour)
     read_shaping(ctx, prim, light)
@@ -102,7 +103,7 @@ def _light_inputs(ctx: _Context, prim: Usd.Prim) -> tuple[float, str | float, bo
     Shaping (cone, focus, IES profile) is read by :mod:`simulator.scene.usd.shaping`.
     """
     raw, spectrum, source = _light_value(ctx, prim)
-    return raw, spectrum, bool(UsdLux.LightAPI(prim).GetNormalizeAttr().Get(ctx.time)), source
+    return raw, spectrum, bool(lux_get(ctx, prim, UsdLux.LightAPI(prim).GetNormalizeAttr())), source
 
 
 def _light_value(ctx: _Context, prim: Usd.Prim) -> tuple[float, str | float, str]:
@@ -110,25 +111,25 @@ def _light_value(ctx: _Context, prim: Usd.Prim) -> tuple[float, str | float, str
     ``"own"`` (the prim's :data:`SPECTRUM_ATTR`, which wins over ``colorTemperature``, with a warning
     when both are on), ``"temperature"`` (``colorTemperature`` enabled) or ``""`` (the run's default)."""
     api = UsdLux.LightAPI(prim)
-    intensity = float(_get(ctx, api.GetIntensityAttr()))
-    exposure = float(_get(ctx, api.GetExposureAttr()))
+    intensity = float(lux_get(ctx, prim, api.GetIntensityAttr()))
+    exposure = float(lux_get(ctx, prim, api.GetExposureAttr()))
     if not (math.isfinite(intensity) and intensity >= 0):
         raise ctx.error(prim, f"intensity must be a non-negative number, not {intensity:g}")
     if not math.isfinite(exposure):
         raise ctx.error(prim, f"exposure must be finite, not {exposure:g}")
-    grey = _grey(ctx, prim, _get(ctx, api.GetColorAttr()))
+    grey = _grey(ctx, prim, lux_get(ctx, prim, api.GetColorAttr()))
     if not (math.isfinite(grey) and grey >= 0):
         raise ctx.error(prim, f"color must be non-negative, grey {grey:g}")
     value = intensity * 2.0 ** exposure * grey
     own = _own_spectrum(ctx, prim)
-    on = bool(api.GetEnableColorTemperatureAttr().Get(ctx.time))
+    on = bool(lux_get(ctx, prim, api.GetEnableColorTemperatureAttr()))
     if own is not None:
         if on:
             ctx.warn(f"{prim.GetPath()}: colorTemperature ignored: {SPECTRUM_ATTR} names its spectrum")
         return value, own, "own"
     if not on:
         return value, ctx.default_spectrum, ""
-    temperature = float(_get(ctx, api.GetColorTemperatureAttr()))
+    temperature = float(lux_get(ctx, prim, api.GetColorTemperatureAttr()))
     if not (math.isfinite(temperature) and temperature > 0):
         raise ctx.error(prim, f"colorTemperature must be a positive number of kelvin, not {temperature:g}")
     return value, temperature, "temperature"
@@ -173,7 +174,7 @@ def _own_spectrum(ctx: _Context, prim: Usd.Prim) -> str | float | None:
 
 def _size_attr(ctx: _Context, prim: Usd.Prim, attr: Usd.Attribute, what: str) -> float:
     """A non-negative light dimension in stage units (before the world scale)."""
-    value = float(_get(ctx, attr))
+    value = float(lux_get(ctx, prim, attr))
     if not (math.isfinite(value) and value >= 0):
         raise ctx.error(prim, f"{what} must be a non-negative number, not {value:g}")
     return value
@@ -198,7 +199,7 @@ def _shape_light(ctx: _Context, prim: Usd.Prim, light: Light, a: np.ndarray, raw
         rect = UsdLux.RectLight(prim)
         light.width = float(_size_attr(ctx, prim, rect.GetWidthAttr(), "width") * scales[0])
         light.height = float(_size_attr(ctx, prim, rect.GetHeightAttr(), "height") * scales[1])
-        if rect.GetTextureFileAttr().Get(ctx.time):
+        if lux_get(ctx, prim, rect.GetTextureFileAttr()):
             ctx.warn(f"{prim.GetPath()}: RectLight texture ignored (uniform radiance)")
         return _per_area(ctx, prim, raw, normalize, light.width * light.height)
     if kind == LightKind.DISK:
@@ -240,8 +241,7 @@ def _per_area(ctx: _Context, prim: Usd.Prim, raw: float, normalize: bool, area: 
 
 def _dome_texture(ctx: _Context, prim: Usd.Prim) -> str:
     """Resolved absolute path of a DomeLight's ``texture:file``, "" if none is authored."""
-    attr = prim.GetAttribute("inputs:texture:file")  # same name on DomeLight and DomeLight_1
-    asset = attr.Get(ctx.time) if attr else None
+    asset = lux_get(ctx, prim, "inputs:texture:file")  # same name on DomeLight and DomeLight_1
     if not asset or not asset.path:
         return ""
     if not asset.resolvedPath:
@@ -285,8 +285,7 @@ def _dome_texture_map(ctx: _Context, prim: Usd.Prim, path: str) -> np.ndarray:
     from simulator.io import exr
     from simulator.io.images import read_image, srgb_to_linear
 
-    attr = prim.GetAttribute("inputs:texture:format")
-    fmt = str((attr.Get(ctx.time) if attr else None) or "automatic")
+    fmt = str(lux_get(ctx, prim, "inputs:texture:format") or "automatic")
     if fmt not in DOME_TEXTURE_FORMATS:
         raise ctx.error(prim, f"texture:format {fmt!r} of texture:file {path} is not supported "
                               "(only 'latlong', or 'automatic' for a lat-long map)")

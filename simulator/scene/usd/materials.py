@@ -234,6 +234,7 @@ def _finish_warnings(ctx: _Context) -> None:
         parts.append("not read: " + ", ".join(f"{n} {what}" for what, n in sorted(ctx.not_read.items())))
     if ctx.ignored:
         parts.append("ignored: " + ", ".join(f"{n} x {what}" for what, n in sorted(ctx.ignored.items())))
+    parts += ctx.summary_parts()
     if parts:
         ctx.warn(f"{os.path.basename(ctx.path)}: " + "; ".join(parts))
 

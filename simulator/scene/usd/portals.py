@@ -23,6 +23,7 @@ import math
 from pxr import Sdf, Usd, UsdLux
 
 from simulator.scene.model import Light, Portal
+from simulator.scene.usd.legacy import lux_attr, lux_get
 from simulator.scene.usd.context import _Context, _get
 from simulator.scene.usd.transforms import _axis_scales, _frame, _world_affine
 
@@ -51,7 +52,7 @@ def read_portal(ctx: _Context, prim: Usd.Prim) -> Portal | None:
     scales = _axis_scales(a)
     size = []
     for what, attr in (("width", portal.GetWidthAttr()), ("height", portal.GetHeightAttr())):
-        v = float(_get(ctx, attr))
+        v = float(lux_get(ctx, prim, attr))
         if not (math.isfinite(v) and v >= 0):
             raise ctx.error(prim, f"PortalLight {what} must be a non-negative number, not {v:g}")
         size.append(v)
@@ -60,7 +61,7 @@ def read_portal(ctx: _Context, prim: Usd.Prim) -> Portal | None:
         ctx.warn(f"{prim.GetPath()}: PortalLight has zero size ({width:g} m x {height:g} m); ignored")
         return None
     for name, inert in _INERT_INPUTS.items():
-        attr = prim.GetAttribute(name)
+        attr = lux_attr(ctx, prim, name)
         if attr and attr.HasAuthoredValue() and _get(ctx, attr) != inert:
             ctx.ignored[f"{name} of a PortalLight"] += 1
     return Portal(str(prim.GetPath()), t, _frame(ctx, prim, a), width, height)

@@ -29,6 +29,7 @@ from pxr import Usd, UsdLux
 from simulator.errors import UserError
 from simulator.scene.model import Light, LightKind, LightShaping
 from simulator.scene.photometry import read_photometry
+from simulator.scene.usd.legacy import lux_get
 from simulator.scene.usd.context import _Context, _get
 from simulator.scene.usd.materials import _grey
 
@@ -41,11 +42,11 @@ _LLF = "probesim:lightLossFactor"
 
 
 def has_shaping(prim: Usd.Prim) -> bool:
-    """ShapingAPI applied, or any ``inputs:shaping:*`` / probesim IES attribute authored."""
+    """ShapingAPI applied, or any ``inputs:shaping:*`` (or legacy ``shaping:*``) / probesim IES attribute authored."""
     if prim.HasAPI(UsdLux.ShapingAPI):
         return True
     return any(
-        a.GetName().startswith("inputs:shaping:") or a.GetName() in (_ABSOLUTE, _LLF)
+        a.GetName().startswith(("inputs:shaping:", "shaping:")) or a.GetName() in (_ABSOLUTE, _LLF)
         for a in prim.GetAuthoredAttributes()
     )
 
@@ -60,25 +61,25 @@ def read_shaping(ctx: _Context, prim: Usd.Prim, light: Light) -> None:
         ctx.warn(f"{prim.GetPath()}: UsdLuxShapingAPI on a {light.kind.name.title()} light ignored")
         return
     api = UsdLux.ShapingAPI(prim)
-    angle = float(_get(ctx, api.GetShapingConeAngleAttr()))
-    softness = float(_get(ctx, api.GetShapingConeSoftnessAttr()))
-    focus = float(_get(ctx, api.GetShapingFocusAttr()))
+    angle = float(lux_get(ctx, prim, api.GetShapingConeAngleAttr()))
+    softness = float(lux_get(ctx, prim, api.GetShapingConeSoftnessAttr()))
+    focus = float(lux_get(ctx, prim, api.GetShapingFocusAttr()))
     for name, v in (("shaping:cone:angle", angle), ("shaping:cone:softness", softness), ("shaping:focus", focus)):
         if not math.isfinite(v):
             raise ctx.error(prim, f"{name} must be finite, not {v:g}")
     if angle < 0:
         raise ctx.error(prim, f"shaping:cone:angle must be ≥ 0 degrees, not {angle:g}")
-    tint = _grey(ctx, prim, _get(ctx, api.GetShapingFocusTintAttr()))
+    tint = _grey(ctx, prim, lux_get(ctx, prim, api.GetShapingFocusTintAttr()))
     sh = LightShaping(
         cone_angle_rad=math.radians(min(angle, 180.0)),
         cone_softness=min(max(softness, 0.0), 1.0),
         focus=max(focus, 0.0),
         focus_tint=min(max(float(tint), 0.0), 1.0),
     )
-    scale = float(_get(ctx, api.GetShapingIesAngleScaleAttr()))
+    scale = float(lux_get(ctx, prim, api.GetShapingIesAngleScaleAttr()))
     if scale != 0.0:
         ctx.warn(f"{prim.GetPath()}: shaping:ies:angleScale {scale:g} ignored (read as 0)")
-    asset = api.GetShapingIesFileAttr().Get(ctx.time)
+    asset = lux_get(ctx, prim, api.GetShapingIesFileAttr())
     absolute_attr = prim.GetAttribute(_ABSOLUTE)
     sh.absolute = bool(absolute_attr.Get(ctx.time)) if absolute_attr and absolute_attr.HasAuthoredValue() else False
     llf_attr = prim.GetAttribute(_LLF)
@@ -96,7 +97,7 @@ def read_shaping(ctx: _Context, prim: Usd.Prim, light: Light) -> None:
         peak = sh.ies.max_candela()
         if peak <= 0:
             raise ctx.error(prim, f"shaping:ies:file {asset.path!r} has no candela above 0")
-        normalize = bool(_get(ctx, api.GetShapingIesNormalizeAttr()))
+        normalize = bool(lux_get(ctx, prim, api.GetShapingIesNormalizeAttr()))
         if sh.absolute:
             if light.kind != LightKind.POINT:
                 raise ctx.error(prim, f"{_ABSOLUTE} needs a point-like light (a SphereLight with treatAsPoint or radius 0)")
