@@ -354,7 +354,8 @@ def test_albedo_defaults_display_color_and_connections(tmp_path):
     tri = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]
     body = quad_mesh("Plain", tri)
     body += quad_mesh("Shown", tri, "color3f[] primvars:displayColor = [(0.6, 0.6, 0.6)]")
-    body += quad_mesh("Linked", tri, bound("Mat"))
+    body += quad_mesh("Linked", tri, bound("Mat")).replace(
+        'def Mesh "Linked"', 'def Mesh "Linked" (\n    prepend apiSchemas = ["MaterialBindingAPI"]\n)')
     body += """
 def Material "Mat"
 {

@@ -196,6 +196,7 @@ from simulator.scene.usd.context import _Context
 # here; so are TESSELLATION_ATTR, MAX_SPHERE_FACES and DOME_TEXTURE_FORMATS.
 from simulator.scene.usd.geometry import MAX_SPHERE_FACES, SPHERE_SEGMENTS, TESSELLATION_ATTR  # noqa: F401
 from simulator.scene.usd.geometry import _GeometryBuilder, _read_gprim
+from simulator.scene.usd.diagnostics import PxrDiagnostics
 from simulator.scene.usd.enclosures import sealed_light
 from simulator.scene.usd.instancers import _read_instancer
 from simulator.scene.usd.lights import DOME_TEXTURE_FORMATS, _is_supported_light, _read_light, _require_light  # noqa: F401
@@ -317,17 +318,19 @@ def load_stage(
     the affected axes, with a warning.
     """
     _check_options(path, light_units, radiometric_spectrum)
-    stage = _open_stage(path)
-    _select_variants(stage, str(path), variants or {})
-    mpu, up_axis = _world_frame(stage, path)
-    ctx = _reading_context(path, mpu, up_axis, light_units, radiometric_spectrum)
-    _collect_composition_errors(stage, ctx)
-    _warn_unauthored_units(stage, ctx)
-    geometry, lights, sensors = _read_prims(ctx, stage)
-    if require_light:
-        _require_light(ctx, lights, geometry)
-    _refuse_sealed_light(ctx, geometry, lights)
-    _finish_warnings(ctx)
+    with PxrDiagnostics() as pxr_said:  # pxr's own warnings: into the summary line, not onto stderr
+        stage = _open_stage(path)
+        _select_variants(stage, str(path), variants or {})
+        mpu, up_axis = _world_frame(stage, path)
+        ctx = _reading_context(path, mpu, up_axis, light_units, radiometric_spectrum)
+        _collect_composition_errors(stage, ctx)
+        _warn_unauthored_units(stage, ctx)
+        geometry, lights, sensors = _read_prims(ctx, stage)
+        if require_light:
+            _require_light(ctx, lights, geometry)
+        _refuse_sealed_light(ctx, geometry, lights)
+        ctx.pxr_messages += pxr_said.collect()
+        _finish_warnings(ctx)
     return Scene(
         geometry=geometry,
         lights=lights,

@@ -52,6 +52,10 @@ class _Context:
     emissive_spectra: dict = field(default_factory=dict)
     #: legacy (pre-``inputs:``) UsdLux attributes read, legacy name -> prims (ordered set), see :mod:`.legacy`
     legacy: dict = field(default_factory=dict)
+    #: the stage's composition errors (unresolved references, ...), one message each
+    composition_errors: list = field(default_factory=list)
+    #: pxr's own diagnostics caught while the stage was read (:mod:`.diagnostics`)
+    pxr_messages: list = field(default_factory=list)
 
     def summary_parts(self) -> list[str]:
         """Parts of the stage's one summary warning line beyond what was not read or ignored."""
@@ -59,6 +63,14 @@ class _Context:
         if self.legacy:
             names = ", ".join(f"{len(prims)} x {name}" for name, prims in sorted(self.legacy.items()))
             parts.append(f"legacy UsdLux attributes (no inputs: prefix) read: {names}")
+        if self.composition_errors:
+            n = len(self.composition_errors)
+            parts.append(f"{n} composition error{'s' * (n > 1)} (first: {_clip(self.composition_errors[0])})")
+        # pxr reports each composition error as a warning too: count only the others
+        others = [m for m in self.pxr_messages if not any(c in m for c in self.composition_errors)]
+        if others:
+            n = len(others)
+            parts.append(f"{n} pxr diagnostic{'s' * (n > 1)} (first: {_clip(others[0])})")
         return parts
 
     def warn(self, message: str) -> None:
@@ -128,6 +140,11 @@ def _not_uniform(spread: float, largest: float) -> bool:
     shape scaled non-uniformly); the 1e-300 floor keeps all-zero values uniform.
     """
     return spread > 1e-6 * max(largest, 1e-300)
+
+
+def _clip(message: str, limit: int = 240) -> str:
+    """A message cut to ``limit`` characters for a summary line."""
+    return message if len(message) <= limit else message[: limit - 3] + "..."
 
 
 def _name_list(names: list[str]) -> str:

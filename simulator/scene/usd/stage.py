@@ -18,7 +18,7 @@ from pxr import Usd, UsdGeom
 
 from simulator.errors import UserError, require_file
 from simulator.units import SPECTRA
-from simulator.scene.usd.context import _MAX_NAMED, _Context
+from simulator.scene.usd.context import _Context
 
 # (x, y, z)_Yup -> (x, -z, y)_Zup: +90 degrees about X.
 _Y_UP_TO_Z_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
@@ -146,8 +146,7 @@ def _collect_composition_errors(stage: Usd.Stage, ctx: _Context) -> None:
         errors = stage.GetCompositionErrors()
     except Exception:  # older USD without the API
         return
-    for err in errors[:_MAX_NAMED]:
-        ctx.warn(f"composition error: {' '.join(str(err).split())}")
+    ctx.composition_errors += [" ".join(str(err).split()) for err in errors]  # counted in the summary line
 
 
 class _Walk:
