@@ -950,7 +950,7 @@ def test_flags_recorded_in_flag_order(write):
 
 @pytest.mark.parametrize(
     "item, words",
-    [("reflectance", "expected SET=VARIANT, got 'reflectance'"), ("=rho_0_9", "empty variant set name"),
+    [("reflectance", "expected SET=VARIANT or /PRIM/PATH:SET=VARIANT, got 'reflectance'"), ("=rho_0_9", "empty variant set name"),
      ("reflectance= ", "empty variant name")],
 )  # fmt: skip
 def test_variant_flag_checked(write, item, words):

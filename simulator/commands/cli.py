@@ -31,7 +31,10 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("--method", help=f"estimator: {', '.join(METHODS[:-1])} or {METHODS[-1]}")
     r.add_argument("--rel-error", type=float, metavar="R", help="adaptive: stop each sensor when its confidence half-width is under R × its reading")
     r.add_argument("--variant", action="append", metavar="SET=VARIANT",
-                   help="select a USD variant before reading (repeatable; overrides the config's variants)")
+                   help="select a USD variant before reading, on every prim with the set, or on one prim as "
+                        "/PRIM/PATH:SET=VARIANT (repeatable; overrides the config's variants)")
+    r.add_argument("--time", type=float, metavar="T",
+                   help="USD time code to read the stage at (overrides the config's time; default: its earliest sample)")
     r.add_argument("--confidence", type=float, metavar="C", help="confidence of that interval (default 0.95; 0.999 for a guarantee over many sensors)")
     r.add_argument("--device", choices=("cpu", "cuda", "auto"), help="Warp device (auto: CUDA when present)")
     r.add_argument("-q", "--quiet", action="store_true", help="print no table")
@@ -192,7 +195,7 @@ def _cmd_run(args) -> int:
     cfg = load_config(args.config)
     cfg = apply_overrides(
         cfg, seed=args.seed, samples=args.samples, device=args.device, csv=args.output, method=args.method, rel_error=args.rel_error,
-        confidence=args.confidence, variants=args.variant,
+        confidence=args.confidence, variants=args.variant, time=args.time,
     )
     t0 = time.perf_counter()
     bar = ProgressBar("tracing")

@@ -76,10 +76,10 @@ def rule(message: str, *, key: str | int | None = None, sibling: str | None = No
     ----------
     message : str
         The final wording, e.g. ``"zero-length vector"``.
-    key : str or int, optional
+    key : str, int or tuple, optional
         Key (or array index) within the value being validated that the
         message is about: raised for a whole table, it lands on
-        ``<table>.<key>``.
+        ``<table>.<key>``; a tuple is a key path (``<table>.<a>.<b>``).
     sibling : str, optional
         A key beside the one at fault; ``{sibling}`` in ``message`` becomes
         its full path (``sensor[0].normal``).
@@ -130,8 +130,8 @@ def translate(
     for err in exc.errors(include_url=False):
         ctx = err.get("ctx") or {}
         loc = tuple(err["loc"])
-        if err["type"] == RULE and "key" in ctx:
-            loc += (ctx["key"],)
+        if err["type"] == RULE and "key" in ctx:  # a key, or a key path (a tuple) within the value
+            loc += tuple(ctx["key"]) if isinstance(ctx["key"], tuple) else (ctx["key"],)
         names, order = _locate(raw, loc)
         message = _message(err)
         if err["type"] == RULE and "sibling" in ctx:

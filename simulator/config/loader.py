@@ -108,6 +108,7 @@ def load_config(path: str | os.PathLike) -> RunConfig:
         raw=raw,
         variants=dict(doc.variants),
         spectra=spectra,
+        time=doc.time,
     )
 
 

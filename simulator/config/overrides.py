@@ -19,6 +19,7 @@ from simulator.config.errors import translate, user_error
 from simulator.config.paths import resolve_path
 from simulator.config.records import RunConfig
 from simulator.config.schema import RunFile
+from simulator.config.variants import parse_flag
 
 __all__ = ["apply_overrides", "FLAGS"]
 
@@ -44,6 +45,7 @@ def apply_overrides(
     rel_error: float | None = None,
     confidence: float | None = None,
     variants: list[str] | None = None,
+    time: float | None = None,
 ) -> RunConfig:
     """Apply command-line flags to a config.
 
@@ -70,7 +72,11 @@ def apply_overrides(
         Replaces ``simulation.confidence``; in (0.5, 1).
     variants : list of str, optional
         ``"set=variant"`` selections (``--variant``), added to the config's
-        ``variants`` table and overriding the same set there.
+        ``variants`` table and overriding the same set there, or
+        ``"/prim/path:set=variant"`` (that prim only; see
+        :mod:`simulator.config.variants`).
+    time : float, optional
+        Replaces ``time``, the USD time code the stage is read at.
 
     Returns
     -------
@@ -86,19 +92,29 @@ def apply_overrides(
     values = {"seed": seed, "samples": samples, "device": device, "method": method, "rel_error": rel_error,
               "confidence": confidence}  # fmt: skip
     flags = {key: v for key, v in values.items() if v is not None}
-    chosen = dict(cfg.variants)
+    chosen = {k: (dict(v) if isinstance(v, dict) else v) for k, v in cfg.variants.items()}
     for item in variants or ():
-        name, sep, choice = str(item).partition("=")
-        if not sep:
-            raise user_error(None, "--variant", f"expected SET=VARIANT, got {item!r}")
-        chosen[name.strip()] = choice.strip()
+        parsed = parse_flag(item)
+        if parsed is None:
+            raise user_error(None, "--variant", f"expected SET=VARIANT or /PRIM/PATH:SET=VARIANT, got {item!r}")
+        path, name, choice = parsed
+        if path is None:
+            chosen[name] = choice
+        else:
+            chosen.setdefault(path, {})[name] = choice
 
     table = {"stage": str(cfg.stage), "variants": chosen, "simulation": {**asdict(cfg.simulation), **flags}}
+    if time is not None:
+        table["time"] = time
+    elif cfg.time is not None:
+        table["time"] = cfg.time
     if csv is not None:
         table["output"] = {"csv": os.fspath(csv)}
     rename = {f"simulation.{key}": flag for key, flag in FLAGS.items()}
-    rename.update({"output.csv": "--csv", "variants": "--variant"})
+    rename.update({"output.csv": "--csv", "variants": "--variant", "time": "--time"})
     rename.update({f"variants.{name}": "--variant" for name in chosen})
+    rename.update({f"variants.{path}.{name}": "--variant" for path, sets in chosen.items() if isinstance(sets, dict)
+                   for name in sets})
     try:
         doc = RunFile.model_validate(table)
     except ValidationError as exc:
@@ -108,6 +124,8 @@ def apply_overrides(
     given = {key: getattr(simulation, key) for key in flags}
     if variants:
         given["variants"] = list(variants)
+    if time is not None:
+        given["time"] = doc.time
     output = cfg.output
     if csv is not None:
         output = replace(output, csv=resolve_path(Path.cwd(), doc.output.csv))
@@ -117,5 +135,6 @@ def apply_overrides(
         simulation=simulation,
         output=output,
         variants=dict(doc.variants),
+        time=doc.time,
         overrides={**cfg.overrides, **given},
     )

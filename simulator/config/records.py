@@ -207,10 +207,15 @@ class RunConfig:
         Command-line values applied by
         :func:`simulator.config.overrides.apply_overrides` (name to the value
         given), for the run record; empty for a plain config.
-    variants : dict of str to str
-        Variant selections, variant-set name to variant name, applied to the
-        stage before it is read (whether the stage offers them is checked
-        when it is read); empty: the stage's own selections.
+    variants : dict
+        Variant selections applied to the stage before it is read (whether
+        the stage offers them is checked when it is read): variant-set name
+        to variant name (every prim with the set), or prim path to a dict of
+        variant-set name to variant name (that prim only; see
+        :mod:`simulator.config.variants`); empty: the stage's own selections.
+    time : float or None
+        USD time code the stage is read at; None: its earliest time sample
+        (``Usd.TimeCode.EarliestTime()``).
     spectra : simulator.spectra.config.SpectraSettings or None
         ``output.responses`` and ``[spectra]``, resolved; None when the
         config has neither (the run writes only the standard columns).
@@ -226,5 +231,6 @@ class RunConfig:
     output: OutputConfig
     raw: dict = field(default_factory=dict)
     overrides: dict = field(default_factory=dict)
-    variants: dict[str, str] = field(default_factory=dict)
+    variants: dict = field(default_factory=dict)
     spectra: object | None = None
+    time: float | None = None

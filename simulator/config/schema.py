@@ -12,7 +12,11 @@ flags are checked by these same models (:mod:`simulator.config.overrides`).
     light_units = "photometric"           # or "radiometric"
     radiometric_spectrum = "E"            # or "D65"
     variants = { reflectance = "rho_0_9" } # optional: variant set -> variant,
-                                          # selected on every prim with that set
+                                          # selected on every prim with that set, or
+                                          # "/Prim/Path" = { set = "variant" } on one prim
+                                          # (simulator.config.variants)
+    time = 24.0                           # optional: the USD time code the stage is read at
+                                          # (default: its earliest time sample)
 
     [simulation]
     samples = 1024        # int > 0 (first-batch size when adaptive)
@@ -77,6 +81,7 @@ from simulator.config.records import (
 )  # fmt: skip
 from simulator.config.sensors import SensorEntry
 from simulator.config.table import Table
+from simulator.config.variants import Variants
 from simulator.scene.model import Sensor, SensorKind, patch_width_axis
 from simulator.units import SPECTRA
 
@@ -149,11 +154,6 @@ class Output(Table):
     responses: Any = None
 
 
-#: ``variants``: variant-set name -> variant name
-Variants = dict[
-    Annotated[Text, nonblank("empty variant set name")],
-    Annotated[Text, nonblank("empty variant name")],
-]
 
 
 class RunFile(Table):
@@ -163,6 +163,7 @@ class RunFile(Table):
     light_units: Annotated[Text, choice(LIGHT_UNITS, "light units")] = "photometric"
     radiometric_spectrum: Annotated[Text, choice(tuple(SPECTRA), "spectrum")] = "E"
     variants: Variants = {}
+    time: Number | None = None
     simulation: Simulation = Simulation()
     sensor: Annotated[list[SensorEntry], tables("sensor")] = []
     grid: Annotated[list[Grid], tables("grid")] = []

@@ -14,7 +14,7 @@ import re
 from collections.abc import Iterator
 
 import numpy as np
-from pxr import Usd, UsdGeom
+from pxr import Sdf, Usd, UsdGeom
 
 from simulator.errors import UserError, require_file
 from simulator.units import SPECTRA
@@ -59,16 +59,17 @@ def _pxr_reason(exc: Exception) -> str:
     return " ".join(reason.split())[:300] or type(exc).__name__
 
 
-def _select_variants(stage: Usd.Stage, path: str, variants: dict[str, str]) -> None:
-    """Select ``variants[set]`` on every prim that has variant set ``set``.
+def _select_variants(stage: Usd.Stage, path: str, variants: dict) -> None:
+    """Apply variant selections: ``{set: variant}`` on every prim that has variant set ``set``, and
+    ``{"/prim/path": {set: variant}}`` on that prim alone (it wins over a by-set selection there).
 
     Selections go into the stage's in-memory override layer
     (``GetSessionLayer``), the strongest, so they
     override any selection the file authors, and the file is left unchanged.
     All prims are visited (inactive ones too, since a selection may activate
-    them), and the walk repeats until nothing changes, so a variant set that
-    appears only inside another set's selected variant is honoured as well.
-    Prims inside instance prototypes cannot be edited through their
+    them), and the walk repeats until nothing changes, so a variant set (or a
+    prim) that appears only inside another set's selected variant is honoured
+    as well. Prims inside instance prototypes cannot be edited through their
     instances: author the variant set on the instanceable prim or above it.
 
     Raises
@@ -76,10 +77,18 @@ def _select_variants(stage: Usd.Stage, path: str, variants: dict[str, str]) -> N
     UserError
         ``variants.<set>``: no prim has that variant set (the message lists
         the sets the stage offers), or a prim's set does not offer the
-        selection (the message lists the variants it offers).
+        selection (the message lists the variants it offers);
+        ``variants.<prim path>``: no prim at that path, or not a prim path;
+        ``variants.<prim path>.<set>``: the prim has no such set (the message
+        lists its sets), or the set does not offer the variant.
     """
     if not variants:
         return
+    by_set = {k: v for k, v in variants.items() if not k.startswith("/")}
+    by_path = {k: v for k, v in variants.items() if k.startswith("/")}
+    for key in by_path:
+        if not bool(Sdf.Path.IsValidPathString(key)) or not Sdf.Path(key).IsAbsoluteRootOrPrimPath() or key == "/":
+            raise UserError(f"{path}: variants.{key}: not a prim path (expected an absolute path such as /World/Car)")
     stage.SetEditTarget(Usd.EditTarget(stage.GetSessionLayer()))
     found: set[str] = set()
     for _ in range(64):  # nesting depth bound: a fixed point comes long before
@@ -89,21 +98,30 @@ def _select_variants(stage: Usd.Stage, path: str, variants: dict[str, str]) -> N
             if not prim.IsValid():  # removed by a selection made earlier in this pass
                 continue
             sets = prim.GetVariantSets()
-            for name, choice in variants.items():
+            own = by_path.get(str(prim.GetPath()), {})
+            for name, choice in {**by_set, **own}.items():
+                where = f"variants.{prim.GetPath()}.{name}" if name in own else f"variants.{name}"
                 if not sets.HasVariantSet(name):
+                    if name in own:
+                        offered = ", ".join(sets.GetNames()) or "no variant sets"
+                        raise UserError(f"{path}: {where}: {prim.GetPath()} has no variant set {name!r} "
+                                        f"(it has: {offered})")
                     continue
                 found.add(name)
                 vset = sets.GetVariantSet(name)
                 offered = vset.GetVariantNames()
                 if choice not in offered:
-                    raise UserError(f"{path}: variants.{name}: {prim.GetPath()} offers no variant {choice!r} "
+                    raise UserError(f"{path}: {where}: {prim.GetPath()} offers no variant {choice!r} "
                                     f"(its variant set {name!r} offers: {', '.join(offered) or 'nothing'})")
                 if vset.GetVariantSelection() != choice:
                     vset.SetVariantSelection(choice)
                     changed = True
         if not changed:
             break
-    for name in variants:
+    for key in by_path:
+        if not stage.GetPrimAtPath(key):
+            raise UserError(f"{path}: variants.{key}: no prim at that path in the stage")
+    for name in by_set:
         if name not in found:
             offered = sorted({s for prim in Usd.PrimRange.Stage(stage, Usd.PrimAllPrimsPredicate)
                               for s in prim.GetVariantSets().GetNames()})
