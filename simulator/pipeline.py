@@ -38,7 +38,8 @@ def load_scene(cfg: RunConfig) -> Scene:
     from simulator.scene.usd import load_stage  # the stage reader: the only code that imports pxr
 
     return load_stage(cfg.stage, light_units=cfg.light_units, radiometric_spectrum=cfg.radiometric_spectrum,
-                      variants=cfg.variants, require_light=True)  # a run of a stage with no light is refused
+                      variants=cfg.variants, require_light=True,  # a run of a stage with no light is refused
+                      time=getattr(cfg, "time", None))
 
 
 def collect_sensors(cfg: RunConfig, scene: Scene) -> list[Sensor]:
@@ -259,6 +260,14 @@ def _traced_columns(cfg, plan, engine, plain, by_name, res, probes) -> tuple[dic
     return record, response_channels(wanted)
 
 
+def _time_record(scene: Scene) -> dict:
+    """Which time the stage was read at: ``{"code": t}``, or, with none given, ``{"code": None, "read":
+    "earliest", "animated_prims": n}`` (each attribute at its own first time sample)."""
+    if scene.time_code is not None:
+        return {"code": scene.time_code}
+    return {"code": None, "read": "earliest time sample of each attribute", "animated_prims": len(scene.animated)}
+
+
 def _scene_warnings(scene: Scene, engine) -> list[str]:
     """The stage's warnings as the run record keeps them (a spectral run's say its colours were traced)."""
     if getattr(engine, "hero_tables", None) is None:
@@ -338,7 +347,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         "config": cfg.raw,
         "overrides": getattr(cfg, "overrides", {}),
         "stage": {"path": str(cfg.stage), "sha256": _sha256(cfg.stage), "meters_per_unit": scene.meters_per_unit, "up_axis": scene.up_axis,
-                  "variants": dict(cfg.variants)},
+                  "variants": dict(cfg.variants), "time": _time_record(scene)},
         "seed": sim.seed,
         "samples_requested": sim.samples,
         "samples_total": int(res.samples.sum()) + sum(p.samples for p in probe_res),

@@ -480,6 +480,10 @@ class Scene:
     warnings: list[str] = field(default_factory=list)
     #: every USD collection on the stage (``/prim.collection:name``) → the light prim paths it includes
     collections: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    #: the USD time code the stage was read at; None: each attribute's earliest time sample
+    time_code: float | None = None
+    #: prims read whose values vary in time, found when no time code was given (prim paths)
+    animated: tuple[str, ...] = ()
 
     @property
     def bounds(self) -> tuple[np.ndarray, np.ndarray]:

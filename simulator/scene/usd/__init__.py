@@ -124,8 +124,11 @@ Inactive prims are skipped (with their subtrees). Geometry and lights are
 skipped when their computed visibility is ``invisible`` or their computed
 purpose is ``guide`` or ``proxy``; sensors are measurement points, not
 rendered things, so visibility and purpose do not hide them (deactivate a
-sensor prim to drop it). Time-varying attributes are read at
-``Usd.TimeCode.EarliestTime()`` (the first time sample, or the default value).
+sensor prim to drop it). Time-varying attributes are read at the ``time``
+given (a config's ``time``, ``--time``), else at
+``Usd.TimeCode.EarliestTime()`` (each attribute's first time sample, or its
+default value), and then the summary line names the animated prims
+(:mod:`.animation`).
 
 Summary warnings
 ----------------
@@ -196,6 +199,7 @@ from simulator.scene.usd.context import _Context
 # here; so are TESSELLATION_ATTR, MAX_SPHERE_FACES and DOME_TEXTURE_FORMATS.
 from simulator.scene.usd.geometry import MAX_SPHERE_FACES, SPHERE_SEGMENTS, TESSELLATION_ATTR  # noqa: F401
 from simulator.scene.usd.geometry import _GeometryBuilder, _read_gprim
+from simulator.scene.usd.animation import note_animated
 from simulator.scene.usd.diagnostics import PxrDiagnostics
 from simulator.scene.usd.enclosures import sealed_light
 from simulator.scene.usd.instancers import _read_instancer
@@ -237,8 +241,9 @@ def load_stage(
     path: str | os.PathLike,
     light_units: str = "photometric",
     radiometric_spectrum: str | float = "E",
-    variants: dict[str, str] | None = None,
+    variants: dict | None = None,
     require_light: bool = False,
+    time: float | None = None,
 ) -> Scene:
     """Read a USD stage into a :class:`Scene` in world metres, Z up.
 
@@ -256,15 +261,20 @@ def load_stage(
         Spectrum assumed for emitters in radiometric mode (a float is a
         blackbody temperature in kelvin). A light with
         ``enableColorTemperature`` uses its blackbody in either mode.
-    variants : dict of str to str, optional
-        Variant selections, variant-set name to variant name (a config's
-        ``variants`` table), applied before anything is read; see
+    variants : dict, optional
+        Variant selections (a config's ``variants`` table), applied before
+        anything is read: variant-set name to variant name (every prim with
+        the set), or prim path to ``{set: variant}`` (that prim); see
         :func:`_select_variants`.
     require_light : bool
         Refuse a stage with nothing that emits (no UsdLux light, no emitting
         geometry): every reading would be zero. A run asks for this
         (:func:`simulator.pipeline.load_scene`); ``False`` (the default)
         reads geometry alone, for tools that only look at the surfaces.
+    time : float, optional
+        USD time code to read the stage at (a config's ``time``). None:
+        ``Usd.TimeCode.EarliestTime()``, each attribute's first time sample;
+        the summary line then names the prims that are animated.
 
     Returns
     -------
@@ -317,12 +327,12 @@ def load_stage(
     and length; a non-uniform scale on a round shape uses the mean scale of
     the affected axes, with a warning.
     """
-    _check_options(path, light_units, radiometric_spectrum)
+    _check_options(path, light_units, radiometric_spectrum, time)
     with PxrDiagnostics() as pxr_said:  # pxr's own warnings: into the summary line, not onto stderr
         stage = _open_stage(path)
         _select_variants(stage, str(path), variants or {})
         mpu, up_axis = _world_frame(stage, path)
-        ctx = _reading_context(path, mpu, up_axis, light_units, radiometric_spectrum)
+        ctx = _reading_context(path, mpu, up_axis, light_units, radiometric_spectrum, time)
         _collect_composition_errors(stage, ctx)
         _warn_unauthored_units(stage, ctx)
         geometry, lights, sensors = _read_prims(ctx, stage)
@@ -340,6 +350,8 @@ def load_stage(
         up_axis=up_axis,
         warnings=ctx.warnings,
         collections=light_collections(stage, lights),
+        time_code=time,
+        animated=tuple(ctx.animated),
     )
 
 
@@ -379,8 +391,10 @@ def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light],
             continue
         if prim.IsA(UsdGeom.PointInstancer):
             walk.PruneChildren()
+            note_animated(ctx, prim)
             _read_instancer(ctx, prim, geo)
         elif prim.IsA(UsdGeom.Gprim):
+            note_animated(ctx, prim)
             _read_gprim(ctx, prim, geo)  # MeshLightAPI prims too: geometry that emits
         elif is_portal(prim):
             if (portal := read_portal(ctx, prim)) is not None:
@@ -389,6 +403,7 @@ def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light],
             if not _is_supported_light(prim):
                 ctx.not_read[prim.GetTypeName() or "untyped light"] += 1
                 continue
+            note_animated(ctx, prim)
             light = _read_light(ctx, prim)
             if light is not None:
                 lights.append(light)

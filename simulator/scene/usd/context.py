@@ -56,6 +56,11 @@ class _Context:
     composition_errors: list = field(default_factory=list)
     #: pxr's own diagnostics caught while the stage was read (:mod:`.diagnostics`)
     pxr_messages: list = field(default_factory=list)
+    #: the run gave a time code (``time`` / ``--time``); False: each attribute's earliest sample
+    time_given: bool = False
+    #: prims read whose reading changes with time, when no time was given (ordered set, :mod:`.animation`)
+    animated: dict = field(default_factory=dict)
+    moving: dict = field(default_factory=dict)  # prim path -> its transform (or an ancestor's) may vary
 
     def summary_parts(self) -> list[str]:
         """Parts of the stage's one summary warning line beyond what was not read or ignored."""
@@ -63,6 +68,11 @@ class _Context:
         if self.legacy:
             names = ", ".join(f"{len(prims)} x {name}" for name, prims in sorted(self.legacy.items()))
             parts.append(f"legacy UsdLux attributes (no inputs: prefix) read: {names}")
+        if self.animated:
+            names = list(self.animated)
+            parts.append(f"{len(names)} animated prim(s) read at each attribute's earliest time sample, not one "
+                         f"frame ({_name_list(names)}): give the time code to read in the config (time = ...) "
+                         "or with --time")
         if self.composition_errors:
             n = len(self.composition_errors)
             parts.append(f"{n} composition error{'s' * (n > 1)} (first: {_clip(self.composition_errors[0])})")

@@ -24,8 +24,10 @@ from simulator.scene.usd.context import _Context
 _Y_UP_TO_Z_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
 
 
-def _check_options(path, light_units: str, spectrum) -> None:
-    """Reject bad ``light_units`` / ``radiometric_spectrum`` before opening anything."""
+def _check_options(path, light_units: str, spectrum, time: float | None = None) -> None:
+    """Reject bad ``light_units`` / ``radiometric_spectrum`` / ``time`` before opening anything."""
+    if time is not None and not (isinstance(time, (int, float)) and not isinstance(time, bool) and math.isfinite(time)):
+        raise UserError(f"{path}: time must be a finite number (a USD time code), not {time!r}")
     if light_units not in ("photometric", "radiometric"):
         raise UserError(f"{path}: light_units must be 'photometric' or 'radiometric', not {light_units!r}")
     if isinstance(spectrum, str):
@@ -141,18 +143,21 @@ def _world_frame(stage: Usd.Stage, path) -> tuple[float, str]:
 
 
 def _reading_context(path, mpu: float, up_axis: str, light_units: str,
-                     radiometric_spectrum: str | float) -> _Context:
+                     radiometric_spectrum: str | float, time: float | None = None) -> _Context:
     """The context every reader shares: stage -> world map, time code, transform cache, spectra.
 
-    Attributes are read at ``Usd.TimeCode.EarliestTime()``; one
-    ``UsdGeom.XformCache`` at that time serves every prim's world transform.
+    Attributes are read at time code ``time``, or at
+    ``Usd.TimeCode.EarliestTime()`` (each attribute's first time sample, or
+    its default value) when it is None; one ``UsdGeom.XformCache`` at that
+    time serves every prim's world transform.
     """
     ctx = _Context(
         path=str(path),
-        time=Usd.TimeCode.EarliestTime(),
+        time=Usd.TimeCode.EarliestTime() if time is None else Usd.TimeCode(float(time)),
         to_world=mpu * (_Y_UP_TO_Z_UP if up_axis == "Y" else np.eye(3)),
         light_units=light_units,
         default_spectrum="D65" if light_units == "photometric" else radiometric_spectrum,
+        time_given=time is not None,
     )
     ctx.xforms = UsdGeom.XformCache(ctx.time)
     return ctx
