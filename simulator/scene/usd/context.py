@@ -61,6 +61,9 @@ class _Context:
     #: prims read whose reading changes with time, when no time was given (ordered set, :mod:`.animation`)
     animated: dict = field(default_factory=dict)
     moving: dict = field(default_factory=dict)  # prim path -> its transform (or an ancestor's) may vary
+    #: UsdSkel: one ``UsdSkel.Cache`` and, per SkelRoot path, its skinning targets (:mod:`.skinning`)
+    skel_cache: object | None = None
+    skel_roots: dict = field(default_factory=dict)
 
     def summary_parts(self) -> list[str]:
         """Parts of the stage's one summary warning line beyond what was not read or ignored."""

@@ -13,12 +13,13 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from pxr import Usd, UsdGeom, UsdShade, UsdSkel
+from pxr import Usd, UsdGeom, UsdShade
 
 from simulator.scene.model import Geometry
 from simulator.scene.usd.context import _Context, _get
 from simulator.scene.usd.lights import _geometry_light_emission, _geometry_light_surface, _is_geometry_light
 from simulator.scene.usd.materials import _surface
+from simulator.scene.usd.skinning import posed_points
 from simulator.scene.usd.tessellation import (
     _capsule_polygons,
     _cone_polygons,
@@ -134,7 +135,11 @@ def _read_gprim(ctx: _Context, prim: Usd.Prim, geo: _GeometryBuilder) -> None:
     part = _gprim_part(ctx, prim)
     if part is None:
         return
-    a, t = _world_affine(ctx, prim)
+    posed = posed_points(ctx, prim, part.points)  # a skinned prim: where its skeleton puts it at ctx.time
+    if posed is None:
+        a, t = _world_affine(ctx, prim)
+    else:
+        part.points, a, t = posed
     _add_placed(ctx, prim, part, a[None], t[None], geo, part.name)
 
 
@@ -252,8 +257,6 @@ def _gprim_polygons(ctx: _Context, prim: Usd.Prim):
     Unsupported gprims (curves, points, NURBS, volumes) are counted for the
     summary warning.
     """
-    if prim.HasAPI(UsdSkel.BindingAPI):
-        ctx.ignored["skinning (UsdSkel: read in its unposed points)"] += 1
     if prim.IsA(UsdGeom.Mesh):
         return _mesh_polygons(ctx, prim)
     if prim.IsA(UsdGeom.Cube):

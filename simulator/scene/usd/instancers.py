@@ -36,7 +36,7 @@ PointInstancer").
 from __future__ import annotations
 
 import numpy as np
-from pxr import Usd, UsdGeom, UsdLux
+from pxr import Usd, UsdGeom, UsdLux, UsdSkel
 
 from simulator.scene.usd.context import _Context
 from simulator.scene.usd.geometry import _add_placed, _GeometryBuilder, _gprim_part
@@ -104,6 +104,8 @@ def _read_prototype(ctx: _Context, instancer: Usd.Prim, proto: Usd.Prim, world: 
             _read_instancer(ctx, prim, geo, np.matmul(rel[None], world), depth + 1)
         elif prim.IsA(UsdGeom.Gprim):
             part = _gprim_part(ctx, prim)
+            if prim.HasAPI(UsdSkel.BindingAPI) and part is not None:  # not posed (skinning places one prim)
+                ctx.ignored["UsdSkel skinning in PointInstancer prototypes (read unposed)"] += 1
             if part is not None:
                 m = np.matmul(rel[None], world)  # (N, 4, 4) row-vector gprim-to-world
                 a = np.einsum("ij,njk->nik", ctx.to_world, m[:, :3, :3].transpose(0, 2, 1))
