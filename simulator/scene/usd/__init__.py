@@ -72,8 +72,10 @@ Lights
     UsdLux Sphere, Rect, Disk, Distant, Dome (and DomeLight_1) and Cylinder
     lights, resolved to world size and emission as described in
     :func:`load_stage`. Lights emit but are not geometry: they neither
-    reflect nor block. ``Light.frame`` is the right-handed orthonormal frame
-    of the prim's world rotation, except for domes, where it is the frame of
+    reflect nor block. ``Light.frame`` is the orthonormal frame of the prim's
+    world rotation, left-handed where the transform mirrors (a negative
+    scale: a luminaire's web is then mirrored, not rotated; see
+    :func:`.transforms._frame`), except for domes, where it is the frame of
     the lat-long texture in the OpenEXR convention: latitude +pi/2 along
     ``frame[:, 1]``, (lat 0, lon 0) along ``frame[:, 2]``, (lat 0, lon pi/2)
     along ``frame[:, 0]`` (UsdLux DomeLight: the prim's own frame;
@@ -93,7 +95,10 @@ Lights
     ignored with a warning; a negative size, or a ``portals`` target that is
     missing or not a PortalLight, is an error. Plugin lights are not read
     (counted in the summary warning). A stage with no light at all (no UsdLux light, no
-    emitting triangle) is refused: every reading would be zero.
+    emitting triangle) is refused: every reading would be zero. Inputs
+    authored under their legacy names (no ``inputs:`` prefix, before USD
+    21.05) are read where the ``inputs:`` name is not authored, and named
+    once in the summary warning (:mod:`.legacy`).
 Geometry lights
     A Mesh, Cube or Sphere with ``MeshLightAPI`` (or ``LightAPI`` applied
     directly) is geometry that emits: it blocks light like any surface and
@@ -116,8 +121,14 @@ Variants
     ``load_stage(..., variants={"reflectance": "rho_0_9"})`` (a config's
     ``variants`` table) selects that variant on every prim that has the
     variant set, in the stage's in-memory override layer, before anything is read: one stage can
-    serve a whole parameter sweep. An unknown set or variant is an error that
-    lists what the stage offers.
+    serve a whole parameter sweep. ``variants={"/Car/WheelFL": {"wheelStyle":
+    "sport"}}`` selects on that prim only (it wins over a by-set selection
+    there). An unknown prim, set or variant is an error that lists what the
+    stage offers.
+Skinned meshes
+    A gprim bound to a ``Skeleton`` under a ``SkelRoot`` is posed at the
+    time read by pxr's UsdSkel skinning and placed by the skeleton's world
+    transform (:mod:`.skinning`); blend shapes are named as ignored.
 
 Prims are traversed through instance proxies, so instanceable prims count.
 Inactive prims are skipped (with their subtrees). Geometry and lights are
@@ -135,7 +146,11 @@ Summary warnings
 What is not read comes back as one line per kind, with counts, not one
 line per prim: ``stage.usda: not read: 3 BasisCurves, 12 Points; ignored:
 5 x inputs:roughness``; likewise the texture means, albedo-1 surfaces,
-subdivision cages and colours reduced to grey. Attributes that change
+subdivision cages and colours reduced to grey. The same stage line counts
+the legacy light attributes read, the animated prims read with no time
+given, the composition errors and pxr's own diagnostics (caught while the
+stage is read instead of printed on stderr, :mod:`.diagnostics`), each
+with its first example. Attributes that change
 nothing in a Lambertian reading (``doc``, ``kind``, extents, normals,
 ``primvars:st``, inputs at their fallback) are not named.
 
