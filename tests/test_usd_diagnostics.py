@@ -10,11 +10,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from pxr import Tf
+import pytest
 
 from simulator.commands.cli import main
+from simulator.errors import UserError
 from simulator.scene.usd import load_stage
-from simulator.scene.usd.diagnostics import PxrDiagnostics
 
 STAGE = '''#usda 1.0
 (
@@ -71,12 +71,43 @@ def test_probesim_run_prints_one_summary_line(tmp_path, capfd):
     assert len([line for line in err if "composition error" in line]) == 1, err
 
 
-def test_other_pxr_diagnostics_are_counted_with_the_first(capfd):
-    """A Tf warning posted inside the scope is held, handed over by collect(), and not printed."""
-    with PxrDiagnostics() as caught:
-        Tf.Warn("first thing pxr says")
-        Tf.Warn("second thing")
-        got = caught.collect()
-        Tf.Warn("not collected: dropped with the scope")
-    assert got == ["first thing pxr says", "second thing"]
-    assert "thing" not in capfd.readouterr().err
+def test_other_pxr_diagnostics_are_counted_with_the_first(tmp_path, capfd):
+    """A binding without MaterialBindingAPI makes pxr warn (it still honours it): counted, not printed."""
+    p = tmp_path / "b.usda"
+    p.write_text('''#usda 1.0
+(
+    metersPerUnit = 1
+    upAxis = "Z"
+)
+def Mesh "T"
+{
+    int[] faceVertexCounts = [3]
+    int[] faceVertexIndices = [0, 1, 2]
+    point3f[] points = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]
+    rel material:binding = </M>
+}
+def Material "M"
+{
+    token outputs:surface.connect = </M/S.outputs:surface>
+    def Shader "S"
+    {
+        uniform token info:id = "UsdPreviewSurface"
+        color3f inputs:diffuseColor = (0.4, 0.4, 0.4)
+        token outputs:surface
+    }
+}
+''')
+    s = load_stage(p)
+    assert "MaterialBindingAPI" not in capfd.readouterr().err
+    assert s.geometry.albedo.tolist() == [pytest.approx(0.4)]
+    (line,) = [w for w in s.warnings if "pxr diagnostic" in w]
+    assert line.startswith("b.usda: 1 pxr diagnostic (first: Found material bindings on prim at path (/T)"), line
+
+
+def test_a_read_that_fails_leaves_nothing_on_stderr_but_its_error(tmp_path, capfd):
+    """An error inside the scope (a negative light intensity) drops what pxr said: one line is all."""
+    p = _stage(tmp_path)
+    p.write_text(STAGE.replace("float inputs:intensity = 100", "float inputs:intensity = -1"))
+    with pytest.raises(UserError):
+        load_stage(p)
+    assert "Warning:" not in capfd.readouterr().err

@@ -136,3 +136,17 @@ def test_joint_influences_without_a_skeleton_are_named(tmp_path):
     p.write_text(STAGE.replace("{anim}", "").replace("rel skel:skeleton = </Rig/Skel>", ""))
     s = load_stage(p)
     assert any("skinning with no skeleton bound" in w for w in s.warnings), s.warnings
+
+
+def test_posed_points_agree_with_pxrs_own_bake(rig, tmp_path):
+    """UsdSkel.BakeSkinning writes the posed points into the mesh (in its own space): read back through
+    the mesh's transform they are the points the reader posed, at every time sampled."""
+    from pxr import Gf, Usd, UsdGeom, UsdSkel
+
+    stage = Usd.Stage.Open(str(rig))
+    assert UsdSkel.BakeSkinning(UsdSkel.Root(stage.GetPrimAtPath("/Rig")), Gf.Interval(0, 10))
+    mesh = UsdGeom.Mesh(stage.GetPrimAtPath("/Rig/Arm"))
+    for time in (0.0, 2.5, 7.0, 10.0):
+        m = np.array(UsdGeom.XformCache(time).GetLocalToWorldTransform(mesh.GetPrim()))
+        baked = np.asarray(mesh.GetPointsAttr().Get(time), float) @ m[:3, :3] + m[3, :3]
+        np.testing.assert_allclose(_posed(load_stage(rig, time=time)), baked, atol=1e-6)
