@@ -145,3 +145,14 @@ def test_bad_time_flag_is_one_line_exit_2(stage, tmp_path, capsys):
     assert err == "probesim: error: --time: must be a finite number, got inf", err
     assert not (tmp_path / "c.csv").exists()
     assert load_scene(apply_overrides(load_config(cfg_path), time=10.0)).time_code == 10.0
+
+
+def test_a_transform_pxr_cannot_build_is_one_line_naming_the_prim(tmp_path):
+    """An xformOpOrder naming an op of an unknown type makes pxr raise: one UserError naming the prim."""
+    p = tmp_path / "bad.usda"
+    p.write_text(STAGE.replace('uniform token[] xformOpOrder = ["xformOp:translate"]',
+                               'uniform token[] xformOpOrder = ["xformOp:translate", "xformOp:bogus"]'))
+    with pytest.raises(UserError) as info:
+        load_stage(p, time=0.0)
+    msg = str(info.value)
+    assert "\n" not in msg and msg.startswith(f"{p}: /Lamp: transform cannot be computed") and "bogus" in msg, msg

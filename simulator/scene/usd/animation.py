@@ -40,5 +40,9 @@ def _moving_ancestor(ctx: _Context, prim: Usd.Prim) -> bool:
     key = str(parent.GetPath())
     if key not in ctx.moving:
         xf = UsdGeom.Xformable(parent)
-        ctx.moving[key] = bool(xf and xf.TransformMightBeTimeVarying()) or _moving_ancestor(ctx, parent)
+        try:
+            varying = bool(xf and xf.TransformMightBeTimeVarying())
+        except Exception:  # a bad xformOpOrder: the transform itself is refused, naming the prim, when read
+            varying = False
+        ctx.moving[key] = varying or _moving_ancestor(ctx, parent)
     return ctx.moving[key]

@@ -21,7 +21,12 @@ def _world_affine(ctx: _Context, prim: Usd.Prim) -> tuple[np.ndarray, np.ndarray
     USD matrices act on row vectors (``p' = p M``, translation in the last
     row), so the column-vector linear part is ``M[:3, :3].T``.
     """
-    m = np.array(ctx.xforms.GetLocalToWorldTransform(prim), dtype=float)
+    try:
+        m = np.array(ctx.xforms.GetLocalToWorldTransform(prim), dtype=float)
+    except Exception as exc:  # Tf.ErrorException: an xformOpOrder naming an op pxr cannot build, ...
+        from simulator.scene.usd.stage import _pxr_reason
+
+        raise ctx.error(prim, f"transform cannot be computed ({_pxr_reason(exc)})") from None
     if not np.all(np.isfinite(m)):
         raise ctx.error(prim, "transform contains NaN or Inf")
     a = ctx.to_world @ m[:3, :3].T
