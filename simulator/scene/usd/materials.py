@@ -241,8 +241,9 @@ def _finish_warnings(ctx: _Context) -> None:
 def _material_inputs(ctx: _Context, prim: Usd.Prim) -> dict | None:
     """The bound UsdPreviewSurface's inputs as ``{name: (value, where)}``, None without a usable material."""
     material, _ = UsdShade.MaterialBindingAPI(prim).ComputeBoundMaterial(UsdShade.Tokens.full)
-    if not material:
-        return None
+    if not material:  # a binding into a referenced .mtlx composes no prim (no usdMtlx in usd-core)
+        from simulator.scene.usd.materialx import _unresolved_binding
+        return _unresolved_binding(ctx, prim)
     key = str(material.GetPath())
     if key not in ctx.materials:
         ctx.materials[key] = _preview_surface_inputs(ctx, material)
@@ -250,9 +251,16 @@ def _material_inputs(ctx: _Context, prim: Usd.Prim) -> dict | None:
 
 
 def _preview_surface_inputs(ctx: _Context, material: UsdShade.Material) -> dict | None:
-    """Read diffuseColor/emissiveColor/opacity off a material's UsdPreviewSurface."""
+    """Read diffuseColor/emissiveColor/opacity off a material's UsdPreviewSurface (or, without one, its
+    MaterialX or Omniverse MDL surface mapped onto UsdPreviewSurface's inputs: :mod:`.materialx`, :mod:`.mdl`)."""
     shader, _, _ = material.ComputeSurfaceSource()
     if not shader or shader.GetShaderId() != "UsdPreviewSurface":
+        from simulator.scene.usd.materialx import _materialx_inputs
+        from simulator.scene.usd.mdl import _mdl_inputs
+        for reader in (_materialx_inputs, _mdl_inputs):
+            mapped = reader(ctx, material)
+            if mapped is not None:
+                return mapped or None  # {}: a surface recognised but not mapped, already named
         ident = shader.GetShaderId() if shader else None
         if not ident:  # e.g. only an outputs:mdl:surface or outputs:mtlx:surface
             contexts = sorted({o.GetBaseName().rpartition(":")[0] or "universal" for o in material.GetSurfaceOutputs()
