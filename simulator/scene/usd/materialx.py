@@ -147,8 +147,8 @@ def _usd_node(ctx: _Context, shader: UsdShade.Shader, memo: dict) -> Node:
 
 def _inline_surface(material: UsdShade.Material) -> UsdShade.Shader | None:
     """The MaterialX surface shader of a material (``outputs:mtlx:surface``, else universal), if its id is ``ND_``."""
-    for contexts in (["mtlx"], []):
-        shader, _, _ = material.ComputeSurfaceSource(contexts)
+    for context in ("mtlx", ""):
+        shader, _, _ = material.ComputeSurfaceSource(context)
         if shader and (shader.GetShaderId() or "").startswith("ND_"):
             return shader
     return None
@@ -334,8 +334,9 @@ def _map_preview(ctx: _Context, ins: SurfaceInputs) -> dict:
     """ND_UsdPreviewSurface_surfaceshader: each input is its UsdPreviewSurface namesake."""
     out = {}
     for name, default in PREVIEW_DEFAULTS.items():
-        if name == "opacityMode":
-            out[name] = (ins.token(name), ins.where(name))
+        if name == "opacityMode":  # a token in UsdShade; MaterialX's nodedef makes it an int (0, 1)
+            mode = ins.token(name)
+            out[name] = ({"0": "transparent", "1": "presence"}.get(mode, mode), ins.where(name))
             continue
         v = ins.get(name)
         out[name] = ((colour(v) if isinstance(default, tuple) else float(v[0])), ins.where(name))

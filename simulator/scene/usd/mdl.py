@@ -277,7 +277,7 @@ _MODELS = {
 
 def _mdl_shader(material: UsdShade.Material) -> tuple[UsdShade.Shader, str, str] | None:
     """``(shader, module file name, material name)`` of a material's MDL surface, None without one."""
-    shader, _, _ = material.ComputeSurfaceSource(["mdl"])
+    shader, _, _ = material.ComputeSurfaceSource("mdl")
     if not shader:
         return None
     asset = shader.GetSourceAsset("mdl")
