@@ -6,7 +6,7 @@ furnace's closed form: a closed box whose walls emit L_e and reflect with albedo
 E = π L_e / (1 − ρ) on any irradiance sensor inside (docs/REFERENCES.md §Furnace), within 4 standard
 errors at a fixed seed. Unmapped inputs are named in the summary warning; an unreadable .mtlx is one line,
 exit 2, nothing written. The facts in the public-example tests (colours, luminances) are those the
-MaterialX project's example materials author (docs/REFERENCES.md §MaterialX).
+MaterialX project's example materials author (docs/REFERENCES.md §MaterialX surfaces).
 """
 
 from __future__ import annotations

@@ -257,20 +257,20 @@ def _preview_surface_inputs(ctx: _Context, material: UsdShade.Material) -> dict 
     if not shader or shader.GetShaderId() != "UsdPreviewSurface":
         from simulator.scene.usd.materialx import _materialx_inputs
         from simulator.scene.usd.mdl import _mdl_inputs
-        for reader in (_materialx_inputs, _mdl_inputs):
-            mapped = reader(ctx, material)
-            if mapped is not None:
-                return mapped or None  # {}: a surface recognised but not mapped, already named
+        # None: neither MaterialX nor Omniverse MDL; {}: one of them, not mapped (named by its reader)
+        mapped = _materialx_inputs(ctx, material)
+        mapped = _mdl_inputs(ctx, material) if mapped is None else mapped
         ident = shader.GetShaderId() if shader else None
         if not ident:  # e.g. only an outputs:mdl:surface or outputs:mtlx:surface
             contexts = sorted({o.GetBaseName().rpartition(":")[0] or "universal" for o in material.GetSurfaceOutputs()
                                if o.HasConnectedSource()})
             ident = "/".join(contexts) or "no"
-        ctx.not_read[f"material(s) with a {ident} surface, not UsdPreviewSurface (displayColor or 0.18 used)"] += 1
+        if mapped is None:
+            ctx.not_read[f"material(s) with a {ident} surface, not UsdPreviewSurface (displayColor or 0.18 used)"] += 1
         attr = material.GetPrim().GetAttribute(REFLECTANCE_ATTR)
         if attr and attr.HasAuthoredValue():
             ctx.ignored[f"{REFLECTANCE_ATTR} on a material with no UsdPreviewSurface"] += 1
-        return None
+        return mapped or None
     _count_ignored_inputs(ctx, shader)
     curve = _measured_reflectance(ctx, material, shader)
     inputs = {name: _input_value(ctx, shader, name, default) for name, default in _PREVIEW_DEFAULTS.items()

@@ -1,6 +1,6 @@
 """MaterialX surfaces: inline UsdShade networks and referenced ``.mtlx`` documents, as UsdPreviewSurface inputs.
 
-Three surface models are mapped onto UsdPreviewSurface's inputs (the dict
+Three surface models (docs/REFERENCES.md §MaterialX surfaces) are mapped onto UsdPreviewSurface's inputs (the dict
 :func:`simulator.scene.usd.materials._preview_surface_inputs` returns,
 ``{input name: (value, where)}``), their inputs read as uniform values
 (:mod:`.shading_graph`: constants, texture means, linear math):

@@ -5,7 +5,7 @@ A material whose ``outputs:mdl:surface`` is a shader with
 and ``info:mdl:sourceAsset:subIdentifier`` naming the material is read from
 the inputs the stage authors; an input not authored takes the module's
 default. The formulas follow each module's own (OmniPBR.mdl, OmniGlass.mdl,
-OmniSurfaceBase.mdl); ``lerp(a, b, t) = (1 − t) a + t b`` and ``mean(tex)`` is
+OmniSurfaceBase.mdl; docs/REFERENCES.md §Omniverse MDL materials); ``lerp(a, b, t) = (1 − t) a + t b`` and ``mean(tex)`` is
 a texture's mean (:mod:`.textures`, ``colorSpace`` ``auto``/``sRGB``/``raw``):
 
 OmniPBR (``OmniPBR``, ``OmniPBR_Opacity``, ``OmniPBR_ClearCoat*``)

@@ -157,7 +157,7 @@ def slab_transmittance(tau: float, ior: float) -> float:
 
     ``R = ((n − 1)/(n + 1))²`` is one interface's normal reflectance and ``τ``
     the internal (one-pass) transmittance; the inner reflections are summed
-    incoherently (docs/REFERENCES.md §Thin slab).
+    incoherently (docs/REFERENCES.md §Absorbing thin slab).
     """
     r = ((ior - 1.0) / (ior + 1.0)) ** 2
     return (1.0 - r) ** 2 * tau / (1.0 - (r * tau) ** 2)
