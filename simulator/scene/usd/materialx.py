@@ -286,9 +286,9 @@ def _mtlx_surface(ctx: _Context, file: str, name: str, prim: Usd.Prim) -> Node |
 def _specular(out: dict, ins: SurfaceInputs, weight: str, tint: str, metal: float, ior: float) -> None:
     """A dielectric's specular weight and tint: UsdPreviewSurface's specular workflow, ``specularColor`` its F0.
 
-    ``specularColor = weight · tint · ((n − 1)/(n + 1))²``; on a metal (metalness
-    1) they change nothing the metallic workflow reads, and on a partial metal
-    they are named (one workflow cannot hold both).
+    ``specularColor = weight · tint · ((n − 1)/(n + 1))²``; on a metal (any
+    metalness) they tint the metal's edge reflectance, which the metallic
+    workflow cannot hold: they are named.
     """
     if ins.is_default(weight) and ins.is_default(tint):
         ins.get(weight), ins.get(tint)
@@ -298,11 +298,9 @@ def _specular(out: dict, ins: SurfaceInputs, weight: str, tint: str, metal: floa
         out["useSpecularWorkflow"] = (1, f"{ins.where(weight)} / {ins.where(tint)}")
         out["specularColor"] = (colour(ins.get(weight) * ins.get(tint) * f0),
                                 f"{ins.where(weight)} x {ins.where(tint)} x F0(ior)")
-    elif metal < 1.0:
-        ins.not_mapped(weight, "a specular weight on a partial metal")
-        ins.not_mapped(tint, "a specular colour on a partial metal")
-    else:
-        ins.get(weight), ins.get(tint)
+    else:  # on a metal they tint its edge (F82), which UsdPreviewSurface's metallic Fresnel leaves white
+        ins.not_mapped(weight, "a metal's edge tint")
+        ins.not_mapped(tint, "a metal's edge tint")
 
 
 def _coat(out: dict, ins: SurfaceInputs, weight: str, tint: str, rough: str, unused: tuple[str, ...]) -> None:
@@ -339,7 +337,8 @@ def _map_preview(ctx: _Context, ins: SurfaceInputs) -> dict:
             out[name] = ({"0": "transparent", "1": "presence"}.get(mode, mode), ins.where(name))
             continue
         v = ins.get(name)
-        out[name] = ((colour(v) if isinstance(default, tuple) else float(v[0])), ins.where(name))
+        value = colour(v) if isinstance(default, tuple) else (int(v[0]) if isinstance(default, int) else float(v[0]))
+        out[name] = (value, ins.where(name))
     return out
 
 

@@ -100,6 +100,10 @@ class SurfaceInputs:
         return port is not None and (port.node is not None or port.value is not None)
 
     def where(self, name: str) -> str:
+        """Where input ``name``'s value comes from (an attribute path, a texture, or "(default)")."""
+        port = self.node.inputs.get(name)
+        if port is not None and port.node is None and isinstance(port.value, str):
+            return port.where  # a file or a token: no uniform number to evaluate
         v = self._value(name) if self.authored(name) else None
         return v.where if v is not None else f"{self.node.where}.inputs:{name} (default)"
 
