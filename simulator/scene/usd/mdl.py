@@ -205,8 +205,7 @@ def _map_omniglass(ctx: _Context, ins: SurfaceInputs) -> dict:
     if tau < 1.0 - 1e-6:
         out["probesim:transmittance"] = (slab_transmittance(max(tau, 0.0), ior),
                                          f"a thin slab of internal transmittance {tau:g} ({w('glass_color')})")
-    if not ins.is_default("glass_color") or tex is not None:
-        ins.get("depth")  # the colour is read as one pass through the pane
+    ins.not_mapped("depth", "the distance the glass colour is reached at; the colour is read as one pass")
     ins.flag("thin_walled")  # one sheet or a solid is read from the mesh
     if ins.flag("enable_opacity"):
         op = _texture(ctx, ins, "cutout_opacity_texture")
