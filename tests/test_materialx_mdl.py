@@ -448,3 +448,106 @@ def test_defaults_tables_match_the_materialx_library():
                                                                     else value, float)),
                                            np.atleast_1d(np.asarray(default, float)), rtol=0, atol=1e-7,
                                            err_msg=f"{nodedef}.{name}")
+
+
+def test_a_material_missing_from_the_referenced_mtlx_is_one_line(tmp_path):
+    """A binding to /World/Looks/Wall where look.mtlx holds no material "Wall": one line naming the prim and
+    the document, not a silent 0.18."""
+    from simulator.errors import UserError
+
+    doc = MTLX.format(texture="grey.png").replace('surfacematerial name="Wall"', 'surfacematerial name="Floor"')
+    with pytest.raises(UserError, match=r"/World/Looks: material 'Wall' is not in .*look\.mtlx"):
+        load_stage(_mtlx_stage(tmp_path, doc))
+
+
+def test_a_local_mdl_material_beside_a_mtlx_reference_is_read_as_mdl(tmp_path):
+    """A Looks scope that references a .mtlx and also defines an OmniPBR material of its own: the OmniPBR
+    is read from its inputs (its own surface output), not looked up in the document."""
+    (tmp_path / "look.mtlx").write_text(MTLX.format(texture="grey.png").replace('"Wall"', '"Other"'))
+    body = _mdl_material("OmniPBR", "                color3f inputs:diffuse_color_constant = (0.3, 0.3, 0.3)")
+    p = tmp_path / "both.usda"
+    p.write_text('#usda 1.0\n(\n    metersPerUnit = 1\n    upAxis = "Z"\n)\n'
+                 f'def Xform "World"\n{{\n{WALLS}\n'
+                 '    def Scope "Looks" (\n        prepend references = @./look.mtlx@</MaterialX/Materials>\n    )'
+                 f'{body}\n}}\n')
+    scene = load_stage(p)
+    np.testing.assert_allclose(scene.geometry.albedo, 0.3, rtol=1e-6)
+
+
+def test_product_of_two_textures_is_read_as_the_product_of_means_and_named(tmp_path):
+    """multiply(image, image): mean(a·b) is not mean(a)·mean(b) in general, so the product of the means is
+    used and the approximation named in the summary warning."""
+    _png(tmp_path / "a.png", 128)
+    _png(tmp_path / "b.png", 200)
+    looks = '''
+    {
+        def Material "Wall"
+        {
+            token outputs:mtlx:surface.connect = </World/Looks/Wall/Surface.outputs:out>
+            def Shader "Surface"
+            {
+                uniform token info:id = "ND_standard_surface_surfaceshader"
+                color3f inputs:base_color.connect = </World/Looks/Wall/Mul.outputs:out>
+                token outputs:out
+            }
+            def Shader "Mul"
+            {
+                uniform token info:id = "ND_multiply_color3"
+                color3f inputs:in1.connect = </World/Looks/Wall/A.outputs:out>
+                color3f inputs:in2.connect = </World/Looks/Wall/B.outputs:out>
+                color3f outputs:out
+            }
+            def Shader "A"
+            {
+                uniform token info:id = "ND_image_color3"
+                asset inputs:file = @a.png@ ( colorSpace = "srgb_texture" )
+                color3f outputs:out
+            }
+            def Shader "B"
+            {
+                uniform token info:id = "ND_image_color3"
+                asset inputs:file = @b.png@ ( colorSpace = "srgb_texture" )
+                color3f outputs:out
+            }
+        }
+    }'''
+    scene = load_stage(_stage(tmp_path, looks))
+    rho = float(np.prod(srgb_to_linear(np.array([128 / 255, 200 / 255]))))
+    np.testing.assert_allclose(scene.geometry.albedo, rho, rtol=1e-9)
+    assert any("multiply node" in w and "of two textures" in w for w in scene.warnings), scene.warnings
+
+
+def test_standard_surface_transmission_is_glazing_and_opacity_a_cutout():
+    """transmission 1 with colour grey 0.9 and specular_IOR 1.5: opacity 0 and the slab's
+    probesim:transmittance; a cut-out opacity 0.4 alone is opacity 0.4 in presence mode."""
+    from pxr import Usd, UsdShade
+
+    from simulator.scene.usd.materialx import _materialx_inputs
+
+    def mapped(inputs):
+        stage = Usd.Stage.CreateInMemory()
+        stage.GetRootLayer().ImportFromString("#usda 1.0\n" + 'def Scope "Looks"' + _shader_material(
+            "ND_standard_surface_surfaceshader", inputs).replace("/World/Looks", "/Looks"))
+        return _materialx_inputs(_ctx(), UsdShade.Material(stage.GetPrimAtPath("/Looks/Wall")))
+
+    glass = mapped("                float inputs:transmission = 1\n"
+                   "                color3f inputs:transmission_color = (0.9, 0.9, 0.9)")
+    assert glass["opacity"][0] == 0.0
+    assert glass["probesim:transmittance"][0] == pytest.approx(slab_transmittance(0.9, 1.5), rel=1e-12)
+    cut = mapped("                color3f inputs:opacity = (0.4, 0.4, 0.4)")
+    assert cut["opacity"][0] == pytest.approx(0.4) and cut["opacityMode"][0] == "presence"
+
+
+def test_omnipbr_opacity_is_a_cutout():
+    """OmniPBR with enable_opacity: opacity_constant in presence mode with its opacity_threshold."""
+    from pxr import Usd, UsdShade
+
+    from simulator.scene.usd.mdl import _mdl_inputs
+
+    stage = Usd.Stage.CreateInMemory()
+    stage.GetRootLayer().ImportFromString("#usda 1.0\n" + 'def Scope "Looks"' + _mdl_material(
+        "OmniPBR", "                bool inputs:enable_opacity = 1\n"
+                   "                float inputs:opacity_constant = 0.25\n"
+                   "                float inputs:opacity_threshold = 0.1").replace("/World/Looks", "/Looks"))
+    out = _mdl_inputs(_ctx(), UsdShade.Material(stage.GetPrimAtPath("/Looks/Wall")))
+    assert out["opacity"][0] == 0.25 and out["opacityMode"][0] == "presence" and out["opacityThreshold"][0] == 0.1

@@ -122,7 +122,7 @@ def _usd_node(ctx: _Context, shader: UsdShade.Shader, memo: dict) -> Node:
     key = str(shader.GetPath())
     if key in memo:
         return memo[key]
-    category, out_type = _split_id(shader.GetShaderId() or "")
+    category, out_type = _split_id(shader.GetShaderId() or shader.GetSourceAssetSubIdentifier("mdl") or "shader")
     node = memo[key] = Node(category, out_type, key)
     for inp in shader.GetInputs():
         name = inp.GetBaseName()
@@ -312,7 +312,7 @@ def _coat(out: dict, ins: SurfaceInputs, weight: str, tint: str, rough: str, unu
         out["clearcoat"] = (coat, f"{ins.where(weight)} x mean({ins.where(tint)})")
         out["clearcoatRoughness"] = (ins.scalar(rough), ins.where(rough))
     else:
-        ins._read.update((rough,) + unused)
+        ins.inert(rough, *unused)
 
 
 def _cutout(out: dict, ins: SurfaceInputs, name: str) -> None:
@@ -427,6 +427,8 @@ def _materialx_inputs(ctx: _Context, material: UsdShade.Material) -> dict | None
         if out is None:
             _not_mapped(ctx, node.category)
         return out if out is not None else {}
+    if any(o.HasConnectedSource() for o in material.GetSurfaceOutputs()):
+        return None  # a surface of its own (MDL, another renderer's): not one a .mtlx failed to compose
     found = _mtlx_binding(ctx, material.GetPrim().GetStage(), material.GetPath())
     return _from_document(ctx, found) if found else None
 

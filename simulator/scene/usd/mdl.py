@@ -172,8 +172,7 @@ def _map_omnipbr(ctx: _Context, ins: SurfaceInputs) -> dict:
         out["emissiveColor"] = (colour(nits_in_light_units(ctx, lux / math.pi)),
                                 f"OmniPBR {w('emissive_intensity')} x {w('emissive_color')} / pi")
     else:
-        for name in ("emissive_color", "emissive_intensity", "emissive_color_texture", "emissive_mask_texture"):
-            ins._read.add(name)  # off: they change nothing
+        ins.inert("emissive_color", "emissive_intensity", "emissive_color_texture", "emissive_mask_texture")
     if ins.flag("enable_opacity") or ins.flag("enable_opacity_texture"):
         m = _texture(ctx, ins, "opacity_texture") if ins.flag("enable_opacity_texture") else None
         op = ins.scalar("opacity_constant") if m is None else float(np.mean(m[:3]))
@@ -182,8 +181,7 @@ def _map_omnipbr(ctx: _Context, ins: SurfaceInputs) -> dict:
         out["opacityThreshold"] = (ins.scalar("opacity_threshold"), w("opacity_threshold"))
         ins.get("opacity_mode")
     else:
-        for name in ("opacity_constant", "opacity_texture", "opacity_mode", "opacity_threshold"):
-            ins._read.add(name)
+        ins.inert("opacity_constant", "opacity_texture", "opacity_mode", "opacity_threshold")
     return out
 
 
@@ -214,7 +212,7 @@ def _map_omniglass(ctx: _Context, ins: SurfaceInputs) -> dict:
         out["opacityMode"] = ("presence", "OmniGlass cutout_opacity")
         ins.not_mapped("glass_color", "glazing beside a cut-out")
     else:
-        ins._read.update({"cutout_opacity", "cutout_opacity_texture"})
+        ins.inert("cutout_opacity", "cutout_opacity_texture")
     return out
 
 
@@ -235,7 +233,7 @@ def _map_omnisurface(ctx: _Context, ins: SurfaceInputs) -> dict:
                                                                    "coat_affect_roughness"))
     weight = ins.scalar("emission_weight")
     if weight > 0.0:
-        nit_mode = int(ins.scalar("emission_mode")) == 1
+        nit_mode = ins.token("emission_mode") in ("1", "emission_nt")  # an int enum (0 lx, 1 nt) or its name
         value = weight * ins.scalar("emission_intensity") * ins.get("emission_color") * coat_att
         nits = value if nit_mode else value / math.pi
         out["emissiveColor"] = (colour(nits_in_light_units(ctx, nits)),
@@ -243,10 +241,10 @@ def _map_omnisurface(ctx: _Context, ins: SurfaceInputs) -> dict:
                                 f"{w('emission_color')} ({'nit' if nit_mode else 'lux / pi'})")
         ins.not_mapped("emission_use_temperature", "a temperature colour")
         if not ins.flag("emission_use_temperature"):
-            ins._read.add("emission_temperature")
+            ins.inert("emission_temperature")
     else:
-        ins._read.update({"emission_mode", "emission_intensity", "emission_color", "emission_use_temperature",
-                          "emission_temperature"})
+        ins.inert("emission_mode", "emission_intensity", "emission_color", "emission_use_temperature",
+                  "emission_temperature")
     _specular(out, ins, "specular_reflection_weight", "specular_reflection_color", metal, ior)
     transmission(out, ins, "specular_transmission_weight", "specular_transmission_color", ior)
     if ins.flag("enable_opacity"):
@@ -258,14 +256,15 @@ def _map_omnisurface(ctx: _Context, ins: SurfaceInputs) -> dict:
             out["opacityMode"] = ("presence", "OmniSurface geometry_opacity")
             out["opacityThreshold"] = (ins.scalar("geometry_opacity_threshold"), w("geometry_opacity_threshold"))
     else:
-        ins._read.update({"geometry_opacity", "geometry_opacity_threshold"})
+        ins.inert("geometry_opacity", "geometry_opacity_threshold")
     ins.flag("thin_walled")
     return out
 
 
-#: MDL material name -> (defaults, mapping, model name)
+#: MDL material name -> (defaults, mapping)
 _MODELS = {
     "OmniPBR": (OMNIPBR_DEFAULTS, _map_omnipbr), "OmniPBR_Opacity": (OMNIPBR_DEFAULTS, _map_omnipbr),
+    "OmniPBRBase": (OMNIPBR_DEFAULTS, _map_omnipbr),
     "OmniPBR_ClearCoat": (OMNIPBR_DEFAULTS, _map_omnipbr),
     "OmniPBR_ClearCoat_Opacity": (OMNIPBR_DEFAULTS, _map_omnipbr),
     "OmniGlass": (OMNIGLASS_DEFAULTS, _map_omniglass), "OmniGlass_Opacity": (OMNIGLASS_DEFAULTS, _map_omniglass),

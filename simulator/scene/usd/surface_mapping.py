@@ -120,6 +120,11 @@ class SurfaceInputs:
         d = as_array(self.defaults[name]) if not isinstance(self.defaults[name], str) else None
         return d is not None and d.size == v.value.size and bool(np.allclose(v.value, d, rtol=0, atol=tol))
 
+    def inert(self, *names: str) -> None:
+        """Mark inputs that change nothing here (emission inputs with emission off, a coat's roughness
+        without a coat): read, so not named."""
+        self._read.update(names)
+
     def not_mapped(self, name: str, why: str = "not mapped") -> None:
         """Name an input authored away from its default that the mapping cannot represent."""
         self._read.add(name)
