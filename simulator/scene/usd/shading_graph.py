@@ -25,6 +25,7 @@ colour as in MaterialX.
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -123,7 +124,7 @@ def _input(ctx: _Context, node: Node, name: str, depth: int) -> Value:
     if port is None or (port.node is None and port.value is None):
         default = _MATH_DEFAULTS.get(node.category, {}).get(name)
         if default is None:
-            raise NotUniform(f"{node.category} node {node.where} without inputs:{name}")
+            raise NotUniform(f"a {node.category} node without inputs:{name}")
         return Value(as_array(default), f"{node.where} (default {name})")
     return port_value(ctx, port, depth)
 
@@ -145,32 +146,32 @@ def _node_value(ctx: _Context, node: Node, output: str, depth: int) -> Value:
         v = _input(ctx, node, "in", depth)
         index = int(_input(ctx, node, "index", depth).value[0])
         if not 0 <= index < v.value.size:
-            raise NotUniform(f"extract node {node.where}: index {index} outside its input")
+            raise NotUniform(f"an extract node with index {index} outside its input")
         return Value(v.value[index:index + 1], v.where, v.textured, v.notes)
     if cat in ("add", "subtract", "multiply", "divide"):
         a, b = _input(ctx, node, "in1", depth), _input(ctx, node, "in2", depth)
         notes = a.notes + b.notes
         if cat in ("multiply", "divide") and b.textured and (a.textured or cat == "divide"):
-            notes += (f"{cat} node {node.where} of two textures (read as the {cat} of their means)",)
+            notes += (f"a {cat} node of two textures (read as the {cat} of their means)",)
         try:
             with np.errstate(divide="raise", invalid="raise"):
                 out = {"add": np.add, "subtract": np.subtract, "multiply": np.multiply,
                        "divide": np.divide}[cat](a.value, b.value)
         except (ValueError, FloatingPointError):
-            raise NotUniform(f"{cat} node {node.where}: inputs of {a.value.size} and {b.value.size} channels "
-                             "(or a division by 0)") from None
+            raise NotUniform(f"a {cat} node of {a.value.size} and {b.value.size} channels (or a division by 0)") \
+                from None
         return Value(out, node.where, a.textured or b.textured, notes)
     if cat == "mix":
         fg, bg, w = (_input(ctx, node, n, depth) for n in ("fg", "bg", "mix"))
         notes = fg.notes + bg.notes + w.notes
         if w.textured and (fg.textured or bg.textured):
-            notes += (f"mix node {node.where} whose weight and layers are textures (read as a mix of means)",)
+            notes += ("a mix node whose weight and layers are textures (read as a mix of means)",)
         try:
             out = w.value * fg.value + (1.0 - w.value) * bg.value
         except ValueError:
-            raise NotUniform(f"mix node {node.where}: inputs of mismatched channels") from None
+            raise NotUniform("a mix node of mismatched channels") from None
         return Value(out, node.where, fg.textured or bg.textured or w.textured, notes)
-    raise NotUniform(f"connected to a {cat} node ({node.where}), which has no uniform value")
+    raise NotUniform(f"connected to a {cat} node, which has no uniform value")
 
 
 def _texture_space(ctx: _Context, node: Node, colorspace: str) -> str:
@@ -186,12 +187,12 @@ def _image_mean(ctx: _Context, node: Node, channels: list[int]) -> Value:
     """Mean of a MaterialX ``image``/``tiledimage`` node's texture (its ``file`` input), the channels of its type."""
     port = node.inputs.get("file")
     if port is None or port.node is not None or not isinstance(port.value, str) or not port.value:
-        raise NotUniform(f"image node {node.where} without a file")
+        raise NotUniform("connected to an image node without a file")
     if "<UDIM>" in port.value or "<UVTILE>" in port.value:
-        raise NotUniform(f"image node {node.where} reads UDIM tiles ({port.value})")
+        raise NotUniform("connected to an image node of UDIM tiles")
     rgba = _mean_rgba(ctx, port.value, _texture_space(ctx, node, port.colorspace))
     if rgba is None:
-        raise NotUniform(f"image node {node.where}: texture {port.value} not found or unreadable")
+        raise NotUniform(f"connected to an image whose file {os.path.basename(port.value)} is missing or unreadable")
     return Value(np.asarray([rgba[c] for c in channels], float), f"{node.where} (mean of {port.value})", True)
 
 
@@ -199,15 +200,15 @@ def _uv_texture_mean(ctx: _Context, node: Node, output: str, depth: int) -> Valu
     """A MaterialX ``UsdUVTexture`` node: ``scale * mean + bias`` per channel of its output (as :mod:`.textures`)."""
     port = node.inputs.get("file")
     if port is None or port.node is not None or not isinstance(port.value, str) or not port.value:
-        raise NotUniform(f"UsdUVTexture node {node.where} without a file")
+        raise NotUniform("connected to a UsdUVTexture node without a file")
     space_port = node.inputs.get("sourceColorSpace")
     space = str(space_port.value) if space_port is not None and space_port.value else "auto"
     rgba = _mean_rgba(ctx, port.value, space)
     if rgba is None:
-        raise NotUniform(f"UsdUVTexture node {node.where}: texture {port.value} not found or unreadable")
+        raise NotUniform(f"connected to a UsdUVTexture whose file {os.path.basename(port.value)} is missing or unreadable")
     chans = _OUTPUT_CHANNELS.get(output)
     if chans is None:
-        raise NotUniform(f"UsdUVTexture node {node.where} has no output {output!r}")
+        raise NotUniform(f"connected to a UsdUVTexture output {output!r}, which it has not")
 
     def four(name, default):
         p = node.inputs.get(name)
