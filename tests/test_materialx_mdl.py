@@ -551,3 +551,21 @@ def test_omnipbr_opacity_is_a_cutout():
                    "                float inputs:opacity_threshold = 0.1").replace("/World/Looks", "/Looks"))
     out = _mdl_inputs(_ctx(), UsdShade.Material(stage.GetPrimAtPath("/Looks/Wall")))
     assert out["opacity"][0] == 0.25 and out["opacityMode"][0] == "presence" and out["opacityThreshold"][0] == 0.1
+
+
+def test_a_binding_on_a_parent_into_a_referenced_mtlx_reaches_its_meshes(tmp_path):
+    """The binding authored on an Xform above the mesh (bindings inherit down the namespace) still finds the
+    material in the referenced .mtlx: base_color's texture mean is the albedo."""
+    _png(tmp_path / "grey.png", 188)
+    (tmp_path / "look.mtlx").write_text(MTLX.format(texture="grey.png"))
+    mesh = WALLS.replace('    def Mesh "Walls" (\n        prepend apiSchemas = ["MaterialBindingAPI"]\n    )',
+                         '    def Mesh "Walls"').replace("        rel material:binding = </World/Looks/Wall>\n", "")
+    assert "material:binding" not in mesh
+    p = tmp_path / "parent.usda"
+    p.write_text('#usda 1.0\n(\n    metersPerUnit = 1\n    upAxis = "Z"\n)\ndef Xform "World"\n{\n'
+                 '    def Xform "Box" (\n        prepend apiSchemas = ["MaterialBindingAPI"]\n    )\n    {\n'
+                 f'        rel material:binding = </World/Looks/Wall>\n{mesh}    }}\n'
+                 '    def Scope "Looks" (\n        prepend references = @./look.mtlx@</MaterialX/Materials>\n'
+                 '    )\n    {\n    }\n}\n')
+    scene = load_stage(p)
+    np.testing.assert_allclose(scene.geometry.albedo, float(srgb_to_linear(np.array([188 / 255]))[0]), rtol=1e-9)

@@ -258,8 +258,8 @@ def _mtlx_binding(ctx: _Context, stage: Usd.Stage, path: Sdf.Path) -> tuple | No
                 virtual = path.ReplacePrefix(owner, target)
                 parts = virtual.pathString.strip("/").split("/")
                 if len(parts) == 3 and parts[:2] == ["MaterialX", "Materials"]:
-                    doc = _document(ctx, file, prim)
-                    if doc.getNode(parts[2]) is not None:
+                    node = _document(ctx, file, prim).getNode(parts[2])
+                    if node is not None and node.getType() == "material":
                         return file, parts[2], prim
             if refs:
                 names = ", ".join(os.path.basename(f) for f, _, _ in refs)
@@ -273,9 +273,8 @@ def _mtlx_surface(ctx: _Context, file: str, name: str, prim: Usd.Prim) -> Node |
     """The surface shader of material ``name`` in ``file`` as a :class:`Node`, None when it has none."""
     import MaterialX as mx
 
-    doc = _document(ctx, file, prim)
-    material = doc.getNode(name)
-    shaders = [s for s in mx.getShaderNodes(material)] if material is not None else []
+    material = _document(ctx, file, prim).getNode(name)
+    shaders = list(mx.getShaderNodes(material))
     if not shaders:
         return None
     return _mtlx_node(shaders[0], os.path.dirname(file), {})
@@ -447,19 +446,27 @@ def _from_document(ctx: _Context, found: tuple) -> dict | None:
 
 def _unresolved_binding(ctx: _Context, prim: Usd.Prim) -> dict | None:
     """Inputs of a material bound to ``prim`` that the stage never composed because it lies in a referenced
-    ``.mtlx`` (usd-core has no usdMtlx plugin); None when the binding (full purpose, then all-purpose)
-    points nowhere else or nowhere."""
-    api = UsdShade.MaterialBindingAPI(prim)
-    for purpose in (UsdShade.Tokens.full, UsdShade.Tokens.allPurpose):
-        targets = api.GetDirectBindingRel(purpose).GetTargets()
-        if not targets:
-            continue
-        target = prim.GetStage().GetPrimAtPath(targets[0])
-        if target and target.IsA(UsdShade.Material):
-            return None
-        key = f"mtlx binding|{targets[0]}"
-        if key not in ctx.materials:
-            found = _mtlx_binding(ctx, prim.GetStage(), targets[0])
-            ctx.materials[key] = (_from_document(ctx, found) or None) if found else None
-        return ctx.materials[key]
+    ``.mtlx`` (usd-core has no usdMtlx plugin); None when no binding points into one.
+
+    The nearest direct binding on ``prim`` or an ancestor (full purpose, then all-purpose) is the one a
+    render would use (ignoring ``bindMaterialAs`` strength; collection bindings into a ``.mtlx`` are not
+    followed): if its target is a composed Material, that material was simply unusable, so None.
+    """
+    stage = prim.GetStage()
+    p = prim
+    while p and not p.IsPseudoRoot():
+        api = UsdShade.MaterialBindingAPI(p)
+        for purpose in (UsdShade.Tokens.full, UsdShade.Tokens.allPurpose):
+            targets = api.GetDirectBindingRel(purpose).GetTargets()
+            if not targets:
+                continue
+            target = stage.GetPrimAtPath(targets[0])
+            if target and target.IsA(UsdShade.Material):
+                return None
+            key = f"mtlx binding|{targets[0]}"
+            if key not in ctx.materials:
+                found = _mtlx_binding(ctx, stage, targets[0])
+                ctx.materials[key] = (_from_document(ctx, found) or None) if found else None
+            return ctx.materials[key]
+        p = p.GetParent()
     return None
