@@ -358,6 +358,8 @@ def _map_standard(ctx: _Context, ins: SurfaceInputs) -> dict:
         "emissiveColor": (colour(ins.get("emission") * ins.get("emission_color") * coat_att),
                           f"standard_surface {w('emission')} x {w('emission_color')}"),
     }
+    ins.products(("base", "base_color"), ("subsurface", "subsurface_color"), ("subsurface", "base_color"),
+                 ("coat", "coat_color"), ("emission", "emission_color"))
     _coat(out, ins, "coat", "coat_color", "coat_roughness", ("coat_IOR",))
     _specular(out, ins, "specular", "specular_color", metal, ior)
     transmission(out, ins, "transmission", "transmission_color", ior)
@@ -384,6 +386,9 @@ def _map_open_pbr(ctx: _Context, ins: SurfaceInputs) -> dict:
         "emissiveColor": (colour(nits_in_light_units(ctx, nits)),
                           f"open_pbr_surface {w('emission_luminance')} (cd/m^2) x {w('emission_color')}"),
     }
+    ins.products(("base_weight", "base_color"), ("subsurface_weight", "subsurface_color"),
+                 ("subsurface_weight", "base_color"), ("coat_weight", "coat_color"),
+                 ("emission_luminance", "emission_color"))
     _coat(out, ins, "coat_weight", "coat_color", "coat_roughness", ("coat_ior", "coat_darkening"))
     _specular(out, ins, "specular_weight", "specular_color", metal, ior)
     transmission(out, ins, "transmission_weight", "transmission_color", ior)

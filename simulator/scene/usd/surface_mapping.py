@@ -120,6 +120,18 @@ class SurfaceInputs:
         d = as_array(self.defaults[name]) if not isinstance(self.defaults[name], str) else None
         return d is not None and d.size == v.value.size and bool(np.allclose(v.value, d, rtol=0, atol=tol))
 
+    def textured(self, name: str) -> bool:
+        """Whether input ``name``'s value is (or holds) a texture mean."""
+        v = self._value(name) if self.authored(name) else None
+        return v is not None and v.textured
+
+    def products(self, *pairs: tuple[str, str]) -> None:
+        """Name each product the mapping forms of two textured inputs: ``mean(a·b)`` is ``mean(a)·mean(b)``
+        only when the two textures are uncorrelated, so the reading is an approximation there."""
+        for a, b in pairs:
+            if self.textured(a) and self.textured(b):
+                self.ctx.ignored[f"{self.model} {a} x {b} of two textures (read as the product of their means)"] += 1
+
     def inert(self, *names: str) -> None:
         """Mark inputs that change nothing here (emission inputs with emission off, a coat's roughness
         without a coat): read, so not named."""
