@@ -357,7 +357,8 @@ def test_omnisurface_lux_emission_is_an_exitance():
 
 def test_omniglass_is_a_dielectric_with_its_tint_as_a_datasheet_transmittance(tmp_path):
     """OmniGlass: opacity 0 (a dielectric), ior = glass_ior, roughness = frosting_roughness, and a tinted
-    glass_color (grey τ = 0.8) the thin slab's normal transmittance (1 − R)² τ/(1 − R² τ²), R = ((n−1)/(n+1))².
+    glass_color (grey τ = 0.8) the thin slab's normal transmittance (1 − R)² τ/(1 − R² τ²),
+    R = ((n−1)/(n+1))².
     Today's matte surfaces leave an opacity-0 pane out (it is named) and count the carried glazing inputs."""
     from pxr import Usd, UsdShade
 

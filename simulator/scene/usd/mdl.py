@@ -5,7 +5,8 @@ A material whose ``outputs:mdl:surface`` is a shader with
 and ``info:mdl:sourceAsset:subIdentifier`` naming the material is read from
 the inputs the stage authors; an input not authored takes the module's
 default. The formulas follow each module's own (OmniPBR.mdl, OmniGlass.mdl,
-OmniSurfaceBase.mdl; docs/REFERENCES.md §Omniverse MDL materials); ``lerp(a, b, t) = (1 − t) a + t b`` and ``mean(tex)`` is
+OmniSurfaceBase.mdl; docs/REFERENCES.md §Omniverse MDL materials);
+``lerp(a, b, t) = (1 − t) a + t b`` and ``mean(tex)`` is
 a texture's mean (:mod:`.textures`, ``colorSpace`` ``auto``/``sRGB``/``raw``):
 
 OmniPBR (``OmniPBR``, ``OmniPBR_Opacity``, ``OmniPBR_ClearCoat*``)
@@ -268,7 +269,8 @@ _MODELS = {
     "OmniPBR_ClearCoat": (OMNIPBR_DEFAULTS, _map_omnipbr),
     "OmniPBR_ClearCoat_Opacity": (OMNIPBR_DEFAULTS, _map_omnipbr),
     "OmniGlass": (OMNIGLASS_DEFAULTS, _map_omniglass), "OmniGlass_Opacity": (OMNIGLASS_DEFAULTS, _map_omniglass),
-    "OmniSurface": (OMNISURFACE_DEFAULTS, _map_omnisurface), "OmniSurfaceBase": (OMNISURFACE_DEFAULTS, _map_omnisurface),
+    "OmniSurface": (OMNISURFACE_DEFAULTS, _map_omnisurface),
+    "OmniSurfaceBase": (OMNISURFACE_DEFAULTS, _map_omnisurface),
     "OmniSurfaceLite": (OMNISURFACE_DEFAULTS, _map_omnisurface),
     "OmniSurfaceLiteBase": (OMNISURFACE_DEFAULTS, _map_omnisurface),
 }

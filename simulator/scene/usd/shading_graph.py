@@ -205,7 +205,8 @@ def _uv_texture_mean(ctx: _Context, node: Node, output: str, depth: int) -> Valu
     space = str(space_port.value) if space_port is not None and space_port.value else "auto"
     rgba = _mean_rgba(ctx, port.value, space)
     if rgba is None:
-        raise NotUniform(f"connected to a UsdUVTexture whose file {os.path.basename(port.value)} is missing or unreadable")
+        raise NotUniform(f"connected to a UsdUVTexture whose file {os.path.basename(port.value)} is missing or "
+                         "unreadable")
     chans = _OUTPUT_CHANNELS.get(output)
     if chans is None:
         raise NotUniform(f"connected to a UsdUVTexture output {output!r}, which it has not")
