@@ -230,6 +230,8 @@ def _map_omnisurface(ctx: _Context, ins: SurfaceInputs) -> dict:
         "roughness": (ins.scalar("specular_reflection_roughness"), w("specular_reflection_roughness")),
         "ior": (ior, w("specular_reflection_ior")),
     }
+    ins.products(("diffuse_reflection_weight", "diffuse_reflection_color"), ("coat_weight", "coat_color"),
+                 ("emission_weight", "emission_color"), ("emission_intensity", "emission_color"))
     _coat(out, ins, "coat_weight", "coat_color", "coat_roughness", ("coat_ior", "coat_affect_color",
                                                                    "coat_affect_roughness"))
     weight = ins.scalar("emission_weight")
