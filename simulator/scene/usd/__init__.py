@@ -206,6 +206,7 @@ from simulator.scene.usd.stage import (
     _check_options,
     _collect_composition_errors,
     _is_rendered,
+    _mtlx_references_quiet,
     _open_stage,
     _reading_context,
     _select_variants,
@@ -317,8 +318,9 @@ def load_stage(
     the affected axes, with a warning.
     """
     _check_options(path, light_units, radiometric_spectrum)
-    stage = _open_stage(path)
-    _select_variants(stage, str(path), variants or {})
+    with _mtlx_references_quiet():  # usd-core composes no .mtlx; the material reader opens them
+        stage = _open_stage(path)
+        _select_variants(stage, str(path), variants or {})
     mpu, up_axis = _world_frame(stage, path)
     ctx = _reading_context(path, mpu, up_axis, light_units, radiometric_spectrum)
     _collect_composition_errors(stage, ctx)
