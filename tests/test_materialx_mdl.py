@@ -570,3 +570,13 @@ def test_a_binding_on_a_parent_into_a_referenced_mtlx_reaches_its_meshes(tmp_pat
                  '    )\n    {\n    }\n}\n')
     scene = load_stage(p)
     np.testing.assert_allclose(scene.geometry.albedo, float(srgb_to_linear(np.array([188 / 255]))[0]), rtol=1e-9)
+
+
+def test_usd_prints_nothing_for_the_mtlx_reference_it_cannot_compose(tmp_path, capfd):
+    """usd-core's own stderr warning for the .mtlx reference (no usdMtlx plugin) is dropped, and the run's
+    warnings do not call it a composition error: the reader reads the document."""
+    _png(tmp_path / "grey.png", 188)
+    scene = load_stage(_mtlx_stage(tmp_path, MTLX.format(texture="grey.png")))
+    err = capfd.readouterr().err
+    assert "look.mtlx" not in err, err
+    assert not any("composition error" in w for w in scene.warnings), scene.warnings
