@@ -152,6 +152,17 @@ def test_inline_open_pbr_emission_luminance_is_in_nits(tmp_path):
     _check_furnace(tmp_path, _stage(tmp_path, looks), "photometric", 0.5, 100.0)
 
 
+def test_inline_gltf_pbr_base_color_and_emissive_strength(tmp_path):
+    """gltf_pbr: diffuseColor = base_color 0.5; emissiveColor = emissive 0.25 × emissive_strength 4 = 1
+    W m⁻² sr⁻¹: E = 2π W/m²."""
+    looks = _shader_material("ND_gltf_pbr_surfaceshader",
+                             "                color3f inputs:base_color = (0.5, 0.5, 0.5)\n"
+                             "                float inputs:metallic = 0\n"
+                             "                color3f inputs:emissive = (0.25, 0.25, 0.25)\n"
+                             "                float inputs:emissive_strength = 4")
+    _check_furnace(tmp_path, _stage(tmp_path, looks), "radiometric", 0.5, 1.0)
+
+
 def test_open_pbr_emission_in_radiometric_units_divides_by_the_efficacy(tmp_path):
     """With radiometric light units, 100 cd/m² of an equal-energy emitter is 100/K W m⁻² sr⁻¹,
     K = 182.46 lm/W (the run's spectrum): the reader's radiometric emission is exactly that."""
@@ -427,13 +438,15 @@ def test_open_pbr_lightbulb_reads_as_its_authors_set_it(tmp_path):
 def test_defaults_tables_match_the_materialx_library():
     """Every default in the mapping tables is the MaterialX standard library nodedef's own value."""
     mx = pytest.importorskip("MaterialX")
-    from simulator.scene.usd.materialx import OPEN_PBR_DEFAULTS, PREVIEW_DEFAULTS, STANDARD_SURFACE_DEFAULTS
+    from simulator.scene.usd.materialx import (GLTF_PBR_DEFAULTS, OPEN_PBR_DEFAULTS, PREVIEW_DEFAULTS,
+                                               STANDARD_SURFACE_DEFAULTS)
 
     lib = mx.createDocument()
     mx.loadLibraries(mx.getDefaultDataLibraryFolders(), mx.getDefaultDataSearchPath(), lib)
     for nodedef, table in (("ND_standard_surface_surfaceshader", STANDARD_SURFACE_DEFAULTS),
                            ("ND_open_pbr_surface_surfaceshader", OPEN_PBR_DEFAULTS),
-                           ("ND_UsdPreviewSurface_surfaceshader", PREVIEW_DEFAULTS)):
+                           ("ND_UsdPreviewSurface_surfaceshader", PREVIEW_DEFAULTS),
+                           ("ND_gltf_pbr_surfaceshader", GLTF_PBR_DEFAULTS)):
         nd = lib.getNodeDef(nodedef)
         assert nd is not None, nodedef
         for name, default in table.items():

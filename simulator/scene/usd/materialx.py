@@ -1,6 +1,6 @@
 """MaterialX surfaces: inline UsdShade networks and referenced ``.mtlx`` documents, as UsdPreviewSurface inputs.
 
-Three surface models (docs/REFERENCES.md §MaterialX surfaces) are mapped onto UsdPreviewSurface's inputs (the dict
+Four surface models (docs/REFERENCES.md §MaterialX surfaces) are mapped onto UsdPreviewSurface's inputs (the dict
 :func:`simulator.scene.usd.materials._preview_surface_inputs` returns,
 ``{input name: (value, where)}``), their inputs read as uniform values
 (:mod:`.shading_graph`: constants, texture means, linear math):
@@ -30,6 +30,11 @@ Three surface models (docs/REFERENCES.md §MaterialX surfaces) are mapped onto U
     ``emission_luminance`` (cd/m², whatever the light units) times
     ``emission_color`` as ``emissiveColor`` in the stage's light units
     (:func:`.surface_mapping.nits_in_light_units`).
+
+``ND_gltf_pbr_surfaceshader`` (glTF 2.0 PBR)
+    ``base_color``, ``metallic``, ``roughness``, ``ior``, ``clearcoat``,
+    ``emissive · emissive_strength``, ``transmission`` (tinted by
+    ``base_color``), ``alpha`` by ``alpha_mode`` (:func:`_map_gltf_pbr`).
 
 Every input authored away from its default that no formula reads (sheen,
 fuzz, thin film, anisotropy, normal maps, subsurface radius, ...) is named in
@@ -96,6 +101,17 @@ OPEN_PBR_DEFAULTS = {
     "coat_ior": 1.6, "coat_darkening": 1.0,
     "thin_film_weight": 0.0, "thin_film_thickness": 0.5, "thin_film_ior": 1.4,
     "emission_luminance": 0.0, "emission_color": _WHITE, "geometry_opacity": 1.0, "geometry_thin_walled": False,
+}
+
+#: ND_gltf_pbr_surfaceshader's inputs that can change a reading, with the nodedef's defaults
+#: (``attenuation_distance``, default infinite, has no value: authored, it is named)
+GLTF_PBR_DEFAULTS = {
+    "base_color": _WHITE, "metallic": 1.0, "roughness": 1.0, "occlusion": 1.0, "transmission": 0.0,
+    "specular": 1.0, "specular_color": _WHITE, "ior": 1.5, "alpha": 1.0, "alpha_mode": 0, "alpha_cutoff": 0.5,
+    "iridescence": 0.0, "iridescence_ior": 1.3, "iridescence_thickness": 100.0, "sheen_color": (0.0, 0.0, 0.0),
+    "sheen_roughness": 0.0, "clearcoat": 0.0, "clearcoat_roughness": 0.0, "emissive": (0.0, 0.0, 0.0),
+    "emissive_strength": 1.0, "thickness": 0.0, "attenuation_color": _WHITE, "anisotropy_strength": 0.0,
+    "anisotropy_rotation": 0.0, "dispersion": 0.0,
 }
 
 #: MaterialX node categories named in ``info:id`` (``ND_<category>_<type>``), longest first
@@ -397,11 +413,60 @@ def _map_open_pbr(ctx: _Context, ins: SurfaceInputs) -> dict:
     return out
 
 
+def _map_gltf_pbr(ctx: _Context, ins: SurfaceInputs) -> dict:
+    """ND_gltf_pbr_surfaceshader (glTF 2.0 metallic-roughness and its extensions).
+
+    ``diffuseColor = base_color``, ``metallic``, ``roughness``, ``ior``,
+    ``clearcoat``, ``clearcoatRoughness = clearcoat_roughness``,
+    ``emissiveColor = emissive · emissive_strength`` (as ``emissiveColor``);
+    KHR_materials_specular's ``specular``/``specular_color`` on a dielectric
+    is the specular workflow as for standard_surface
+    (``F0 = specular · specular_color · ((n − 1)/(n + 1))²``, the extension's
+    own); ``transmission`` is glazing; ``alpha`` with ``alpha_mode`` MASK (1)
+    is a cut-out at ``alpha_cutoff``, BLEND (2) a coverage.
+    """
+    w = ins.where
+    metal, ior = ins.scalar("metallic"), ins.scalar("ior")
+    out = {
+        "diffuseColor": (colour(ins.get("base_color")), w("base_color")),
+        "metallic": (metal, w("metallic")),
+        "roughness": (ins.scalar("roughness"), w("roughness")),
+        "ior": (ior, w("ior")),
+        "occlusion": (ins.scalar("occlusion"), w("occlusion")),
+        "emissiveColor": (colour(ins.get("emissive") * ins.get("emissive_strength")),
+                          f"gltf_pbr {w('emissive')} x {w('emissive_strength')}"),
+    }
+    ins.products(("emissive", "emissive_strength"))
+    if ins.scalar("clearcoat") > 0.0:
+        out["clearcoat"] = (ins.scalar("clearcoat"), w("clearcoat"))
+        out["clearcoatRoughness"] = (ins.scalar("clearcoat_roughness"), w("clearcoat_roughness"))
+    else:
+        ins.inert("clearcoat_roughness")
+    _specular(out, ins, "specular", "specular_color", metal, ior)
+    # KHR_materials_transmission: base_color tints what passes (attenuation_* is a volume: named)
+    transmission(out, ins, "transmission", "base_color", ior)
+    mode = int(float(ins.token("alpha_mode")))  # 0 OPAQUE (alpha ignored), 1 MASK, 2 BLEND
+    if mode == 0:
+        ins.inert("alpha", "alpha_cutoff")
+    elif not ins.is_default("alpha"):
+        if "opacity" in out:
+            ins.not_mapped("alpha", "a cut-out alpha beside transmission")
+        else:
+            out["opacity"] = (ins.scalar("alpha"), w("alpha"))
+            out["opacityMode"] = ("presence", w("alpha_mode"))
+            if mode == 1:
+                out["opacityThreshold"] = (ins.scalar("alpha_cutoff"), w("alpha_cutoff"))
+    if mode != 1:
+        ins.inert("alpha_cutoff")
+    return out
+
+
 #: surface model -> (defaults, mapping)
 _MODELS = {
     "UsdPreviewSurface": (PREVIEW_DEFAULTS, _map_preview),
     "standard_surface": (STANDARD_SURFACE_DEFAULTS, _map_standard),
     "open_pbr_surface": (OPEN_PBR_DEFAULTS, _map_open_pbr),
+    "gltf_pbr": (GLTF_PBR_DEFAULTS, _map_gltf_pbr),
 }
 
 

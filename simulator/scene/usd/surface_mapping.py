@@ -200,10 +200,12 @@ def transmission(out: dict, ins: SurfaceInputs, weight_name: str, tint_name: str
     datasheet transmittance of a thin slab with internal transmittance ``τ``:
     ``probesim:transmittance = (1 − R)² τ / (1 − R² τ²)``
     (:func:`slab_transmittance`); a tint on a partial transmission is named.
+    Call it after every other use of ``tint_name`` (without transmission the
+    tint is marked as changing nothing).
     """
     weight = ins.scalar(weight_name)
     if weight <= 0.0:
-        ins.not_mapped(tint_name, "a transmission colour without transmission")
+        ins.inert(tint_name)  # a transmission colour without transmission changes nothing
         return
     out["opacity"] = (max(0.0, 1.0 - weight), f"1 - {ins.where(weight_name)}")
     tau = ins.scalar(tint_name)
