@@ -593,3 +593,36 @@ def test_usd_prints_nothing_for_the_mtlx_reference_it_cannot_compose(tmp_path, c
     err = capfd.readouterr().err
     assert "look.mtlx" not in err, err
     assert not any("composition error" in w for w in scene.warnings), scene.warnings
+
+
+def test_gltf_pbr_orm_channels_of_a_1_38_document(tmp_path):
+    """A MaterialX 1.38 document (the layout of the MaterialX project's gltf_pbr examples) picks metallic,
+    roughness and occlusion out of one ORM image with ``channels``: the document upgrade turns each into an
+    extract node, so metallic is the mean of B (200/255), roughness of G (100/255), occlusion of R (50/255)."""
+    from PIL import Image
+
+    (tmp_path / "tex").mkdir()
+    orm = np.dstack([np.full((2, 2), v, np.uint8) for v in (50, 100, 200)])
+    Image.fromarray(orm).save(tmp_path / "tex" / "orm.png")
+    doc = ('<?xml version="1.0"?>\n<materialx version="1.38" colorspace="lin_rec709" fileprefix="tex/">\n'
+           '  <nodegraph name="NG">\n    <tiledimage name="orm" type="vector3">\n'
+           '      <input name="file" type="filename" value="orm.png" />\n    </tiledimage>\n'
+           '    <output name="out_orm" type="vector3" nodename="orm" />\n  </nodegraph>\n'
+           '  <gltf_pbr name="SR" type="surfaceshader">\n'
+           '    <input name="metallic" type="float" nodegraph="NG" output="out_orm" channels="z" />\n'
+           '    <input name="roughness" type="float" nodegraph="NG" output="out_orm" channels="y" />\n'
+           '    <input name="occlusion" type="float" nodegraph="NG" output="out_orm" channels="x" />\n'
+           '  </gltf_pbr>\n  <surfacematerial name="Wall" type="material">\n'
+           '    <input name="surfaceshader" type="surfaceshader" nodename="SR" />\n  </surfacematerial>\n'
+           '</materialx>\n')
+    from pxr import Sdf, Usd
+
+    from simulator.scene.usd.materialx import _from_document, _mtlx_binding
+
+    stage = Usd.Stage.Open(str(_mtlx_stage(tmp_path, doc)))
+    ctx = _ctx()
+    out = _from_document(ctx, _mtlx_binding(ctx, stage, Sdf.Path("/World/Looks/Wall")))
+    assert out["metallic"][0] == pytest.approx(200 / 255, rel=1e-9)
+    assert out["roughness"][0] == pytest.approx(100 / 255, rel=1e-9)
+    assert out["occlusion"][0] == pytest.approx(50 / 255, rel=1e-9)
+    assert out["diffuseColor"][0] == (1.0, 1.0, 1.0)  # glTF's default base_color
