@@ -626,3 +626,44 @@ def test_gltf_pbr_orm_channels_of_a_1_38_document(tmp_path):
     assert out["roughness"][0] == pytest.approx(100 / 255, rel=1e-9)
     assert out["occlusion"][0] == pytest.approx(50 / 255, rel=1e-9)
     assert out["diffuseColor"][0] == (1.0, 1.0, 1.0)  # glTF's default base_color
+
+
+WRAPPER_MDL = '''mdl 1.4;
+
+using ::OmniPBR import OmniPBR;
+import ::tex::gamma_mode;
+
+// a per-asset material: a template called with literal arguments
+export material Painted(*)
+ = OmniPBR(
+    diffuse_color_constant: color(0.625f),
+    diffuse_tint: color(0.8, 0.8, 0.8),   /* 0.625 x 0.8 = 0.5 */
+    diffuse_texture: texture_2d(),
+    reflection_roughness_constant: 0.55,
+    enable_emission: true,
+    emissive_color: color(1.0, 1.0, 1.0),
+    emissive_intensity: {intensity},
+    normalmap_texture: texture_2d("./Painted_Normal.png", ::tex::gamma_linear),
+    bump_factor: math::pow(2.0, 0.5)
+);
+'''
+
+
+def test_a_wrapper_mdl_is_read_from_its_literal_arguments(tmp_path):
+    """``Painted.mdl`` only calls OmniPBR with literal arguments: they are the material's inputs
+    (albedo 0.625 × 0.8 = 0.5; emissive_intensity 10π → 10 cd/m²), so the furnace reads 20π lx; the
+    normal map is named and the argument that is not a literal (a call) is named too."""
+    (tmp_path / "Painted.mdl").write_text(WRAPPER_MDL.replace("{intensity}", repr(10 * math.pi)))
+    looks = _mdl_material("Painted", "")
+    out = _check_furnace(tmp_path, _stage(tmp_path, looks), "photometric", 0.5, 10.0)
+    line = next(w for w in out.record["warnings"] if "ignored:" in w)
+    assert "bump_factor of Painted.mdl (not a literal" in line, line
+    assert "inputs:normalmap_texture of OmniPBR (not mapped)" in line, line
+
+
+def test_the_stage_input_wins_over_the_wrapper_argument(tmp_path):
+    """An input the stage authors on the shader overrides the wrapper module's argument of the same name."""
+    (tmp_path / "Painted.mdl").write_text(WRAPPER_MDL.replace("{intensity}", "0.0"))
+    looks = _mdl_material("Painted", "                color3f inputs:diffuse_tint = (0.4, 0.4, 0.4)")
+    scene = load_stage(_stage(tmp_path, looks))
+    np.testing.assert_allclose(scene.geometry.albedo, 0.625 * 0.4, rtol=1e-6)

@@ -44,6 +44,10 @@ OmniSurface (``OmniSurface``, ``OmniSurfaceBase``, ``OmniSurfaceLite*``)
     ``emission_weight · emission_intensity · emission_color`` in cd/m² for
     ``emission_mode`` 1 (nit), and / π for 0 (lux, the default: an exitance).
 
+A per-asset module (``Steel.mdl``) whose material only calls one of these
+templates with literal arguments is read through those arguments
+(:mod:`.mdl_wrapper`); the stage's authored inputs win over them.
+
 Inputs that only place a texture (tiling, rotation, UV set, projection) do
 not change a uniform reading and are not named; every other input authored
 away from its default that no formula reads (normal maps, anisotropy,
@@ -61,6 +65,8 @@ from pxr import UsdShade
 from simulator.units import luminance_grey
 from simulator.scene.usd.context import _Context
 from simulator.scene.usd.materialx import _coat, _specular, _usd_node
+from simulator.scene.usd.mdl_wrapper import wrapper_arguments
+from simulator.scene.usd.shading_graph import Port
 from simulator.scene.usd.surface_mapping import (SurfaceInputs, colour, complete, ior_of_f0,
                                                  nits_in_light_units, slab_transmittance, transmission)
 from simulator.scene.usd.textures import _mean_rgba
@@ -180,7 +186,7 @@ def _map_omnipbr(ctx: _Context, ins: SurfaceInputs) -> dict:
         out["opacity"] = (op, w("opacity_constant"))
         out["opacityMode"] = ("presence", "OmniPBR cutout_opacity")
         out["opacityThreshold"] = (ins.scalar("opacity_threshold"), w("opacity_threshold"))
-        ins.get("opacity_mode")
+        ins.inert("opacity_mode")  # which channel of the opacity map: its mean over RGB is read
     else:
         ins.inert("opacity_constant", "opacity_texture", "opacity_mode", "opacity_threshold")
     return out
@@ -277,6 +283,21 @@ _MODELS = {
     "OmniSurfaceLiteBase": (OMNISURFACE_DEFAULTS, _map_omnisurface),
 }
 
+def _add_wrapper_arguments(ctx: _Context, node, module: str, wrapped: tuple) -> None:
+    """A wrapper module's literal arguments as the node's inputs, under the stage's own authored ones."""
+    _, args, odd = wrapped
+    for arg, value in args.items():
+        port = node.inputs.get(arg)
+        if port is not None and (port.node is not None or port.value is not None):
+            continue  # the stage's opinion wins
+        if isinstance(value, tuple) and value and value[0] == "texture":
+            node.inputs[arg] = Port(f"{module}: {arg}", value=value[1] or None, colorspace=value[2])
+        else:
+            node.inputs[arg] = Port(f"{module}: {arg}", value=value)
+    for arg in odd:
+        ctx.ignored[f"{arg} of {module} (not a literal: the template's default used)"] += 1
+
+
 def _mdl_shader(material: UsdShade.Material) -> tuple[UsdShade.Shader, str, str] | None:
     """``(shader, module file name, material name)`` of a material's MDL surface, None without one."""
     shader, _, _ = material.ComputeSurfaceSource("mdl")
@@ -297,12 +318,19 @@ def _mdl_inputs(ctx: _Context, material: UsdShade.Material) -> dict | None:
     if found is None:
         return None
     shader, module, name = found
-    if name not in _MODELS:
-        ctx.not_read[f"material(s) with an MDL surface other than OmniPBR/OmniGlass/OmniSurface ({module}), "
-                     "not mapped (displayColor or 0.18 used)"] += 1
-        return {}
+    wrapped = None
+    if name not in _MODELS:  # a per-asset module that calls a template with literal arguments?
+        asset = shader.GetSourceAsset("mdl")
+        wrapped = wrapper_arguments(ctx, asset.resolvedPath) if asset.resolvedPath else None
+        if wrapped is None or wrapped[0] not in _MODELS:
+            ctx.not_read[f"material(s) with an MDL surface other than OmniPBR/OmniGlass/OmniSurface ({module}), "
+                         "not mapped (displayColor or 0.18 used)"] += 1
+            return {}
+        name = wrapped[0]
     defaults, mapping = _MODELS[name]
     node = _usd_node(ctx, shader, {})
+    if wrapped is not None:
+        _add_wrapper_arguments(ctx, node, module, wrapped)
     for key in [k for k in node.inputs if k.startswith(_PLACEMENT)]:
         del node.inputs[key]
     ins = SurfaceInputs(ctx, node, defaults, name)
