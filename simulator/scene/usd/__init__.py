@@ -226,6 +226,7 @@ from simulator.scene.usd.stage import (
     _check_options,
     _collect_composition_errors,
     _is_rendered,
+    _mtlx_references_quiet,
     _open_stage,
     _reading_context,
     _select_variants,
@@ -344,8 +345,9 @@ def load_stage(
     """
     _check_options(path, light_units, radiometric_spectrum, time)
     with PxrDiagnostics() as pxr_said:  # pxr's own warnings: into the summary line, not onto stderr
-        stage = _open_stage(path)
-        _select_variants(stage, str(path), variants or {})
+        with _mtlx_references_quiet():  # usd-core composes no .mtlx; the material reader opens them
+            stage = _open_stage(path)
+            _select_variants(stage, str(path), variants or {})
         mpu, up_axis = _world_frame(stage, path)
         ctx = _reading_context(path, mpu, up_axis, light_units, radiometric_spectrum, time)
         _collect_composition_errors(stage, ctx)

@@ -242,8 +242,9 @@ def _finish_warnings(ctx: _Context) -> None:
 def _material_inputs(ctx: _Context, prim: Usd.Prim) -> dict | None:
     """The bound UsdPreviewSurface's inputs as ``{name: (value, where)}``, None without a usable material."""
     material, _ = UsdShade.MaterialBindingAPI(prim).ComputeBoundMaterial(UsdShade.Tokens.full)
-    if not material:
-        return None
+    if not material:  # a binding into a referenced .mtlx composes no prim (no usdMtlx in usd-core)
+        from simulator.scene.usd.materialx import _unresolved_binding
+        return _unresolved_binding(ctx, prim)
     key = str(material.GetPath())
     if key not in ctx.materials:
         ctx.materials[key] = _preview_surface_inputs(ctx, material)
@@ -251,19 +252,26 @@ def _material_inputs(ctx: _Context, prim: Usd.Prim) -> dict | None:
 
 
 def _preview_surface_inputs(ctx: _Context, material: UsdShade.Material) -> dict | None:
-    """Read diffuseColor/emissiveColor/opacity off a material's UsdPreviewSurface."""
+    """Read diffuseColor/emissiveColor/opacity off a material's UsdPreviewSurface (or, without one, its
+    MaterialX or Omniverse MDL surface mapped onto UsdPreviewSurface's inputs: :mod:`.materialx`, :mod:`.mdl`)."""
     shader, _, _ = material.ComputeSurfaceSource()
     if not shader or shader.GetShaderId() != "UsdPreviewSurface":
+        from simulator.scene.usd.materialx import _materialx_inputs
+        from simulator.scene.usd.mdl import _mdl_inputs
+        # None: neither MaterialX nor Omniverse MDL; {}: one of them, not mapped (named by its reader)
+        mapped = _materialx_inputs(ctx, material)
+        mapped = _mdl_inputs(ctx, material) if mapped is None else mapped
         ident = shader.GetShaderId() if shader else None
         if not ident:  # e.g. only an outputs:mdl:surface or outputs:mtlx:surface
             contexts = sorted({o.GetBaseName().rpartition(":")[0] or "universal" for o in material.GetSurfaceOutputs()
                                if o.HasConnectedSource()})
             ident = "/".join(contexts) or "no"
-        ctx.not_read[f"material(s) with a {ident} surface, not UsdPreviewSurface (displayColor or 0.18 used)"] += 1
+        if mapped is None:
+            ctx.not_read[f"material(s) with a {ident} surface, not UsdPreviewSurface (displayColor or 0.18 used)"] += 1
         attr = material.GetPrim().GetAttribute(REFLECTANCE_ATTR)
         if attr and attr.HasAuthoredValue():
             ctx.ignored[f"{REFLECTANCE_ATTR} on a material with no UsdPreviewSurface"] += 1
-        return None
+        return mapped or None
     _count_ignored_inputs(ctx, shader)
     curve = _measured_reflectance(ctx, material, shader)
     inputs = {name: _input_value(ctx, shader, name, default) for name, default in _PREVIEW_DEFAULTS.items()
