@@ -85,3 +85,35 @@ def test_billions_of_cells_exit_2_at_once(tmp_path):
     assert err.count("\n") == 0 and "Traceback" not in err
     assert "grid[1].spacing" in err and "10,000,000 x 10,000,000 cells" in err and "PiB of memory" in err
     assert not (tmp_path / "out.csv").exists()
+
+
+def test_a_study_candidate_grid_past_the_memory_is_refused(tmp_path):
+    """A study's ``spacing_m`` of 1 µm on the office floor (~10¹³ candidates)
+    is refused naming the candidate set's key and prim, before any is built."""
+    from simulator.study.runner import run_study
+    from simulator.study.schema import load_study
+
+    p = tmp_path / "s.toml"
+    p.write_text(textwrap.dedent(f"""\
+        stage = "{(ROOT / 'stages' / 'office.usda').as_posix()}"
+        [[candidates]]
+        name = "wp"
+        on = ["/Office/Room/Floor"]
+        height_m = 0.8
+        spacing_m = 1e-6
+        [[group]]
+        name = "sky"
+        lights = ["/Office/Sky"]
+        [[scenario]]
+        name = "day"
+        levels = {{ sky = 1.0 }}
+        [[zone]]
+        name = "all"
+        candidates = "wp"
+        targets = {{ mean = 300 }}
+        """))
+    study, path = load_study(p)
+    with pytest.raises(UserError) as e:
+        run_study(study, path, tmp_path / "out", reference_run=False, mode="inprocess")
+    msg = str(e.value)
+    assert "candidates[0].spacing_m" in msg and "/Office/Room/Floor" in msg and "PiB of memory" in msg and "\n" not in msg
