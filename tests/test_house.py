@@ -71,3 +71,41 @@ def test_no_import_cycles():
             visit(v)
     assert not cycles, cycles
     assert "simulator.scene.photometry.files" in graph["simulator.scene.photometry"]
+
+
+def _development_table() -> list[tuple[str, str]]:
+    """README.md's Development table: (room, job) per row."""
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    part = text[text.index("## Development") :]
+    rows = []
+    for line in part.splitlines()[1:]:
+        if line.startswith("## "):
+            break
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if line.startswith("| `") and len(cells) == 2:
+            rows.append((cells[0], cells[1]))
+    return rows
+
+
+def test_the_development_table_names_what_is_there():
+    """Every room of README.md's Development table exists, and every file or folder
+    its job names (``x.py``, ``x/``) is inside that room; every subpackage of
+    ``simulator`` has a row."""
+    import re
+
+    rows = _development_table()
+    rooms = []
+    for room, job in rows:
+        for r in re.findall(r"`([^`]+)`", room):
+            assert (ROOT / r).exists(), r
+            rooms.append(r.rstrip("/"))
+        base = ROOT / re.findall(r"`([^`]+)`", room)[0]
+        if not base.is_dir():
+            continue
+        for name in re.findall(r"`([\w./]+(?:\.py|/))`", job):
+            if (ROOT / name).exists() and (name.startswith(("simulator/", "docs/")) or "/" not in name.rstrip("/")):
+                continue  # a path from the top of the tree (setup.py, simulator/...)
+            found = (base / name).exists() or any(p.as_posix().endswith("/" + name.rstrip("/")) for p in base.rglob("*"))
+            assert found, f"{room}: {name}"
+    for pkg in sorted(p.parent for p in PACKAGE.glob("*/__init__.py")):
+        assert pkg.relative_to(ROOT).as_posix() in rooms, pkg
