@@ -109,3 +109,16 @@ def test_the_development_table_names_what_is_there():
             assert found, f"{room}: {name}"
     for pkg in sorted(p.parent for p in PACKAGE.glob("*/__init__.py")):
         assert pkg.relative_to(ROOT).as_posix() in rooms, pkg
+
+
+def test_the_readme_claims_no_peer_figure_on_the_same_room():
+    """The Mitsuba and Radiance times in README.md's "How it compares" were
+    measured on another office than the bundled one: the text says so and no
+    longer claims "the same room" for them."""
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    part = text[text.index("## How it compares") :]
+    part = part[: part.index("\n## ", 4)]
+    item = part[part.index("**Furnished, interreflecting rooms**") :]
+    item = item[: item.index("\n- **")]
+    assert "5.7 s" in item and "same room" not in item
+    assert "not measured" in item and "another" in item and "office_bench.toml" in item
