@@ -11,10 +11,13 @@ Notes
 -----
 Luminous efficacy of radiation of a spectrum S(λ) over 380–780 nm:
 
-    K(S) = K_m · ∫ V(λ) S(λ) dλ / ∫ S(λ) dλ,   K_m = 683 lm/W,
+    K(S) = K_m · ∫ V(λ) S(λ) dλ / ∫ S(λ) dλ,   K_m = 683.002 lm/W,
 
 with V the CIE 1924 photopic luminous efficiency function, integrated at
-1 nm with the trapezoid rule. For CIE Illuminant D65 K ≈ 205.15 lm/W; for an
+1 nm with the trapezoid rule. K_m is the CIE's (CIE 018:2019): the SI fixes
+683 lm/W at 540 THz (555.016 nm in standard air), where V is 0.999997, so
+the peak of K_m·V at 555 nm is 683/V(555.016 nm) = 683.002 lm/W; 683 for
+K_m would put every lumen 2.9e-6 low against the SI. For CIE Illuminant D65 K ≈ 205.15 lm/W; for an
 equal-energy spectrum K ≈ 182.46 lm/W.
 
 References
@@ -30,6 +33,7 @@ from functools import lru_cache
 import numpy as np
 
 __all__ = [
+    "K_CD",
     "K_M",
     "SPECTRA",
     "luminous_efficacy",
@@ -39,8 +43,11 @@ __all__ = [
     "luminance_grey",
 ]
 
-#: maximum luminous efficacy of radiation for photopic vision, lm/W
-K_M = 683.0
+#: luminous efficacy of monochromatic radiation of 540 × 10¹² Hz, lm/W (exact: the SI's K_cd)
+K_CD = 683.0
+#: maximum luminous efficacy of radiation for photopic vision, lm/W: K_cd / V(555.016 nm), the CIE's
+#: K_m (CIE 018:2019); docs/REFERENCES.md §Photometry
+K_M = 683.002
 
 #: spectrum names accepted in configs
 SPECTRA = ("D65", "E")
@@ -69,7 +76,7 @@ def _spectrum_values(spectrum: str | float) -> np.ndarray:
 #: K(S) of the named spectra, lm/W, from the tables as in :func:`efficacy_from_tables`
 #: (kept as numbers so a run need not import colour-science, ~0.9 s; a test
 #: checks them against the tables)
-NAMED_EFFICACY = {"D65": 205.15204596800118, "E": 182.4573017755176}
+NAMED_EFFICACY = {"D65": 205.15264670605671, "E": 182.457836057514}
 
 
 def luminous_efficacy(spectrum: str | float) -> float:

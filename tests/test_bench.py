@@ -21,3 +21,22 @@ def test_bench_rows_for_each_estimator():
     assert abs(by["light"].rays_per_s / by["light"].samples_per_s - 1.0) < 1e-9
     assert info["device"] == "cpu"
     assert "blind" in format_bench(rows)
+
+
+def test_bench_samples_obey_the_schema_rule(monkeypatch, capsys, tmp_path):
+    """``probesim bench --samples`` is checked by ``[simulation] samples``' own rule
+    (``config.overrides.check_flags``, the schema), not a check of its own: the
+    same one line and exit 2 as ``probesim run --samples``, for 0 and −3."""
+    from simulator.commands.cli import main
+    from simulator.config import overrides
+
+    seen = []
+    real = overrides.check_flags
+    monkeypatch.setattr(overrides, "check_flags", lambda **kw: (seen.append(kw), real(**kw))[1])
+    for bad in ("0", "-3"):
+        assert main(["bench", str(CONFIGS / "point.toml"), "--samples", bad]) == 2
+        bench_err = capsys.readouterr().err.strip()
+        assert main(["run", str(CONFIGS / "point.toml"), "--samples", bad, "-q", "-o", str(tmp_path / "x.csv")]) == 2
+        run_err = capsys.readouterr().err.strip()
+        assert bench_err == run_err == f"probesim: error: --samples: must be >= 1, got {bad}"
+    assert seen == [{"samples": 0}, {"samples": -3}]

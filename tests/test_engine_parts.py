@@ -133,21 +133,22 @@ def test_patch_width_axis_is_right_handed():
     np.testing.assert_allclose(np.cross(right, up), normal, atol=1e-15)
 
 
-def test_a_cloned_trace_record_is_its_own():
-    """Each CPU worker of a guide pilot tallies into a row of its own
-    (``tally_row`` on its own copy of the trace parameters). ``copy.copy``
-    of a Warp struct shares the record the kernel reads, so every worker
-    launched with the last row set; the engine's clone must not."""
-    from simulator.engine.device import warp
-    from simulator.engine.driver import _clone_struct
+@pytest.mark.parametrize("threads", [2, 3, 7])
+@pytest.mark.parametrize("n, align", [(101, 8), (64, 8), (9, 8), (5, 8), (100, 1)])
+def test_aligned_fan_out_never_cuts_a_chunk(threads, n, align):
+    """With ``align`` every slice starts at a multiple of it (a guide pilot's
+    tally blocks then stay on one worker), the slices still cover [0, n)
+    once, and there are at most min(threads, ⌈n/align⌉) of them."""
+    hits = np.zeros(n, int)
+    calls = []
+    lock = threading.Lock()
 
-    warp()
-    from simulator.kernels.records import TraceParams
+    def run(offset, dim):
+        with lock:
+            calls.append((offset, dim))
+            hits[offset : offset + dim] += 1
 
-    p = TraceParams()
-    p.tally_row, p.rr_threshold = 0, 0.1
-    q = _clone_struct(p)
-    q.tally_row = 5
-    assert (p.tally_row, p._ctype.tally_row) == (0, 0)
-    assert (q.tally_row, q._ctype.tally_row) == (5, 5)
-    assert abs(q.rr_threshold - 0.1) < 1e-7
+    fan_out(threads, run, n, align=align)
+    assert np.all(hits == 1)
+    assert len(calls) == min(threads, -(-n // align))
+    assert all(o % align == 0 for o, _ in calls)

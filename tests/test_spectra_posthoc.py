@@ -28,6 +28,7 @@ from simulator.spectra.config import load_spectra_settings
 from simulator.spectra.posthoc import apply_posthoc, posthoc_refusal, response_channels, rgb_per_luminance
 from simulator.spectra.reduce import posthoc_ratio
 from simulator.spectra.transport import choose_transport
+from simulator.units import K_M, NAMED_EFFICACY
 
 ROOT = Path(__file__).resolve().parents[1]
 LED = ROOT / "stages" / "spectra" / "grow_led_spd.csv"
@@ -43,7 +44,7 @@ def greenhouse(tmp_path_factory):
 
 def _v_csv(tmp_path: Path) -> Path:
     p = tmp_path / "v_diode.csv"
-    rows = "\n".join(f"{w:g},{683.0 * v!r}" for w, v in zip(grid.WAVELENGTHS_NM, tables.photopic()))
+    rows = "\n".join(f"{w:g},{K_M * v!r}" for w, v in zip(grid.WAVELENGTHS_NM, tables.photopic()))
     p.write_text("wavelength_nm,responsivity_lm_W\n" + rows + "\n")
     return p
 
@@ -66,7 +67,7 @@ def test_a_grey_run_writes_the_standard_columns_only(greenhouse):
 
 
 def test_custom_v_responsivity_reproduces_the_lux_column(greenhouse, tmp_path):
-    """A responsivity of 683·V(λ) lm/W reads the engine's own illuminance
+    """A responsivity of K_m·V(λ) lm/W (K_m = 683.002) reads the engine's own illuminance
     column (spectrum as the stage was read: equal energy), cell by cell, to
     1e-6: the engine carries its two channels in float32 (ulp 6e-8), the
     responses are float64 products of the radiometric one."""
@@ -151,14 +152,14 @@ def _scene(pairs, warnings=()):
 
 def _row(lx, lx_se):
     s = Sensor("s", SensorKind.IRRADIANCE, np.zeros(3), np.array([0, 0, 1.0]))
-    return Reading(s, {"irradiance_W_m2": lx / 205.15204596800118, "irradiance_stderr_W_m2": lx_se / 205.15204596800118,
+    return Reading(s, {"irradiance_W_m2": lx / NAMED_EFFICACY["D65"], "irradiance_stderr_W_m2": lx_se / NAMED_EFFICACY["D65"],
                        "illuminance_lx": lx, "illuminance_stderr_lx": lx_se}, 1, 0.0, "light", None)
 
 
 def test_photometric_runs_scale_from_the_stated_lux():
     """light_units photometric (D65): PPFD = lx / K(D65) × µmol/J(D65), with no
     rewrite (the stage reader's twin was D65 already)."""
-    k = 205.15204596800118
+    k = NAMED_EFFICACY["D65"]  # the stage reader's K(D65)
     scene = _scene([(1.0, k), (2.0, 2 * k)])
     rows = [_row(500.0, 5.0)]
     done = apply_posthoc(rows, scene, "photometric", sources.cie_illuminant("D65"), [R.response("par")])
@@ -229,7 +230,7 @@ def test_probe_patch_and_radiance_rows_get_their_own_columns():
     """A probe's scalar irradiance gives scalar_ppfd (its fluence rate), a
     patch its PPF in µmol/s, a radiance meter its photon radiance; the base
     columns the kinds already have are the CSV's own names."""
-    k = 182.4573017755176
+    k = NAMED_EFFICACY["E"]
     scene = _scene([(1.0, k)])
     probe = Reading(Sensor("p", SensorKind.PROBE, np.zeros(3), np.zeros(3)),
                     {"scalar_irradiance_W_m2": 2.0, "scalar_irradiance_stderr_W_m2": 0.1,

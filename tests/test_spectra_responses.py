@@ -19,7 +19,7 @@ from scipy.integrate import quad
 
 from simulator.errors import UserError
 from simulator.spectra import grid, responses as R, sources, tables
-from simulator.units import NAMED_EFFICACY
+from simulator.units import K_CD, K_M, NAMED_EFFICACY
 
 LED_SPD = Path(__file__).resolve().parents[1] / "stages" / "spectra" / "grow_led_spd.csv"
 
@@ -99,7 +99,7 @@ def test_epar_counts_400_to_750_nm():
     ("s_cone", 0.8173), ("m_cone", 1.4558), ("l_cone", 1.6289), ("rhodopic", 1.4497), ("melanopic", 1.3262),
 ])  # fmt: skip
 def test_d65_elrs_match_cie_s026_table_2(alpha, published_mW_lm):
-    """K_α,v^D65 = ∫ s_α D65 / (683 ∫ V D65), computed from the tables, equals
+    """K_α,v^D65 = ∫ s_α D65 / (K_m ∫ V D65), K_m = 683.002 lm/W,, computed from the tables, equals
     CIE S 026:2018 Table 2 to its 4 decimals (half a unit: 5e-5 mW/lm)."""
     assert 1e3 * R.d65_elr_W_lm(alpha) == pytest.approx(published_mW_lm, abs=5e-5)
 
@@ -135,8 +135,8 @@ def test_scotopic_constant_is_km_over_v_prime_at_540_THz():
     interpolated from the CIE 1951 table at 555.016 nm gives 1700.06 ± 0.01;
     the older 1699 lm/W is K_m / V′(555 nm)."""
     vp = tables.scotopic()
-    assert 683.0 / np.interp(555.016, grid.WAVELENGTHS_NM, vp) == pytest.approx(R.K_PRIME_M_LM_W, abs=0.01)
-    assert 683.0 / np.interp(555.0, grid.WAVELENGTHS_NM, vp) == pytest.approx(1699.0, abs=0.01)
+    assert K_CD / np.interp(555.016, grid.WAVELENGTHS_NM, vp) == pytest.approx(R.K_PRIME_M_LM_W, abs=0.01)
+    assert K_CD / np.interp(555.0, grid.WAVELENGTHS_NM, vp) == pytest.approx(1699.0, abs=0.01)
 
 
 def _write(path, header, rows):
@@ -145,19 +145,19 @@ def _write(path, header, rows):
 
 
 def test_custom_responsivity_equal_to_v_reproduces_photopic(tmp_path):
-    """A responsivity CSV of 683·V(λ) lm/W (absolute) at 1 nm reads exactly the
+    """A responsivity CSV of K_m·V(λ) lm/W (absolute, K_m = 683.002) at 1 nm reads exactly the
     photopic value of any spectrum (D65, a blackbody, the greenhouse LED); a
-    *relative* V(λ) (any scale) reads the photopic value / 683."""
+    *relative* V(λ) (any scale) reads the photopic value / K_m."""
     v = tables.photopic()
     wl = grid.WAVELENGTHS_NM
-    absolute = R.custom_response(_write(tmp_path / "v.csv", "wavelength_nm,responsivity_lm_W", zip(wl, 683 * v)), "vdiode")
+    absolute = R.custom_response(_write(tmp_path / "v.csv", "wavelength_nm,responsivity_lm_W", zip(wl, K_M * v)), "vdiode")
     relative = R.custom_response(_write(tmp_path / "r.csv", "wavelength_nm,responsivity", zip(wl, 5 * v)), "vrel")
     assert absolute.columns("irradiance") == ("vdiode_lm_m2", "vdiode_stderr_lm_m2")
     assert relative.columns("flux") == ("vrel_W", "vrel_stderr_W")
     for s in (sources.cie_illuminant("D65"), sources.blackbody(3000), sources.spd_csv(LED_SPD)):
         ph = R.response("photopic").of(s.values)
         assert absolute.of(s.values) == pytest.approx(ph, rel=1e-9)
-        assert relative.of(s.values) == pytest.approx(ph / 683.0, rel=1e-4)  # V's table peak is 1 at 555 nm to 1e-4
+        assert relative.of(s.values) == pytest.approx(ph / K_M, rel=1e-4)  # V's table peak is 1 at 555 nm to 1e-4
 
 
 @pytest.mark.parametrize("header, rows, fragment", [

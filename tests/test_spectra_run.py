@@ -22,6 +22,7 @@ from simulator.pipeline import run
 from simulator.spectra import grid, sources, tables
 from simulator.spectra.reduce import posthoc_ratio
 from simulator.spectra.responses import response
+from simulator.units import K_M
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -58,9 +59,9 @@ def _table(path: Path) -> list[dict]:
 
 
 def _v_diode(tmp_path: Path) -> Path:
-    """A responsivity CSV of 683·V(λ) lm/W on the spectral grid."""
+    """A responsivity CSV of K_m·V(λ) lm/W (K_m = 683.002) on the spectral grid."""
     p = tmp_path / "v_diode.csv"
-    rows = "\n".join(f"{w:g},{683.0 * v!r}" for w, v in zip(grid.WAVELENGTHS_NM, tables.photopic()))
+    rows = "\n".join(f"{w:g},{K_M * v!r}" for w, v in zip(grid.WAVELENGTHS_NM, tables.photopic()))
     p.write_text("wavelength_nm,responsivity_lm_W\n" + rows + "\n")
     return p
 
@@ -93,7 +94,7 @@ def test_par_and_melanopic_columns_on_a_grey_stage(tmp_path):
 
 
 def test_a_683_v_responsivity_reproduces_the_lux_column(tmp_path):
-    """A custom responsivity of 683·V(λ) lm/W in a radiometric run (equal-energy
+    """A custom responsivity of K_m·V(λ) lm/W in a radiometric run (equal-energy
     spectrum) reads the engine's own illuminance column and its stderr, row
     by row, to 1e-6 relative: the engine carries its lux twin in float32
     (ulp 6e-8, summed over samples), the custom column is a float64 product

@@ -9,7 +9,7 @@ import pytest
 
 from simulator.errors import UserError
 from simulator.spectra import grid, sources, tables
-from simulator.units import emission_pair, luminance_grey
+from simulator.units import K_M, emission_pair, luminance_grey
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -42,13 +42,13 @@ def test_blackbody_integral_matches_stefan_boltzmann_beyond_the_grid():
 def test_spectral_emission_integrates_to_the_engine_pair(units, spec):
     """The spectral density of a stated value has exactly the (radiometric,
     photometric) pair :func:`simulator.units.emission_pair` gives: ∫ S dλ and
-    683 ∫ V S dλ, to 1e-9 (UsdLux: the blackbody colour is luminance-normalised,
+    K_m ∫ V S dλ (K_m = 683.002 lm/W), to 1e-9 (UsdLux: the blackbody colour is luminance-normalised,
     so in photometric units a colour temperature changes only the spectrum)."""
     s = sources.emitter_spectrum(spec)
     density = sources.spectral_emission(250.0, units, s)
     w, lm = emission_pair(250.0, units, spec)
     assert grid.integrate(density) == pytest.approx(w, rel=1e-9)
-    assert 683.0 * grid.integrate(density * tables.photopic()) == pytest.approx(lm, rel=1e-9)
+    assert K_M * grid.integrate(density * tables.photopic()) == pytest.approx(lm, rel=1e-9)
 
 
 def test_light_colour_modulates_its_white_spectrum():

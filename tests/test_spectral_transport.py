@@ -328,12 +328,18 @@ def test_lamps_of_two_spectra_read_their_sum(tmp_path):
 
 
 def test_the_cost_measurement_runs_and_sees_the_green_walls(capsys):
-    """``python -m simulator.spectra.cost`` on a short run (1,000 samples,
+    """``python benchmarks/spectral_cost.py`` on a short run (1,000 samples,
     one repeat) prints a line per response; the one channel's PPFD on the
     green-walled room is biased high (its D65 ratio ignores the green
     interreflections, which carry fewer photons per lumen than D65): the
     mean bias over the five sensors exceeds 4 % where its noise is ~1 %."""
-    from simulator.spectra.cost import NAMES, main, measure
+    import importlib.util
+
+    script = Path(__file__).resolve().parent.parent / "benchmarks" / "spectral_cost.py"
+    spec = importlib.util.spec_from_file_location("spectral_cost", script)
+    cost = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(cost)
+    NAMES, main, measure = cost.NAMES, cost.main, cost.measure
 
     assert main(["--samples", "1000", "--repeats", "1"]) == 0
     text = capsys.readouterr().out

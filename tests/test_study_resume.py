@@ -104,8 +104,12 @@ def test_a_changed_study_recomputes_only_what_changed(tmp_path):
 
 @pytest.mark.skipif(os.environ.get("PROBESIM_SKIP_CLUSTER") == "1", reason="PROBESIM_SKIP_CLUSTER=1")
 def test_two_worker_local_cluster_gives_byte_identical_outputs(tmp_path):
+    """Guided paths, the sun in the sky group (its sunlit patches concentrate the
+    pilot's light, so each chunk's pilot-learnt guide is used): in this process a
+    chunk traces on every core, on the cluster on one thread; the CSVs are the same bytes."""
     pytest.importorskip("distributed")
     path = tiny_study(tmp_path)
+    path.write_text(TINY.replace('method = "light"', 'method = "guided"').replace('["/Office/Sky"]', '["/Office/Sky", "/Office/Sun"]'))
     _, long_a, summ_a = _run(path, tmp_path / "inproc", mode="inprocess")
     res, long_b, summ_b = _run(path, tmp_path / "cluster", mode="local", workers=2)
     assert res.mode == "local" and res.workers == 2 and res.chunks_computed == 4

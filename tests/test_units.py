@@ -7,7 +7,7 @@ from simulator.units import NAMED_EFFICACY, efficacy_from_tables, emission_pair,
 
 @pytest.mark.parametrize("name, published", [("D65", 205.15), ("E", 182.46)])
 def test_named_efficacies_equal_the_tables(name, published):
-    """K(S) = 683·∫V·S/∫S over 380–780 nm at 1 nm, trapezoid rule, CIE 1924
+    """K(S) = K_m·∫V·S/∫S (K_m = 683.002 lm/W) over 380–780 nm at 1 nm, trapezoid rule, CIE 1924
     V(λ): the constants a run uses must be what the tables give (to 1e-12),
     and match the published ≈205.15 lm/W (D65) and ≈182.46 lm/W (equal energy)."""
     assert NAMED_EFFICACY[name] == pytest.approx(efficacy_from_tables(name), rel=1e-12)
@@ -24,7 +24,23 @@ def test_blackbody_efficacy_peaks_near_6600_K():
 def test_emission_pairs_are_twins():
     """Photometric = radiometric × K(S) whichever unit the stage states."""
     w, lm = emission_pair(100.0, "photometric", "D65")
-    assert lm == 100.0 and w == pytest.approx(100.0 / 205.152046, rel=1e-6)
+    assert lm == 100.0 and w == pytest.approx(100.0 / 205.152647, rel=1e-6)
     w, lm = emission_pair(2.0, "radiometric", "E")
-    assert w == 2.0 and lm == pytest.approx(2.0 * 182.457302, rel=1e-6)
+    assert w == 2.0 and lm == pytest.approx(2.0 * 182.457836, rel=1e-6)
     assert luminance_grey((1.0, 1.0, 1.0)) == pytest.approx(1.0)
+
+
+def test_km_is_the_si_efficacy_over_v_at_540_THz():
+    """K_m = 683.002 lm/W (CIE 018:2019) is K_cd / V(555.016 nm), K_cd = 683 lm/W
+    exactly at 540 THz (the SI) and 555.016 nm its wavelength in standard air:
+    V linearly interpolated from the CIE 1924 table there gives 683.0016, so
+    K_m agrees to its three decimals (±0.0005), and 683 itself does not."""
+    import numpy as np
+
+    from simulator.spectra import grid, tables
+    from simulator.spectra.sources import K_M_LM_W
+    from simulator.units import K_CD, K_M
+
+    km = K_CD / np.interp(555.016, grid.WAVELENGTHS_NM, tables.photopic())
+    assert K_CD == 683.0 and K_M == K_M_LM_W == 683.002
+    assert abs(km - K_M) <= 0.0005 and abs(km - 683.0) > 0.0015

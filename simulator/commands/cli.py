@@ -165,9 +165,10 @@ def _cmd_bench(args) -> int:
 
     from simulator.commands.bench import default_configs, format_bench, run_bench
 
+    from simulator.config.overrides import check_flags
+
     configs = [Path(c) for c in args.configs] or default_configs()
-    if args.samples < 1:
-        raise UserError(f"--samples: must be >= 1, got {args.samples}")
+    check_flags(samples=args.samples)  # the rule of [simulation] samples, as `probesim run --samples` obeys it
     for c in configs:
         if not c.is_file():
             raise UserError(f"{c}: config file not found")

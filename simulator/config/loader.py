@@ -22,6 +22,7 @@ from pathlib import Path
 
 from pydantic_core import ValidationError
 
+from simulator.config.capacity import too_many_sensors
 from simulator.config.errors import translate, user_error
 from simulator.config.overrides import apply_overrides
 from simulator.config.paths import resolve_path
@@ -143,6 +144,12 @@ def _sensors(doc: RunFile, label: str) -> tuple[list[Sensor], list[GridConfig]]:
 
     grids: list[GridConfig] = []
     grid_owner: dict[str, str] = {}
+    counts = [entry.cells() for entry in doc.grid]
+    why = too_many_sensors(len(sensors) + sum(nx * ny for nx, ny in counts)) if counts else None
+    if why is not None:  # refused before a cell is built: billions of them would fill the memory first
+        k = max(range(len(counts)), key=lambda i: counts[i][0] * counts[i][1])  # the largest grid is named
+        nx, ny = counts[k]
+        raise user_error(label, f"grid[{k}].spacing", f"{nx:,} x {ny:,} cells: {why}; use a coarser spacing or a smaller size")
     for k, entry in enumerate(doc.grid):
         source = f"grid[{k}]"
         if entry.name in grid_owner:

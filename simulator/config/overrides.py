@@ -21,7 +21,7 @@ from simulator.config.records import RunConfig
 from simulator.config.schema import RunFile
 from simulator.config.variants import parse_flag
 
-__all__ = ["apply_overrides", "FLAGS"]
+__all__ = ["apply_overrides", "check_flags", "FLAGS"]
 
 #: ``[simulation]`` key of each flag that sets one, and the flag
 FLAGS = {
@@ -32,6 +32,36 @@ FLAGS = {
     "rel_error": "--rel-error",
     "confidence": "--confidence",
 }
+
+
+def check_flags(**values) -> dict:
+    """``[simulation]`` flags checked by the schema's own rules, without a config.
+
+    For commands that take a flag of a ``[simulation]`` key but no config of
+    their own (``probesim bench --samples``): the flag obeys exactly the rule
+    of its key, and a message names the flag. ``values`` maps keys of
+    :data:`FLAGS` to values (None: not given).
+
+    Returns
+    -------
+    dict
+        The given values as the schema reads them.
+
+    Raises
+    ------
+    UserError
+        ``--samples: must be >= 1, got 0``.
+    """
+    flags = {key: v for key, v in values.items() if v is not None}
+    unknown = sorted(set(flags) - set(FLAGS))
+    if unknown:
+        raise ValueError(f"not a [simulation] flag: {', '.join(unknown)}")
+    table = {"stage": "-", "simulation": flags}
+    try:
+        doc = RunFile.model_validate(table)
+    except ValidationError as exc:
+        raise translate(exc, table, None, {f"simulation.{key}": flag for key, flag in FLAGS.items()}) from None
+    return {key: getattr(doc.simulation, key) for key in flags}
 
 
 def apply_overrides(

@@ -124,12 +124,16 @@ class Grid(Table):
     up: UpDirection
     spacing: Spacing
 
+    def cells(self) -> tuple[int, int]:
+        """``(nx, ny)``: the cell counts along the width and height, from size and spacing alone."""
+        (w, h), (sx, sy) = self.size, self.spacing
+        return max(1, round(w / sx)), max(1, round(h / sy))
+
     def to_grid(self, source: str) -> tuple[GridConfig, list[Sensor]]:
         """The grid record and its cell sensors (``j`` outer, ``i`` inner), defined at config key ``source``."""
         (w, h), (sx, sy) = self.size, self.spacing
         right = patch_width_axis(self.up, self.normal)
-        nx = max(1, round(w / sx))
-        ny = max(1, round(h / sy))
+        nx, ny = self.cells()
         grid = GridConfig(
             name=self.name, source=source, nx=nx, ny=ny, centre=self.position, normal=self.normal, right=right,
             up=self.up, size=(w, h), spacing=(sx, sy),

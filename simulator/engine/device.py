@@ -257,20 +257,27 @@ class DeviceScene:
         g.tally = wp.zeros(1, dtype=wp.vec2)
         return g
 
-    def tally_rows(self, workers: int) -> None:
-        """Zeroed pilot tallies: ``workers`` blocks of guide rows × patches (a
-        block per CPU worker: Warp's CPU atomics are not atomic across threads)."""
+    def tally_rows(self, blocks: int) -> None:
+        """Zeroed pilot tallies: ``blocks`` blocks of guide rows × patches, one
+        per chunk of the pilot's kernel threads (``TraceParams.tally_chunk``)."""
         wp = warp()
         with wp.ScopedDevice(self.device):
             g = self.rec.guide
-            g.tally = wp.zeros(max(1, workers * self.guide_rows * self.layout.n_patches), dtype=wp.vec2)
+            g.tally = wp.zeros(max(1, blocks * self.guide_rows * self.layout.n_patches), dtype=wp.vec2)
             self.rec.guide = g  # reassigned: the record holds the struct by value
 
-    def read_tally(self, workers: int) -> np.ndarray:
-        """The pilot's tallies summed over workers, (guide rows, N, 2) float64."""
+    def read_tally(self, blocks: int) -> np.ndarray:
+        """The pilot's tallies, (guide rows, N, 2) float64: the blocks added
+        one after another in block order (a fixed order, so fixed bytes)."""
         t = self.rec.guide.tally.numpy().astype(np.float64)
         r, n = self.guide_rows, self.layout.n_patches
-        return t[: workers * r * n].reshape(workers, r, n, 2).sum(axis=0) if n else np.zeros((r, 0, 2))
+        if not n:
+            return np.zeros((r, 0, 2))
+        t = t[: blocks * r * n].reshape(blocks, r, n, 2)
+        out = np.zeros((r, n, 2))
+        for b in range(blocks):
+            out += t[b]
+        return out
 
     def set_guide(self, ids: np.ndarray, cdf: np.ndarray, row_start: np.ndarray, density: np.ndarray) -> None:
         """Upload the patch sampler's tables (:func:`~simulator.scene.patches.patch_distribution_rows`)."""

@@ -15,7 +15,6 @@ Sensors (irradiance, radiance, patch): each kernel thread draws a block of
 from __future__ import annotations
 
 import os
-import threading
 import time
 from dataclasses import dataclass, field
 from typing import Callable
@@ -328,7 +327,7 @@ class Engine:
         p.guide_first = G.GUIDE_FIRST
         p.guide_depth = G.GUIDE_DEPTH
         p.tally = 0
-        p.tally_row = 0
+        p.tally_chunk = 1
         p.pick_light = 0
         p.tally_pick = 0
         p.rr_threshold = float(self.rr_threshold if self.rr_threshold is not None else rr_threshold_rule(self.scene)[0])
@@ -481,23 +480,16 @@ class Engine:
             if params.group_tally:
                 params.group_state = wp.zeros(n * width, dtype=wp.vec2d)
 
-            rows = iter(range(self.threads))  # a pilot's workers each tally into a row of their own
-            lock = threading.Lock()
-
             def run(offset: int, dim: int):
-                prm = params
-                if params.tally:
-                    with lock:
-                        prm = _clone_struct(params)
-                        prm.tally_row = next(rows)
                 wp.launch(
                     self._K.estimate_kernel,
                     dim=dim,
-                    inputs=[rec, self._dev.sensors, prm, a_sensor, a_first, a_count, offset],
+                    inputs=[rec, self._dev.sensors, params, a_sensor, a_first, a_count, offset],
                     outputs=[shift, s1, s2, bad, r_shift, r_s1, r_s2],
                 )
 
-            fan_out(self.threads, run, n)
+            # a guide pilot tallies per chunk of kernel threads: no chunk is cut between two workers
+            fan_out(self.threads, run, n, align=int(params.tally_chunk) if params.tally else 1)
             wp.synchronize_device()
             if tally:
                 counts = rec.pick_tally.numpy()
@@ -993,12 +985,3 @@ def _split_batch(ids: np.ndarray, first: np.ndarray, count: np.ndarray, max_samp
         out.append(cur)
     return [(np.asarray(a, np.int64), np.asarray(b, np.int64), np.asarray(c, np.int64)) for a, b, c in out]
 
-
-def _clone_struct(rec):
-    """A Warp struct's own copy: ``copy.copy`` shares the device-side record,
-    so a field set on the copy changed the original too (a pilot's workers
-    then tallied into one row)."""
-    out = type(rec)()
-    for name in rec._cls.vars:
-        setattr(out, name, getattr(rec, name))
-    return out

@@ -49,7 +49,13 @@ import numpy as np
 
 from simulator.scene.patches import concentration, patch_distribution_rows
 
-__all__ = ["GUIDE_C", "GUIDE_FIRST", "GUIDE_DEPTH", "PILOT_SAMPLES", "PILOT_MIN_TOTAL", "GuideInfo", "pilot_seed", "build_guide"]
+#: samples one kernel thread draws (the driver's BLOCK, repeated here: this module imports no Warp)
+BLOCK = 32
+
+__all__ = [
+    "GUIDE_C", "GUIDE_FIRST", "GUIDE_DEPTH", "PILOT_SAMPLES", "PILOT_MIN_TOTAL", "PILOT_BLOCKS", "GuideInfo", "pilot_chunks",
+    "pilot_seed", "build_guide",
+]  # fmt: skip
 
 #: probability c of the guide strategy at a vertex (see docs/DESIGN.md for the measurement)
 GUIDE_C = 0.3
@@ -69,6 +75,14 @@ MIN_CONCENTRATION = 4.0
 PILOT_SAMPLES = 32
 #: ... and at least this many in all (a lone sensor still gets a usable guide)
 PILOT_MIN_TOTAL = 16384
+#: the pilot's tallies are kept per block of consecutive kernel threads (each
+#: block summed in float32 on one worker, in index order; the blocks then in
+#: float64, in order): at most this many blocks (so at most this many CPU
+#: workers share a pilot; memory: blocks × rows × patches × 8 bytes, 16 MiB
+#: at 16,384 patches and 2 rows) ...
+PILOT_BLOCKS = 64
+#: ... of at least this many kernel threads (of BLOCK samples each)
+PILOT_CHUNK_MIN = 8
 
 
 @dataclass
@@ -103,6 +117,16 @@ class GuideInfo:
         return asdict(self)
 
 
+def pilot_chunks(n_threads: int) -> tuple[int, int]:
+    """``(chunk, blocks)``: the pilot's ``n_threads`` kernel threads tally in
+    ``blocks`` blocks of ``chunk`` consecutive threads each (the last one
+    shorter), at least :data:`PILOT_CHUNK_MIN` threads and at most
+    :data:`PILOT_BLOCKS` blocks. A function of the pilot's size alone, so
+    the tallies, and the guide, are the same whatever the thread count."""
+    chunk = max(PILOT_CHUNK_MIN, -(-int(n_threads) // PILOT_BLOCKS))
+    return chunk, max(1, -(-int(n_threads) // chunk))
+
+
 def pilot_seed(seed: int) -> int:
     """The pilot's seed: a stream of its own, apart from the run's (seed + 1 is
     another run's, so it is not used)."""
@@ -131,11 +155,12 @@ def build_guide(engine, seed: int, sensor_ids: np.ndarray, max_depth: int = -1) 
         per = max(PILOT_SAMPLES, -(-PILOT_MIN_TOTAL // len(ids)))
         params = engine.trace_params("path", pilot_seed(seed), max_depth, "total")
         params.tally = 1
-        rows = max(1, engine.threads)
-        dev.tally_rows(rows)
+        chunk, blocks = pilot_chunks(len(ids) * -(-per // BLOCK))
+        params.tally_chunk = chunk
+        dev.tally_rows(blocks)
         engine._launch(params, ids, np.zeros(len(ids), np.int64), np.full(len(ids), per, np.int64))
         n_pilot = per * len(ids)
-        tally = dev.read_tally(rows)  # (guide rows, N, 2)
+        tally = dev.read_tally(blocks)  # (guide rows, N, 2), the blocks summed in order in float64
         channel = 0 if tally[..., 0].sum() > 0 else 1
         tally = tally[..., channel].copy()
         conc = [concentration(t, lay) for t in tally]

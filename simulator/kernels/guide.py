@@ -225,7 +225,13 @@ def guided_step(scene: SceneRec, row: int, o: wp.vec3, n: wp.vec3, c: float, u: 
 def tally_patch(scene: SceneRec, params: TraceParams, row: int, face: int, y: wp.vec3, value: wp.vec2):
     """Pilot: add a next-event contribution made at the vertex y of triangle
     ``face``, reached from a vertex sampling guide row ``row``, to that
-    row's tally of y's patch (in the worker's block ``params.tally_row``)."""
+    row's tally of y's patch, in the block of the kernel thread's chunk
+    (``params.thread // params.tally_chunk``). A chunk's kernel threads run
+    on one CPU worker, in order (the engine cuts launches at chunk bounds),
+    so each block's float32 sums come out the same whatever the worker
+    count: Warp's CPU atomics are not atomic across threads, and a float
+    sum depends on its order."""
     if scene.guide.n_patches > 0 and face >= 0:
-        k = (params.tally_row * scene.guide.n_rows + row) * scene.guide.n_patches + patch_at(scene, face, y)
+        block = params.thread // params.tally_chunk
+        k = (block * scene.guide.n_rows + row) * scene.guide.n_patches + patch_at(scene, face, y)
         wp.atomic_add(scene.guide.tally, k, value)

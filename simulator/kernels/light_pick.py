@@ -55,8 +55,9 @@ from .sampling import PI
 #: office's paths, variance per sample 2.07, 2.10 and 2.31 at α = 0.03, 0.1
 #: and 0.3: a small share costs little, and bounds the weight 1/P by L/α
 PICK_UNIFORM = wp.constant(0.1)
-#: lm → W at 555 nm (1/683): the pick weighs a light by W + lm/683, so a
-#: light with either channel counts
+#: lm → W near 555 nm (1/683): the pick weighs a light by W + lm/683, so a
+#: light with either channel counts (a weight that only steers the pick, not
+#: the photometric constant K_m = 683.002 lm/W of simulator.units)
 LM_TO_W = wp.constant(1.0 / 683.0)
 
 _POINT = wp.constant(int(LightKind.POINT))

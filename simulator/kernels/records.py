@@ -52,7 +52,7 @@ class TraceParams:
     guide_first: int  # the guide is used at vertices of depth ≥ guide_first ...
     guide_depth: int  # ... and < guide_depth (−1: no upper bound)
     tally: int  # 1: add each surface vertex's next-event contributions to scene.guide.tally (the pilot)
-    tally_row: int  # the row of scene.guide.tally this launch adds to (one per CPU worker: no races)
+    tally_chunk: int  # the pilot's kernel threads per block of scene.guide.tally (thread // tally_chunk: its block)
     pick_light: int  # one picked light with area (light_pick.py): 0 never, 1 at every vertex, 2 past the first
     tally_pick: int  # 1: tally the light pick's pilot sums in scene.pick_tally (a pilot run)
     rr_threshold: float  # Russian roulette weight window (engine.methods.rr_threshold_rule)

@@ -16,7 +16,9 @@ needed, so a grey run that asks for no response never pays its import
 ``transport``    grey, per-emitter or hero-wavelength transport, and why
 ``hero``         the tables hero-wavelength transport uploads (reflectance, emission, response weights)
 ``traced``       a spectrally traced run's response columns and record
-``cost``         spectral tracing against one channel: time to equal error (``python -m``)
 ``config``       how a run names its responses (TOML piece and loader)
 ``schema``       the same TOML piece as pydantic models
+
+What spectral tracing costs against one channel is measured by a script
+beside the package, ``benchmarks/spectral_cost.py``, not in it.
 """

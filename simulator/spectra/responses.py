@@ -12,7 +12,7 @@ Registry (:func:`response`, :data:`NAMES`): name, weighting q(λ) (trapezoid
 rule on the 1 nm grid), irradiance column:
 
 * ``radiometric``: 1 over 380–780 nm; ``irradiance_W_m2``
-* ``photopic``: K_m V(λ), K_m = 683 lm/W; ``illuminance_lx``
+* ``photopic``: K_m V(λ), K_m = 683.002 lm/W (CIE 018:2019); ``illuminance_lx``
 * ``scotopic``: K′_m V′(λ), K′_m = 1700.06 lm/W; ``scotopic_illuminance_lx``
 * ``<α>``: s_α(λ), the CIE S 026 action spectrum; S 026's names,
   ``s_cone_opic_irradiance_W_m2`` … ``rhodopic_irradiance_W_m2``,
@@ -28,9 +28,11 @@ with α one of ``s_cone``, ``m_cone``, ``l_cone``, ``rhodopic``, ``melanopic``.
 Notes
 -----
 *Scotopic.* K′_m = 1700.06 lm/W is the CIE value (CIE S 010/E:2004 =
-ISO 23539:2005; CIE 018:2019): K_m/V′(555.016 nm), the scotopic efficacy
-that makes photopic and scotopic lumens agree at 540 THz. The older figure
-1699 lm/W is 683/V′(555 nm) with V′ read at 555 nm; they differ by 0.06 %.
+ISO 23539:2005; CIE 018:2019): K_cd/V′(555.016 nm), K_cd = 683 lm/W the
+SI's efficacy at 540 THz, the scotopic efficacy that makes photopic and
+scotopic lumens agree there (as K_m = K_cd/V(555.016 nm) = 683.002 lm/W
+does for photopic). The older figure 1699 lm/W is 683/V′(555 nm) with V′
+read at 555 nm; they differ by 0.06 %.
 
 *α-opic (CIE S 026:2018).* α-opic irradiance ``E_α = ∫ E_λ s_α(λ) dλ``
 (W m⁻²). Its α-opic equivalent daylight (D65) illuminance ``E_α,v^D65 =
@@ -201,7 +203,7 @@ def response(name: str) -> Response:
     if name == "photopic":
         s, u = _quantities(("illuminance", "lx"), ("luminance", "cd_m2"), ("luminous_flux", "lm"))
         return Response(name, "illuminance", _frozen(K_M_LM_W * tables.photopic() * full), s, u,
-                        "K_m V(λ), CIE 1924 photopic, K_m = 683 lm/W (CIE 018:2019)")
+                        "K_m V(λ), CIE 1924 photopic, K_m = 683.002 lm/W (CIE 018:2019)")
     if name == "scotopic":
         s, u = _quantities(("scotopic_illuminance", "lx"), ("scotopic_luminance", "cd_m2"), ("scotopic_luminous_flux", "lm"))
         return Response(name, "scotopic illuminance", _frozen(K_PRIME_M_LM_W * tables.scotopic() * full), s, u,

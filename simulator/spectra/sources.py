@@ -47,6 +47,7 @@ import numpy as np
 
 from simulator.errors import UserError
 from simulator.spectra.grid import WAVELENGTHS_NM, integrate
+from simulator.units import K_M as _K_M
 
 __all__ = [
     "H_J_S",
@@ -76,8 +77,8 @@ K_B_J_K = 1.380649e-23
 N_A_PER_MOL = 6.02214076e23
 #: second radiation constant for colour temperatures, m K (CIE 15:2004, ITS-90)
 C2_CIE_M_K = 1.4388e-2
-#: maximum luminous efficacy for photopic vision, lm/W (as :data:`simulator.units.K_M`)
-K_M_LM_W = 683.0
+#: maximum luminous efficacy for photopic vision, lm/W: :data:`simulator.units.K_M` (683.002, CIE 018:2019)
+K_M_LM_W = _K_M
 
 
 @dataclass(frozen=True)

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from simulator.config.capacity import too_many_sensors
 from simulator.errors import UserError
 from simulator.scene.model import Scene, Sensor, SensorKind
 from simulator.study.en12464 import Grid, en12464_grid, explicit_grid
@@ -151,6 +152,9 @@ def _grid_on_prim(scene: Scene, spec: CandidateSpec, pid: int, label: str, multi
         grid = en12464_grid(*size) if spec.spacing_m == "en12464" else explicit_grid(size[0], size[1], float(spec.spacing_m))
     except ValueError as exc:
         raise UserError(f"{label}.spacing_m: {exc} (prim {prim})") from None
+    why = too_many_sensors(grid.n_u * grid.n_v)  # before a cell is built: billions would fill the memory first
+    if why is not None:
+        raise UserError(f"{label}.spacing_m: {grid.n_u:,} x {grid.n_v:,} cells on prim {prim}: {why}; use a coarser spacing")
     cells = [(i, j) for j in range(grid.n_v) for i in range(grid.n_u)]
     c2 = np.array([[lo[0] + (i + 0.5) * grid.pitch_u_m, lo[1] + (j + 0.5) * grid.pitch_v_m] for i, j in cells])
     on_prim = _inside_triangles_2d(c2, uv.reshape(-1, 3, 2))

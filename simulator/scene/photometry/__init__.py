@@ -4,7 +4,8 @@ the readers of the two file formats lighting engineers exchange them in.
 - :mod:`.distribution`: :class:`GoniometricDistribution`, I(θ, φ) in candela
   with bilinear interpolation, total lumens, and a regular table for kernels;
 - :mod:`.ies`: IES LM-63 (1986/1991, 1995, 2002, 2019) files;
-- :mod:`.ldt`: EULUMDAT (``.ldt``) files.
+- :mod:`.ldt`: EULUMDAT (``.ldt``) files;
+- :mod:`.files`: :func:`read_photometry`, either format by its suffix.
 
 Pure numpy: no USD, no Warp.
 
@@ -29,7 +30,8 @@ Checked on public photometric files (not bundled), total lumens by
   28027 / 27934 lm (0.3%).
 """
 
-from .distribution import GoniometricDistribution, read_photometry
+from .distribution import GoniometricDistribution
+from .files import read_photometry
 from .ies import read_ies, parse_ies
 from .ldt import read_ldt, parse_ldt
 

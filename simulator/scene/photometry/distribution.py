@@ -22,13 +22,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
 from simulator.errors import UserError, require_file
 
-__all__ = ["GoniometricDistribution", "angles_from_local", "read_photometry"]
+__all__ = ["GoniometricDistribution", "angles_from_local", "read_file_text", "unfold_type_c"]
 
 #: angles closer than this (degrees) are the same measured angle
 ANGLE_TOL_DEG = 1e-6
@@ -233,19 +232,6 @@ def read_file_text(path) -> str:
         return p.read_bytes().decode("latin-1")
     except OSError as e:
         raise UserError(f"{path}: cannot read ({e.strerror})") from None
-
-
-def read_photometry(path) -> GoniometricDistribution:
-    """Read an IES LM-63 (``.ies``) or EULUMDAT (``.ldt``) file by its suffix."""
-    from .ies import read_ies
-    from .ldt import read_ldt
-
-    suffix = Path(path).suffix.lower()
-    if suffix == ".ies":
-        return read_ies(path)
-    if suffix in (".ldt", ".eul"):
-        return read_ldt(path)
-    raise UserError(f"{path}: unknown photometric file type {suffix!r} (expected .ies or .ldt)")
 
 
 def unfold_type_c(theta_deg, phi_deg, candela, where: str) -> tuple[np.ndarray, np.ndarray, str]:

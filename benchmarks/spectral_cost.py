@@ -1,6 +1,7 @@
 """What spectral tracing costs against one channel: time and variance per sample → time to equal error.
 
-``python -m simulator.spectra.cost [--samples N] [--device cpu|cuda] [--wall R,G,B]`` reads the
+``python benchmarks/spectral_cost.py [--samples N] [--device cpu|cuda] [--wall R,G,B]`` (from a
+checkout, or anywhere with probesim installed) reads the
 quickstart room (stages/quickstart.usda) with its walls' ``diffuseColor`` set to ``--wall``
 (default a green (0.2, 0.7, 0.3), BT.709 grey 0.565) at four workplane points and the east
 wall, with method ``path``, twice on the same scene: one channel (the grey reduction) and 4
@@ -15,13 +16,16 @@ spectral reading (its PPFD and EDI are the post-hoc D65 ratios of its watts).
 from __future__ import annotations
 
 import argparse
+import sys
 import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[1]
+if str(ROOT) not in sys.path:  # run from a checkout: the package sits beside this folder
+    sys.path.insert(0, str(ROOT))
 POINTS = ((1.0, 1.0, 0.8, 0, 0, 1), (2.5, 2.0, 0.8, 0, 0, 1), (4.0, 3.0, 0.8, 0, 0, 1), (1.5, 3.2, 0.8, 0, 0, 1),
           (4.99, 2.0, 1.5, -1, 0, 0))
 NAMES = ("photopic", "par", "melanopic_edi")
@@ -85,7 +89,7 @@ def measure(samples: int, device: str, wall, seed: int = 1, repeats: int = 3) ->
 
 
 def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(prog="python -m simulator.spectra.cost", description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(prog="benchmarks/spectral_cost.py", description=__doc__.splitlines()[0])
     ap.add_argument("--samples", type=int, default=20000)
     ap.add_argument("--device", default="cpu")
     ap.add_argument("--wall", default="0.2,0.7,0.3")
