@@ -72,7 +72,8 @@ from .sampling import (
     sensor_stream_key,
     to_world,
 )
-from .shadows import hit_light_before, shadow_ray_clear
+from .shadows import hit_light_before, shadow_ray_clear, shadow_ray_pass
+from .surfaces import ABSORB, MIRROR, mirror, pass_through
 from .shaping import shaping_factor
 from .spectral import Reflection, hero_nodes, lane_response, spectral_contribution, spectral_row
 
@@ -83,6 +84,8 @@ wp.set_module_options({"enable_backward": False})
 # ends with probability one; this cap only guards against ρ rounding to 1.
 # At ρ = 0.999 it drops a fraction 0.999^65536 ≈ 4e-29 of the light.
 MAX_VERTICES = wp.constant(65536)
+# a radiance meter's ray reflected off more panes than this (two facing panes) is taken as absorbed
+MAX_MIRRORS = wp.constant(64)
 
 # Russian roulette weight window: a path's throughput β never falls below
 # TraceParams.rr_threshold (see vertex_irradiance); the engine sets it per
@@ -223,6 +226,12 @@ def vertex_irradiance(
     depth = int(0)
     cur_face = int(-1)  # the triangle p lies on (depth ≥ 1)
     prev_row = int(0)  # the guide row of the vertex before p
+    # a mirror reflection off a pane (scene.surfaces only, see kernels.surfaces): the next vertex p is
+    # that delta vertex; the ray leaves it along spec_d, with no light sample there and no MIS weight on
+    # what that ray meets (no light sample could have found it); β and the weight are unchanged, since
+    # the reflection was chosen with the probability R it weighs
+    delta = int(0)
+    spec_d = wp.vec3(0.0, 0.0, 1.0)
     while depth < MAX_VERTICES:
         row = guide_row(scene, depth, cur_face)
         c_v = guide_fraction(scene, params, depth, row)
@@ -238,7 +247,7 @@ def vertex_irradiance(
         # -- next-event estimation: each light once, or (pick_light) the
         #    delta lights and one light with area, picked with P(li | x)
         pk = LightPick()
-        if params.nee != 0 and count:
+        if params.nee != 0 and count and delta == 0:
             if picks_at(params, depth):
                 pk = pick_light(scene, p, n, params.mask_row, depth, rng)
                 rng = pk.rng
@@ -262,7 +271,14 @@ def vertex_irradiance(
                         w = power_heuristic(sel * ls.pdf, (1.0 - c_v) * pdf_cosine_hemisphere(wp.dot(ls.wi, n)))
                     if w > 0.0 or params.tally_pick != 0:
                         count_ray(scene, params)
-                        if shadow_ray_clear(scene, o, p, li, ls):
+                        clear = bool(True)
+                        if scene.surfaces != 0:  # through panes and cut-outs, at their transmittance
+                            vis = shadow_ray_pass(scene, o, p, li, ls)
+                            ls.value = ls.value * vis
+                            clear = vis > 0.0
+                        else:
+                            clear = shadow_ray_clear(scene, o, p, li, ls)
+                        if clear:
                             got = ls.value
                             c_light = wp.vec2(0.0, 0.0)
                             if params.spectral != 0 and li == params.emissive_light:
@@ -310,14 +326,24 @@ def vertex_irradiance(
                 depth += 1
                 continue
         # -- a cosine-weighted direction: E ≈ π·L(ω)
-        local = sample_cosine_hemisphere(wp.vec2(wp.randf(rng), wp.randf(rng)))
-        if local[2] <= 0.0:
-            break
-        wi = to_world(local, n)
+        local = wp.vec3(0.0, 0.0, 1.0)
+        wi = spec_d
+        if delta == 0:
+            local = sample_cosine_hemisphere(wp.vec2(wp.randf(rng), wp.randf(rng)))
+            if local[2] <= 0.0:
+                break
+            wi = to_world(local, n)
         pdf_b = (1.0 - c_v) * local[2] * INV_PI  # this strategy's density: it runs with probability 1 − c
         w_dir = weight * PI / (1.0 - c_v)
         count_ray(scene, params)
         hit = first_hit(scene, o, wi, RAY_INF)
+        event = int(0)
+        if scene.surfaces != 0:  # through panes and cut-outs to where the ray stops (kernels.surfaces)
+            pas = pass_through(scene, o, wi, hit, rng)
+            rng = pas.rng
+            hit = pas.hit
+            event = pas.event
+        weigh = params.mis != 0 and params.nee != 0 and delta == 0  # MIS against the light samples at p
         t_hit = hit.t
         face = hit.face
         ng = hit.ng
@@ -329,7 +355,7 @@ def vertex_irradiance(
             t = hit_light_before(l, o, wi, t_hit)  # −1 for lights with no surface
             if t > 0.0 and count:
                 w = float(1.0)
-                if params.mis != 0 and params.nee != 0:
+                if weigh:
                     pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1)
                     w = power_heuristic(pdf_b, pdf_l)
                 total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission, tint)
@@ -338,16 +364,29 @@ def vertex_irradiance(
                 le = escaped_radiance(scene.lights[li], wi)
                 if (le[0] > 0.0 or le[1] > 0.0) and count:
                     w = float(1.0)
-                    if params.mis != 0 and params.nee != 0:
+                    if weigh:
                         pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, RAY_INF, -1)
                         w = power_heuristic(pdf_b, pdf_l)
                     total += light_contribution_dir(scene, params, li, (w_dir * w) * le, tint, wi)
             break
         cos_view = -wp.dot(wi, ng)
+        if event == ABSORB:
+            break
+        if event == MIRROR:
+            if params.bounces >= 0 and depth >= params.bounces:
+                break
+            p = o + t_hit * wi
+            n = wp.where(cos_view > 0.0, ng, -ng)
+            spec_d = mirror(wi, ng)
+            delta = 1
+            cur_face = face
+            depth += 1
+            continue
+        delta = 0
         le = tri_emitted(scene, face, cos_view)
         if (le[0] > 0.0 or le[1] > 0.0) and count:
             w = float(1.0)
-            if params.mis != 0 and params.nee != 0 and params.emissive_light >= 0:
+            if weigh and params.emissive_light >= 0:
                 w = power_heuristic(pdf_b, pick_scale(scene, params, pk, params.emissive_light, p, n, depth)
                                     * pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
             total += emissive_contribution(scene, params, face, (w_dir * w) * le, tint)
@@ -381,14 +420,38 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     o = s.position
     count_ray(scene, params)
     hit = first_hit(scene, o, d, RAY_INF)
-    t_hit = hit.t
-    face = hit.face
-    ng = hit.ng
     # Emitters seen straight along the meter's ray, and the first surface's
     # reflection of the light reaching it straight from emitters, are the
     # direct component; with skip_direct both are left out.
     direct = params.skip_direct == 0
     total = wp.vec2(0.0, 0.0)
+    skip_next = params.skip_direct
+    if scene.surfaces != 0:
+        # through panes and cut-outs; a mirror reflection off a pane sends the ray on (what it then
+        # sees was reflected on the way: indirect), each segment's lights counted as it passes them
+        for k in range(MAX_MIRRORS):
+            pas = pass_through(scene, o, d, hit, rng)
+            rng = pas.rng
+            hit = pas.hit
+            if pas.event != MIRROR and pas.event != ABSORB:
+                break
+            for li in range(scene.n_lights):
+                l = scene.lights[li]
+                if hit_light_before(l, o, d, hit.t) > 0.0 and direct:
+                    total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, params.tint)
+            if pas.event == ABSORB or k == MAX_MIRRORS - 1:
+                return total
+            q = o + hit.t * d
+            side = wp.where(wp.dot(d, hit.ng) < 0.0, hit.ng, -hit.ng)
+            d = mirror(d, hit.ng)
+            o = q + offset_length(scene, q) * side
+            direct = True
+            skip_next = 0
+            count_ray(scene, params)
+            hit = first_hit(scene, o, d, RAY_INF)
+    t_hit = hit.t
+    face = hit.face
+    ng = hit.ng
     for li in range(scene.n_lights):
         l = scene.lights[li]
         if hit_light_before(l, o, d, t_hit) > 0.0 and direct:
@@ -408,7 +471,7 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
         n = wp.where(cos_view > 0.0, ng, -ng)
         prm = params
         prm.tint = refl.tint
-        total += vertex_irradiance(scene, o + t_hit * d, n, refl.rho * INV_PI, prm, params.skip_direct, rng)
+        total += vertex_irradiance(scene, o + t_hit * d, n, refl.rho * INV_PI, prm, skip_next, rng)
     return total
 
 

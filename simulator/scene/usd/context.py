@@ -50,6 +50,9 @@ class _Context:
     reflectance_index: dict[str, int] = field(default_factory=dict)
     #: spectra of emitting triangles, ``(spectrum or None for the default, authored)`` (ordered set)
     emissive_spectra: dict = field(default_factory=dict)
+    #: surfaces beyond Lambert (:class:`simulator.scene.surfaces.Surface`), one per material; by material key
+    surfaces: list = field(default_factory=list)
+    surface_index: dict = field(default_factory=dict)
 
     def warn(self, message: str) -> None:
         if message not in self.warnings:
