@@ -219,6 +219,10 @@ class DeviceScene:
             r.pane = 1 if s.pane else 0
             r.ior = float(s.ior)
             r.tau = float(s.tau)
+            r.glossy = 1 if s.glossy else 0
+            r.roughness, r.metallic = float(s.roughness), float(s.metallic)
+            r.specular, r.workflow = float(s.specular_grey), 1 if s.use_specular_workflow else 0
+            r.coat, r.coat_roughness = float(s.clearcoat), float(s.clearcoat_roughness)
             rows.append(r)
         if modelled:
             sid = np.ascontiguousarray(g.surface_id, np.int32)
@@ -230,7 +234,15 @@ class DeviceScene:
         rec.surf_id = wp.array(sid, dtype=wp.int32)
         rec.surf_side = wp.array(side, dtype=wp.int32)
         rec.surf = wp.array(rows, dtype=SurfRec)
-        self._keep += [rec.surf_id, rec.surf_side, rec.surf]
+        from simulator.scene.surfaces import mirror_planes
+
+        planes, face_plane, _ = (mirror_planes(g.points, g.triangles, g.surface_id, g.surfaces) if modelled
+                                 else (np.zeros((0, 4)), np.full(1, -1, np.int32), 0))
+        rec.n_mirror_planes = len(planes)
+        rec.mirror_planes = wp.array(planes.astype(np.float32) if len(planes) else np.zeros((1, 4), np.float32),
+                                     dtype=wp.vec4)
+        rec.face_mirror = wp.array(face_plane.astype(np.int32), dtype=wp.int32)
+        self._keep += [rec.surf_id, rec.surf_side, rec.surf, rec.mirror_planes, rec.face_mirror]
 
     def _upload_hero(self, wp, rec, tables) -> None:
         """The hero-wavelength tables (:class:`simulator.spectra.hero.HeroTables`) on ``rec``; placeholders

@@ -14,3 +14,11 @@ class SurfRec:
     pane: int  # 1: a dielectric slab of ior (thin pane, or a face of a slab-like closed mesh)
     ior: float  # index of refraction (≥ 1)
     tau: float  # internal transmittance of one normal pass through the pane (1: clear)
+    # the UsdPreviewSurface BSDF (kernels.bsdf), when glossy is 1; the diffuse ρ is the face's albedo
+    glossy: int
+    roughness: float
+    metallic: float
+    specular: float  # the specular workflow's F0 (grey)
+    workflow: int  # 1: specular workflow
+    coat: float
+    coat_roughness: float

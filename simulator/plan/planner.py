@@ -278,9 +278,11 @@ def surface_needs(scene: Scene) -> list[str]:
                    else f"opacity {s.opacity:g} in {s.opacity_mode} mode")
             if g.solid_side is not None and (closed := int(np.count_nonzero((g.surface_id == k) & (g.solid_side != 0)))):
                 why += f"; {closed} on closed meshes, read as slabs entered once"
-        else:
+        elif s.coverage < 1.0:
             why = (f"opacity {s.opacity:g} in presence mode" if s.opacity_threshold == 0
                    else f"opacity {s.opacity:g} against opacityThreshold {s.opacity_threshold:g}")
+        else:
+            why = "specular inputs authored away from their fallbacks"
         line = f"{s.name}: {counts[k]} triangle(s): {'; '.join(s.lobes())} ({why})"
         if s.unmodelled:
             line += f"; read, not modelled: {', '.join(s.unmodelled)}"

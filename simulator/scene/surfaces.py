@@ -76,8 +76,12 @@ class Surface:
         (0, 1]: 1 for clear glass, below 1 for a datasheet transmittance.
     transmittance : float or None
         The authored ``probesim:transmittance`` (normal incidence), if any.
+    glossy : bool
+        The face has the UsdPreviewSurface BSDF (:mod:`simulator.kernels.bsdf`):
+        some of roughness, metallic, specularColor, useSpecularWorkflow,
+        clearcoat, clearcoatRoughness authored away from their fallbacks.
     roughness, metallic, clearcoat, clearcoat_roughness : float
-        Read and validated (in [0, 1]); a specular lobe is not modelled yet.
+        In [0, 1].
     specular_color : tuple of float
     use_specular_workflow : bool
     opacity, opacity_threshold : float
@@ -103,11 +107,23 @@ class Surface:
     opacity_threshold: float = 0.0
     opacity_mode: str = "transparent"
     unmodelled: tuple = field(default_factory=tuple)
+    glossy: bool = False
 
     @property
     def modelled(self) -> bool:
         """Whether the kernels read anything of this row beyond the face's albedo."""
-        return self.pane or self.coverage < 1.0
+        return self.pane or self.coverage < 1.0 or self.glossy
+
+    @property
+    def specular_grey(self) -> float:
+        """The specular workflow's F0 as a luminance grey (BT.709 weights)."""
+        r, g, b = self.specular_color
+        return 0.2126 * r + 0.7152 * g + 0.0722 * b
+
+    @property
+    def delta(self) -> bool:
+        """The specular lobe is a mirror (roughness ≤ 0.01, :data:`simulator.kernels.bsdf.DELTA_ROUGHNESS`)."""
+        return self.glossy and self.roughness <= 0.01
 
     def lobes(self) -> tuple[str, ...]:
         """What this surface needs beyond a matte face, in words, for the plan."""
@@ -117,6 +133,11 @@ class Surface:
         if self.pane:
             what = f"T0 {self.transmittance:g}" if self.transmittance is not None else "clear"
             out.append(f"dielectric slab (ior {self.ior:g}, {what})")
+        if self.glossy:
+            spec = ("mirror (delta)" if self.delta else f"GGX specular (roughness {self.roughness:g})")
+            wf = (f"specular workflow F0 {self.specular_grey:.3g}" if self.use_specular_workflow
+                  else f"metallic {self.metallic:g}, ior {self.ior:g}")
+            out.append(f"diffuse + {spec}, {wf}" + (f" + clearcoat {self.clearcoat:g}" if self.clearcoat > 0 else ""))
         return tuple(out)
 
 
@@ -197,3 +218,47 @@ def solid_sides(points: np.ndarray, triangles: np.ndarray, prim: np.ndarray, pan
             vol = np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2])).sum() / 6.0
             side[members] = 1 if vol > 0 else -1
     return side
+
+
+#: most flat mirror planes the image-source connection of delta lights looks at (the rest: named in the plan)
+MAX_MIRROR_PLANES = 16
+
+
+def mirror_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarray | None,
+                  surfaces: list) -> tuple[np.ndarray, np.ndarray, int]:
+    """The flat planes of the mirror faces (a delta specular lobe): ``(planes (K, 4) as (n, d) with
+    n·x = d, per triangle its plane or -1, planes left out beyond MAX_MIRROR_PLANES)``.
+
+    Triangles are grouped by their unit normal (sign made canonical: the
+    first non-zero component positive) and offset, rounded to 1e-6 (of a
+    metre, or of the scene's extent when larger); the largest planes (by
+    area) are kept first.
+    """
+    face_plane = np.full(len(triangles), -1, np.int32)
+    if surface_id is None:
+        return np.zeros((0, 4)), face_plane, 0
+    delta = np.array([getattr(s, "delta", False) for s in surfaces] + [False], bool)[surface_id]
+    faces = np.flatnonzero(delta)
+    if not len(faces):
+        return np.zeros((0, 4)), face_plane, 0
+    p = points[triangles[faces]]
+    cr = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    area = 0.5 * np.linalg.norm(cr, axis=1)
+    n = cr / np.maximum(2 * area, 1e-300)[:, None]
+    lead = np.take_along_axis(n, np.argmax(np.abs(n) > 1e-9, axis=1)[:, None], axis=1)[:, 0]
+    n = n * np.where(lead < 0, -1.0, 1.0)[:, None]
+    d = np.einsum("ij,ij->i", n, p[:, 0])
+    scale = max(1.0, float(np.abs(points).max()))
+    key = np.round(np.column_stack([n, d / scale]) * 1e6).astype(np.int64)
+    uniq, inv = np.unique(key, axis=0, return_inverse=True)
+    inv = inv.ravel()
+    size = np.bincount(inv, weights=area)
+    order = np.argsort(-size, kind="stable")[:MAX_MIRROR_PLANES]
+    planes = np.zeros((len(order), 4))
+    for k, u in enumerate(order):
+        mine = inv == u
+        nn = n[mine].mean(axis=0)
+        nn /= np.linalg.norm(nn)
+        planes[k] = [*nn, float(np.mean(p[mine][:, 0] @ nn))]
+        face_plane[faces[mine]] = k
+    return planes, face_plane, max(0, len(uniq) - len(order))

@@ -64,8 +64,9 @@ _PREVIEW_DEFAULTS = {
     "clearcoatRoughness": 0.01,
 }
 
-# inputs read and validated whose lobe is not modelled yet: authored away from the fallback, each is
-# counted by name in the summary warning (the face stays Lambertian for it)
+# inputs of the specular and clearcoat lobes: authored away from the fallback, they give the face the
+# UsdPreviewSurface BSDF (a face with all of them at their fallbacks stays Lambertian: the fallback's 4%
+# specular at roughness 0.5 is read as part of its matte albedo)
 _UNMODELLED = ("roughness", "metallic", "specularColor", "useSpecularWorkflow", "clearcoat", "clearcoatRoughness")
 
 # UsdPreviewSurface inputs probesim does not read, with their fallbacks: an
@@ -135,8 +136,8 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
     alike): ``opacity``, ``opacityThreshold``, ``opacityMode``, ``ior``,
     :data:`TRANSMITTANCE_ATTR`, and ``roughness``, ``metallic``,
     ``specularColor``, ``useSpecularWorkflow``, ``clearcoat``,
-    ``clearcoatRoughness`` (validated, their lobes not modelled yet: counted
-    in the summary warning). Rules: :mod:`simulator.scene.surfaces`.
+    ``clearcoatRoughness`` (the BSDF's lobes, modelled where any is authored
+    away from its fallback). Rules: :mod:`simulator.scene.surfaces`.
 
     Raises
     ------
@@ -203,17 +204,21 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
         return None
     fallback = {n: _PREVIEW_DEFAULTS[n] for n in _UNMODELLED}
     got = dict(values, specularColor=spec, useSpecularWorkflow=int(workflow))
-    unmodelled = tuple(n for n in _UNMODELLED
-                       if not np.allclose(np.asarray(got[n], float), np.asarray(fallback[n], float), rtol=0, atol=1e-6))
+    authored = tuple(n for n in _UNMODELLED
+                     if not np.allclose(np.asarray(got[n], float), np.asarray(fallback[n], float), rtol=0, atol=1e-6))
+    # a face with any of these away from its fallback gets the UsdPreviewSurface BSDF (kernels.bsdf); on a
+    # pane they are read but not modelled (the slab is what it is), counted in the summary warning
+    glossy = bool(authored) and not pane
+    unmodelled = authored if pane else ()
     for n in unmodelled:
-        ctx.ignored[f"inputs:{n}"] += 1  # read and validated; its lobe is not modelled (Lambertian)
+        ctx.ignored[f"inputs:{n}"] += 1  # read and validated; not modelled on a pane
     if coverage < 1.0 and inputs.get("opacity", (None, ""))[1].find("mean of the texture") >= 0:
         ctx.ignored["inputs:opacity from a texture (coverage is its mean, not per texel)"] += 1
     row = Surface(name=str(prim.GetPath()), coverage=coverage, pane=pane, ior=ior, tau=tau, transmittance=t0,
                   roughness=values["roughness"], metallic=values["metallic"], clearcoat=values["clearcoat"],
                   clearcoat_roughness=values["clearcoatRoughness"], specular_color=spec,
                   use_specular_workflow=workflow, opacity=opacity, opacity_threshold=threshold, opacity_mode=mode,
-                  unmodelled=unmodelled)
+                  unmodelled=unmodelled, glossy=glossy)
     sid = -1
     if row.modelled:
         sid = len(ctx.surfaces)
