@@ -114,3 +114,39 @@ def test_perfect_mirror_under_a_point_light_adds_its_image(tmp_path):
     d = x - image
     truth = intensity * (d[2] / np.linalg.norm(d)) / float(d @ d)
     assert abs(res.mean[0, 1] - truth) <= 2e-6 * truth, (res.mean[0, 1], truth)
+
+
+def test_office_window_variants():
+    """stages/office.usda: ``window = open`` (the default) is all matte, as office_bench's stored
+    reference reads it; ``glazed`` adds one clear pane in the opening and a semi-gloss floor."""
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    open_ = load_stage(root / "stages" / "office.usda", light_units="photometric")
+    assert open_.geometry.surface_id is None
+    glazed = load_stage(root / "stages" / "office.usda", light_units="photometric", variants={"window": "glazed"})
+    g = glazed.geometry
+    rows = {g.prim_names[g.prim[t]]: g.surfaces[g.surface_id[t]] for t in range(g.n_triangles) if g.surface_id[t] >= 0}
+    assert set(rows) == {"/Office/Room/Pane", "/Office/Room/Floor"}
+    assert rows["/Office/Room/Pane"].pane and rows["/Office/Room/Pane"].ior == pytest.approx(1.52)
+    assert rows["/Office/Room/Floor"].glossy and rows["/Office/Room/Floor"].roughness == pytest.approx(0.4)
+    assert g.n_triangles == open_.geometry.n_triangles + 2
+
+
+def test_mirror_reflector_example_adds_the_lamps_image(tmp_path):
+    """configs/mirror_reflector.toml: under the lamp the floor reads at least the direct I/h² plus the
+    polished reflector's image 0.9·I/(2.5 m)² (interreflection only adds), within 4σ."""
+    from pathlib import Path
+
+    from simulator.engine.driver import Engine
+
+    root = Path(__file__).resolve().parents[1]
+    scene = load_stage(root / "stages" / "mirror_reflector.usda", light_units="photometric")
+    s = [Sensor(name="u", kind=SensorKind.IRRADIANCE, position=np.zeros(3), normal=np.array([0.0, 0.0, 1.0]))]
+    res = Engine(scene, s).run("path", samples=512, seed=2)
+    intensity = scene.lights[0].emission[1]
+    assert intensity == pytest.approx(1000.0, rel=1e-4)
+    floor = intensity / 1.5 ** 2 + 0.9 * intensity / 2.5 ** 2
+    assert res.mean[0, 1] >= floor - 4 * res.stderr[0, 1]
+    # and the interreflection it adds is small: a 0.2 floor reflecting into a 1.2 m mirror
+    assert res.mean[0, 1] <= 1.1 * floor
