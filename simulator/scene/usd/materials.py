@@ -212,6 +212,10 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
     unmodelled = authored if pane else ()
     for n in unmodelled:
         ctx.ignored[f"inputs:{n}"] += 1  # read and validated; not modelled on a pane
+    if glossy:
+        c = np.atleast_1d(np.asarray(inputs.get("diffuseColor", ((0.0,),))[0], float))
+        if c.size == 3 and _not_uniform(np.ptp(c), float(np.max(np.abs(c)))):
+            ctx.ignored["diffuseColor's colour on glossy faces (their BSDF is traced grey, also in spectral runs)"] += 1
     if coverage < 1.0 and inputs.get("opacity", (None, ""))[1].find("mean of the texture") >= 0:
         ctx.ignored["inputs:opacity from a texture (coverage is its mean, not per texel)"] += 1
     row = Surface(name=str(prim.GetPath()), coverage=coverage, pane=pane, ior=ior, tau=tau, transmittance=t0,
