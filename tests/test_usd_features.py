@@ -380,11 +380,11 @@ def test_missing_texture_is_counted_not_fatal(tmp_path):
 
 
 def test_ignored_inputs_are_one_summary_line_with_counts(tmp_path):
-    """roughness authored away from its fallback on two materials, metallic on one;
-    roughness authored at its fallback (0.5), ``doc``, ``kind``, extent and normals
-    change nothing and are not named. One line for the whole stage."""
-    mats = grey("MA", 0.5, "float inputs:roughness = 0.2\n        float inputs:metallic = 1")
-    mats += grey("MB", 0.5, "float inputs:roughness = 0.9") + grey("MC", 0.5, "float inputs:roughness = 0.5")
+    """occlusion authored away from its fallback on two materials, displacement on one
+    (inputs not read); occlusion authored at its fallback (1), ``doc``, ``kind``, extent
+    and normals change nothing and are not named. One line for the whole stage."""
+    mats = grey("MA", 0.5, "float inputs:occlusion = 0.2\n        float inputs:displacement = 1")
+    mats += grey("MB", 0.5, "float inputs:occlusion = 0.9") + grey("MC", 0.5, "float inputs:occlusion = 1")
     extra = 'float3[] extent = [(0, 0, 0), (1, 1, 0)]\n    normal3f[] normals = [(0, 0, 1), (0, 0, 1), (0, 0, 1)]'
     body = mats + "".join(tri(m, f"rel material:binding = </M{m}>\n    {extra}") for m in "ABC")
     api = '    prepend apiSchemas = ["MaterialBindingAPI"]\n'  # bindings as pxr wants them: no pxr diagnostic
@@ -393,7 +393,7 @@ def test_ignored_inputs_are_one_summary_line_with_counts(tmp_path):
         body = body.replace(f'def Mesh "{m}"', f'def Mesh "{m}" (\n{api})')
     s = load_stage(stage(tmp_path, body))
     summary = [w for w in s.warnings if w.startswith("s.usda:")]
-    assert summary == ["s.usda: ignored: 1 x inputs:metallic, 2 x inputs:roughness"], s.warnings
+    assert summary == ["s.usda: ignored: 1 x inputs:displacement, 2 x inputs:occlusion"], s.warnings
 
 
 def test_unauthored_meters_per_unit_is_centimetres_with_a_warning(tmp_path):

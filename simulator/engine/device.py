@@ -172,6 +172,7 @@ class DeviceScene:
         rec.albedo = arr(albedo, float)
         rec.emission = arr(emission, wp.vec2)
         rec.two_sided = arr(two_sided, wp.int32)
+        self._upload_surfaces(wp, K, rec, g)
 
         # Emissive triangles: picked with probability ∝ emitted power
         # (radiance × area × sides), the best choice when all are visible.
@@ -202,6 +203,46 @@ class DeviceScene:
         self._keep += [mesh, points, tri_ids, rec.albedo, rec.emission, rec.two_sided, rec.emit_tris, rec.emit_cdf,
                        rec.emit_prob, rec.lights]  # fmt: skip
         return rec
+
+    def _upload_surfaces(self, wp, K, rec, g) -> None:
+        """The surfaces beyond Lambert (``Geometry.surfaces``, :mod:`simulator.kernels.surfaces`) on
+        ``rec``; an all-matte stage gets ``surfaces = 0`` and one-element placeholders the kernels never
+        read, so its trace is today's matte trace."""
+        from simulator.kernels.surface_rec import SurfRec
+
+        modelled = g.has_surfaces and g.n_triangles > 0
+        rec.surfaces = 1 if modelled else 0
+        rows = []
+        for s in (g.surfaces if modelled else []):
+            r = SurfRec()
+            r.coverage = float(s.coverage)
+            r.pane = 1 if s.pane else 0
+            r.ior = float(s.ior)
+            r.tau = float(s.tau)
+            r.glossy = 1 if s.glossy else 0
+            r.roughness, r.metallic = float(s.roughness), float(s.metallic)
+            r.specular, r.workflow = float(s.specular_grey), 1 if s.use_specular_workflow else 0
+            r.coat, r.coat_roughness = float(s.clearcoat), float(s.clearcoat_roughness)
+            rows.append(r)
+        if modelled:
+            sid = np.ascontiguousarray(g.surface_id, np.int32)
+            side = np.zeros(g.n_triangles, np.int32) if g.solid_side is None else g.solid_side.astype(np.int32)
+        else:
+            sid, side = np.full(1, -1, np.int32), np.zeros(1, np.int32)
+        if not rows:
+            rows = [SurfRec()]
+        rec.surf_id = wp.array(sid, dtype=wp.int32)
+        rec.surf_side = wp.array(side, dtype=wp.int32)
+        rec.surf = wp.array(rows, dtype=SurfRec)
+        from simulator.scene.surfaces import mirror_planes
+
+        planes, face_plane, _ = (mirror_planes(g.points, g.triangles, g.surface_id, g.surfaces) if modelled
+                                 else (np.zeros((0, 4)), np.full(1, -1, np.int32), 0))
+        rec.n_mirror_planes = len(planes)
+        rec.mirror_planes = wp.array(planes.astype(np.float32) if len(planes) else np.zeros((1, 4), np.float32),
+                                     dtype=wp.vec4)
+        rec.face_mirror = wp.array(face_plane.astype(np.int32), dtype=wp.int32)
+        self._keep += [rec.surf_id, rec.surf_side, rec.surf, rec.mirror_planes, rec.face_mirror]
 
     def _upload_hero(self, wp, rec, tables) -> None:
         """The hero-wavelength tables (:class:`simulator.spectra.hero.HeroTables`) on ``rec``; placeholders

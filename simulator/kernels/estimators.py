@@ -69,10 +69,16 @@ from .sampling import (
     pdf_cosine_hemisphere,
     sample_cosine_hemisphere,
     sample_uniform_cone,
+    frame_x,
+    frame_y,
     sensor_stream_key,
     to_world,
 )
-from .shadows import hit_light_before, shadow_ray_clear
+from .shadows import hit_light_before, shadow_ray_clear, shadow_ray_pass
+from .surfaces import ABSORB, MIRROR, mirror, pass_through
+from .bsdf import Bsdf, bsdf_f, bsdf_pdf, bsdf_sample, mirror_reflectance
+from .glossy import face_bsdf, is_glossy, mirror_share
+from .mirrors import image_source
 from .shaping import shaping_factor
 from .spectral import Reflection, hero_nodes, lane_response, spectral_contribution, spectral_row
 
@@ -83,6 +89,8 @@ wp.set_module_options({"enable_backward": False})
 # ends with probability one; this cap only guards against ρ rounding to 1.
 # At ρ = 0.999 it drops a fraction 0.999^65536 ≈ 4e-29 of the light.
 MAX_VERTICES = wp.constant(65536)
+# a radiance meter's ray reflected off more panes than this (two facing panes) is taken as absorbed
+MAX_MIRRORS = wp.constant(64)
 
 # Russian roulette weight window: a path's throughput β never falls below
 # TraceParams.rr_threshold (see vertex_irradiance); the engine sets it per
@@ -196,8 +204,23 @@ def surface_albedo(scene: SceneRec, params: TraceParams, face: int, tint: wp.vec
 
 
 @wp.func
+def to_local(v: wp.vec3, n: wp.vec3) -> wp.vec3:
+    """v in the frame of :func:`to_world` about n (its inverse)."""
+    return wp.vec3(wp.dot(v, frame_x(n)), wp.dot(v, frame_y(n)), wp.dot(v, n))
+
+
+@wp.func
 def vertex_irradiance(
     scene: SceneRec, p_in: wp.vec3, n_in: wp.vec3, weight_in: float, params: TraceParams, skip_first: int, rng_in: wp.uint32
+) -> wp.vec2:
+    """:func:`vertex_estimate` from a sensor or a matte face: weight_in × an estimate of the irradiance."""
+    return vertex_estimate(scene, p_in, n_in, weight_in, params, skip_first, rng_in, -1, wp.vec3(0.0, 0.0, 1.0))
+
+
+@wp.func
+def vertex_estimate(
+    scene: SceneRec, p_in: wp.vec3, n_in: wp.vec3, weight_in: float, params: TraceParams, skip_first: int,
+    rng_in: wp.uint32, face_in: int, wo_in: wp.vec3
 ) -> wp.vec2:
     """weight_in × an estimate of the irradiance on (p, n), following bounces
     when ``params.bounces`` allows (see module docstring). With ``skip_first``
@@ -212,7 +235,14 @@ def vertex_irradiance(
     the cosine strategy now runs with probability 1 − c, so its solid-angle
     density is (1 − c)·cosθ/π in both MIS weights and in the hit's estimate
     π·L/(1 − c). Emitters, escapes and emission along guided segments are
-    not counted: those two strategies already cover all direct light."""
+    not counted: those two strategies already cover all direct light.
+
+    Glossy faces (``scene.surfaces``, :mod:`.glossy`): a vertex on one (the
+    first when ``face_in`` is glossy, seen from ``wo_in``) weighs its light
+    samples by π·f(wi, wo), draws the next direction by the BSDF (β takes
+    f·cosθ/pdf) and weighs both by MIS with the BSDF's pdf; its mirror part
+    is a direction chosen with probability :func:`mirror_share`, whose rays
+    no light sample weighs against."""
     rng = rng_in
     p = p_in
     n = n_in
@@ -223,6 +253,19 @@ def vertex_irradiance(
     depth = int(0)
     cur_face = int(-1)  # the triangle p lies on (depth ≥ 1)
     prev_row = int(0)  # the guide row of the vertex before p
+    # a mirror reflection off a pane (scene.surfaces only, see kernels.surfaces): the next vertex p is
+    # that delta vertex; the ray leaves it along spec_d, with no light sample there and no MIS weight on
+    # what that ray meets (no light sample could have found it); β and the weight are unchanged, since
+    # the reflection was chosen with the probability R it weighs
+    delta = int(0)
+    spec_d = wp.vec3(0.0, 0.0, 1.0)
+    # the vertex on a glossy face: its BSDF, and the direction toward the vertex before it
+    gl = int(0)
+    bs = Bsdf()
+    wo_g = wo_in
+    if scene.surfaces != 0 and is_glossy(scene, face_in):
+        gl = 1
+        bs = face_bsdf(scene, face_in)
     while depth < MAX_VERTICES:
         row = guide_row(scene, depth, cur_face)
         c_v = guide_fraction(scene, params, depth, row)
@@ -235,10 +278,15 @@ def vertex_irradiance(
         if scene.has_mesh != 0 and (depth > 0 or not near_light(scene, p, off)):
             o = p + off * n
         count = not (skip_first != 0 and depth == 0)
+        wo_l = wp.vec3(0.0, 0.0, 1.0)
+        pm = float(0.0)  # probability of the glossy vertex's mirror part
+        if gl != 0:
+            wo_l = to_local(wo_g, n)
+            pm = mirror_share(bs, wo_l[2])
         # -- next-event estimation: each light once, or (pick_light) the
         #    delta lights and one light with area, picked with P(li | x)
         pk = LightPick()
-        if params.nee != 0 and count:
+        if params.nee != 0 and count and delta == 0:
             if picks_at(params, depth):
                 pk = pick_light(scene, p, n, params.mask_row, depth, rng)
                 rng = pk.rng
@@ -255,14 +303,28 @@ def vertex_irradiance(
                     sel = pk.prob
                 ls = sample_light(scene, li, p, n, u)  # geometry from the true point; only rays start at o
                 ls.value = ls.value * (shaping_factor(scene.lights[li], -ls.wi) / sel)
+                pdf_dir = float(0.0)
+                if gl != 0:  # the BSDF's value and the density its direction samples give wi
+                    wi_l = to_local(ls.wi, n)
+                    ls.value = ls.value * (PI * bsdf_f(bs, wi_l, wo_l))
+                    pdf_dir = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
                 got = wp.vec2(0.0, 0.0)
                 if ls.value[0] > 0.0 or ls.value[1] > 0.0:
                     w = float(1.0)
                     if params.mis != 0 and ls.pdf > 0.0:
-                        w = power_heuristic(sel * ls.pdf, (1.0 - c_v) * pdf_cosine_hemisphere(wp.dot(ls.wi, n)))
+                        if gl == 0:
+                            pdf_dir = (1.0 - c_v) * pdf_cosine_hemisphere(wp.dot(ls.wi, n))
+                        w = power_heuristic(sel * ls.pdf, pdf_dir)
                     if w > 0.0 or params.tally_pick != 0:
                         count_ray(scene, params)
-                        if shadow_ray_clear(scene, o, p, li, ls):
+                        clear = bool(True)
+                        if scene.surfaces != 0:  # through panes and cut-outs, at their transmittance
+                            vis = shadow_ray_pass(scene, o, p, li, ls)
+                            ls.value = ls.value * vis
+                            clear = vis > 0.0
+                        else:
+                            clear = shadow_ray_clear(scene, o, p, li, ls)
+                        if clear:
                             got = ls.value
                             c_light = wp.vec2(0.0, 0.0)
                             if params.spectral != 0 and li == params.emissive_light:
@@ -274,6 +336,20 @@ def vertex_irradiance(
                                 tally_patch(scene, params, prev_row, cur_face, p, c_light)
                 if params.tally_pick != 0:
                     tally_pick(scene, params, li, p, n, depth, weight, got)
+        # -- delta lights seen in flat mirrors: their image sources (kernels.mirrors); light reflected
+        #    on the way, so indirect (counted at a sensor's vertex even without its direct light)
+        if params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes > 0:
+            for li in range(scene.n_lights):
+                if not is_delta(scene.lights[li]):
+                    continue
+                for k in range(scene.n_mirror_planes):
+                    count_ray(scene, params)
+                    im = image_source(scene, li, k, p, n, o)
+                    v = im.value
+                    if gl != 0:
+                        v = v * (PI * bsdf_f(bs, to_local(im.wi, n), wo_l))
+                    if v[0] > 0.0 or v[1] > 0.0:
+                        total += light_contribution_dir(scene, params, li, weight * v, tint, im.wi)
         if params.bsdf == 0:
             break
         # -- Russian roulette (a weight window): below the threshold t the path
@@ -310,14 +386,44 @@ def vertex_irradiance(
                 depth += 1
                 continue
         # -- a cosine-weighted direction: E ≈ π·L(ω)
-        local = sample_cosine_hemisphere(wp.vec2(wp.randf(rng), wp.randf(rng)))
-        if local[2] <= 0.0:
-            break
-        wi = to_world(local, n)
+        local = wp.vec3(0.0, 0.0, 1.0)
+        wi = spec_d
+        g_dir = float(1.0)  # a glossy vertex's f·cosθ/pdf for this direction (β takes it at the hit)
+        mirror_now = int(0)
+        pdf_g = float(0.0)
+        if delta == 0 and gl != 0:
+            if pm > 0.0 and wp.randf(rng) < pm:  # the mirror part: reflectance F over its probability
+                wi = mirror(-wo_g, n)
+                g_dir = mirror_reflectance(bs, wo_l[2]) / pm
+                mirror_now = 1
+            else:
+                wi_l = bsdf_sample(bs, wo_l, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
+                if wi_l[2] <= 0.0:
+                    break
+                pdf_g = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
+                if pdf_g <= 0.0:
+                    break
+                g_dir = bsdf_f(bs, wi_l, wo_l) * wi_l[2] / pdf_g
+                wi = to_world(wi_l, n)
+        elif delta == 0:
+            local = sample_cosine_hemisphere(wp.vec2(wp.randf(rng), wp.randf(rng)))
+            if local[2] <= 0.0:
+                break
+            wi = to_world(local, n)
         pdf_b = (1.0 - c_v) * local[2] * INV_PI  # this strategy's density: it runs with probability 1 − c
         w_dir = weight * PI / (1.0 - c_v)
+        if gl != 0:
+            pdf_b = pdf_g
+            w_dir = weight * PI * g_dir
         count_ray(scene, params)
         hit = first_hit(scene, o, wi, RAY_INF)
+        event = int(0)
+        if scene.surfaces != 0:  # through panes and cut-outs to where the ray stops (kernels.surfaces)
+            pas = pass_through(scene, o, wi, hit, rng)
+            rng = pas.rng
+            hit = pas.hit
+            event = pas.event
+        weigh = params.mis != 0 and params.nee != 0 and delta == 0 and mirror_now == 0  # MIS against p's light samples
         t_hit = hit.t
         face = hit.face
         ng = hit.ng
@@ -329,7 +435,7 @@ def vertex_irradiance(
             t = hit_light_before(l, o, wi, t_hit)  # −1 for lights with no surface
             if t > 0.0 and count:
                 w = float(1.0)
-                if params.mis != 0 and params.nee != 0:
+                if weigh:
                     pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1)
                     w = power_heuristic(pdf_b, pdf_l)
                 total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission, tint)
@@ -338,16 +444,33 @@ def vertex_irradiance(
                 le = escaped_radiance(scene.lights[li], wi)
                 if (le[0] > 0.0 or le[1] > 0.0) and count:
                     w = float(1.0)
-                    if params.mis != 0 and params.nee != 0:
+                    if weigh:
                         pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, RAY_INF, -1)
                         w = power_heuristic(pdf_b, pdf_l)
                     total += light_contribution_dir(scene, params, li, (w_dir * w) * le, tint, wi)
             break
         cos_view = -wp.dot(wi, ng)
+        if event == ABSORB:
+            break
+        if event == MIRROR:
+            if params.bounces >= 0 and depth >= params.bounces:
+                break
+            if gl != 0:  # the glossy vertex's factor, carried through the delta vertex
+                beta = beta * g_dir
+                weight = weight_in * beta
+                gl = 0
+            p = o + t_hit * wi
+            n = wp.where(cos_view > 0.0, ng, -ng)
+            spec_d = mirror(wi, ng)
+            delta = 1
+            cur_face = face
+            depth += 1
+            continue
+        delta = 0
         le = tri_emitted(scene, face, cos_view)
         if (le[0] > 0.0 or le[1] > 0.0) and count:
             w = float(1.0)
-            if params.mis != 0 and params.nee != 0 and params.emissive_light >= 0:
+            if weigh and params.emissive_light >= 0:
                 w = power_heuristic(pdf_b, pick_scale(scene, params, pk, params.emissive_light, p, n, depth)
                                     * pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
             total += emissive_contribution(scene, params, face, (w_dir * w) * le, tint)
@@ -356,9 +479,18 @@ def vertex_irradiance(
         # -- reflect: L_o = ρ/π·E, so the next vertex's weight is w_dir·ρ/π
         #    = weight_in·β·ρ (the roulette comes after that vertex's
         #    next-event estimate, above)
+        if gl != 0:
+            beta = beta * g_dir
+            gl = 0
         refl = surface_albedo(scene, params, face, tint)
-        beta = beta * refl.rho
-        tint = refl.tint
+        if scene.surfaces != 0 and is_glossy(scene, face):
+            # the glossy vertex takes its f·cosθ/pdf when it draws the next direction (grey: tint kept)
+            gl = 1
+            bs = face_bsdf(scene, face)
+            wo_g = -wi
+        else:
+            beta = beta * refl.rho
+            tint = refl.tint
         if c_v > 0.0:  # one-sample MIS against the guide (mixture_factor)
             beta = beta * mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
                                          local[2] * wp.abs(cos_view) * INV_PI / (t_hit * t_hit))  # fmt: skip
@@ -381,14 +513,38 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     o = s.position
     count_ray(scene, params)
     hit = first_hit(scene, o, d, RAY_INF)
-    t_hit = hit.t
-    face = hit.face
-    ng = hit.ng
     # Emitters seen straight along the meter's ray, and the first surface's
     # reflection of the light reaching it straight from emitters, are the
     # direct component; with skip_direct both are left out.
     direct = params.skip_direct == 0
     total = wp.vec2(0.0, 0.0)
+    skip_next = params.skip_direct
+    if scene.surfaces != 0:
+        # through panes and cut-outs; a mirror reflection off a pane sends the ray on (what it then
+        # sees was reflected on the way: indirect), each segment's lights counted as it passes them
+        for k in range(MAX_MIRRORS):
+            pas = pass_through(scene, o, d, hit, rng)
+            rng = pas.rng
+            hit = pas.hit
+            if pas.event != MIRROR and pas.event != ABSORB:
+                break
+            for li in range(scene.n_lights):
+                l = scene.lights[li]
+                if hit_light_before(l, o, d, hit.t) > 0.0 and direct:
+                    total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, params.tint)
+            if pas.event == ABSORB or k == MAX_MIRRORS - 1:
+                return total
+            q = o + hit.t * d
+            side = wp.where(wp.dot(d, hit.ng) < 0.0, hit.ng, -hit.ng)
+            d = mirror(d, hit.ng)
+            o = q + offset_length(scene, q) * side
+            direct = True
+            skip_next = 0
+            count_ray(scene, params)
+            hit = first_hit(scene, o, d, RAY_INF)
+    t_hit = hit.t
+    face = hit.face
+    ng = hit.ng
     for li in range(scene.n_lights):
         l = scene.lights[li]
         if hit_light_before(l, o, d, t_hit) > 0.0 and direct:
@@ -404,11 +560,14 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
         if le[0] > 0.0 or le[1] > 0.0:
             total += emissive_contribution(scene, params, face, le, params.tint)
     refl = surface_albedo(scene, params, face, params.tint)
-    if refl.rho > 0.0:
+    if scene.surfaces != 0 and is_glossy(scene, face):  # L = ∫ f L cos dω: the vertex weighs by π·f
+        n = wp.where(cos_view > 0.0, ng, -ng)
+        total += vertex_estimate(scene, o + t_hit * d, n, INV_PI, params, skip_next, rng, face, -d)
+    elif refl.rho > 0.0:
         n = wp.where(cos_view > 0.0, ng, -ng)
         prm = params
         prm.tint = refl.tint
-        total += vertex_irradiance(scene, o + t_hit * d, n, refl.rho * INV_PI, prm, params.skip_direct, rng)
+        total += vertex_irradiance(scene, o + t_hit * d, n, refl.rho * INV_PI, prm, skip_next, rng)
     return total
 
 

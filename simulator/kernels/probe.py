@@ -49,6 +49,7 @@ from simulator.scene.model import LightKind, SensorKind
 
 from .estimators import SensorRec, TraceParams, hero_nodes, sample_radiance, shaping_factor, spectral_row, unoccluded
 from .lights import SceneRec
+from .surfaces import transmittance_along
 from .sampling import hero_stream_key, sensor_stream_key
 
 _POINT = wp.constant(int(LightKind.POINT))
@@ -170,6 +171,16 @@ def probe_weight(q: int, w: wp.vec3) -> float:
 
 
 @wp.func
+def delta_visibility(scene: SceneRec, p: wp.vec3, w: wp.vec3, dist: float) -> float:
+    """1 or 0 for an open or blocked segment; through panes and cut-outs the share they pass."""
+    if scene.surfaces != 0:
+        return transmittance_along(scene, p, w, dist, -1)
+    if unoccluded(scene, p, w, dist, -1):
+        return 1.0
+    return 0.0
+
+
+@wp.func
 def delta_incident(scene: SceneRec, li: int, p: wp.vec3) -> wp.vec4:
     """(ω, E⊥) of delta light ``li`` at p: the unit direction toward it in the
     first three components and the normal irradiance it gives (radiometric)
@@ -182,13 +193,15 @@ def delta_incident(scene: SceneRec, li: int, p: wp.vec3) -> wp.vec4:
         if dist <= 0.0:
             return wp.vec4(0.0)
         w = d / dist
-        if not unoccluded(scene, p, w, dist, -1):
+        vis = delta_visibility(scene, p, w, dist)
+        if vis <= 0.0:
             return wp.vec4(0.0)
-        return wp.vec4(w[0], w[1], w[2], shaping_factor(l, -w) / (dist * dist))  # E⊥ = I(ω)/d²
+        return wp.vec4(w[0], w[1], w[2], vis * shaping_factor(l, -w) / (dist * dist))  # E⊥ = I(ω)/d²
     if l.kind == _DISTANT and l.one_minus_cos <= 0.0:
-        if not unoccluded(scene, p, l.ez, 1.0e30, -1):
+        vis = delta_visibility(scene, p, l.ez, 1.0e30)
+        if vis <= 0.0:
             return wp.vec4(0.0)
-        return wp.vec4(l.ez[0], l.ez[1], l.ez[2], 1.0)  # E⊥ is the emission itself
+        return wp.vec4(l.ez[0], l.ez[1], l.ez[2], vis)  # E⊥ is the emission itself (× what panes pass)
     return wp.vec4(0.0)
 
 

@@ -15,6 +15,7 @@ from simulator.scene.model import LightKind
 
 from .lights import RAY_INF, LightRec, LightSample, SceneRec, hit_light
 from .rays import unoccluded
+from .surfaces import transmittance_along
 
 
 #: float32 unit roundoff u = 2⁻²⁴
@@ -158,8 +159,18 @@ def shadow_ray_clear(scene: SceneRec, o: wp.vec3, p: wp.vec3, li: int, ls: Light
     segment ends on q itself, since it is met as the mesh triangle it is."""
     if scene.has_mesh == 0:
         return True
+    seg = shadow_segment(scene, o, p, li, ls)
+    if seg[3] <= 0.0:
+        return True
+    return unoccluded(scene, o, wp.vec3(seg[0], seg[1], seg[2]), seg[3], ls.tri)
+
+
+@wp.func
+def shadow_segment(scene: SceneRec, o: wp.vec3, p: wp.vec3, li: int, ls: LightSample) -> wp.vec4:
+    """The shadow ray of :func:`shadow_ray_clear` as (unit direction, length): from o to the light point
+    moved off the light (lights at infinity: along ``ls.wi`` for ``ls.dist``); length 0 when o is on it."""
     if ls.dist >= RAY_INF:
-        return unoccluded(scene, o, ls.wi, ls.dist, ls.tri)
+        return wp.vec4(ls.wi[0], ls.wi[1], ls.wi[2], ls.dist)
     l = scene.lights[li]
     q = p + ls.dist * ls.wi
     if ls.tri < 0:
@@ -169,8 +180,21 @@ def shadow_ray_clear(scene: SceneRec, o: wp.vec3, p: wp.vec3, li: int, ls: Light
     d = q - o
     dist = wp.length(d)
     if dist <= 0.0:
-        return True
-    return unoccluded(scene, o, d / dist, dist, ls.tri)
+        return wp.vec4(0.0, 0.0, 0.0, 0.0)
+    w = d / dist
+    return wp.vec4(w[0], w[1], w[2], dist)
+
+
+@wp.func
+def shadow_ray_pass(scene: SceneRec, o: wp.vec3, p: wp.vec3, li: int, ls: LightSample) -> float:
+    """The share of light sample ``ls`` that reaches o along :func:`shadow_ray_clear`'s segment through
+    surfaces that pass light (coverage, panes; :func:`.surfaces.transmittance_along`): 0 when blocked."""
+    if scene.has_mesh == 0:
+        return 1.0
+    seg = shadow_segment(scene, o, p, li, ls)
+    if seg[3] <= 0.0:
+        return 1.0
+    return transmittance_along(scene, o, wp.vec3(seg[0], seg[1], seg[2]), seg[3], ls.tri)
 
 
 @wp.func

@@ -41,6 +41,8 @@ def exact_plan_refusal(scene: Scene, sensor: Sensor, culled: list[str]) -> str |
     g = scene.geometry
     if g.n_triangles and np.any(g.emission > 0):
         return "emissive surfaces are lights too"
+    if g.has_surfaces:
+        return "panes or cut-outs pass part of the light: shadow rays through them"
     lights = [l for l in scene.lights if l.name not in culled]
     if not lights:
         return None

@@ -66,7 +66,7 @@ def probe_method(scene: Scene, requested: str, component: str = "total") -> tupl
     and have no closed form: paths if any surface reflects (or for the
     indirect component), else direct light sampling; an explicit Monte Carlo
     method as asked (``analytic`` falls back to this choice)."""
-    reflects = scene.geometry.n_triangles > 0 and bool(np.any(scene.geometry.albedo > 0))
+    reflects = scene.geometry.n_triangles > 0 and bool(np.any(scene.geometry.reflecting()))
     if requested in ("auto", "analytic", "exact"):
         if component == "indirect":
             return "path", "the indirect component is light reflected on the way: paths"
@@ -139,7 +139,7 @@ def scene_bounds(scene: Scene) -> SceneBounds:
             n0 = np.cross(e[0, 1] - e[0, 0], e[0, 2] - e[0, 0])
             n0 /= np.linalg.norm(n0)
             coplanar = bool(np.all(np.abs((e - e[0, 0]) @ n0) <= tol))
-    subsets = {"all": np.ones(len(pts), bool), "suspect": suspect, "opaque": ~emissive, "reflecting": g.albedo > 0}
+    subsets = {"all": np.ones(len(pts), bool), "suspect": suspect, "opaque": ~emissive, "reflecting": g.reflecting()}
     return SceneBounds(FrontIndex(pts, subsets, tol), bool(emissive.any()), coplanar)
 
 
@@ -229,6 +229,8 @@ class Plan:
     transport: str = "grey"
     #: per Monte Carlo method used: how next-event estimation samples the lights, and why
     light_sampling: dict[str, str] = field(default_factory=dict)
+    #: one line per surface beyond Lambert: what it needs and why (:func:`surface_needs`); empty: all matte
+    surfaces: list[str] = field(default_factory=list)
 
     def groups(self) -> dict[str, np.ndarray]:
         """Sensor indices per method, in first-use order."""
@@ -256,7 +258,36 @@ class Plan:
             "methods": {m: len(ix) for m, ix in self.groups().items()},
             "light_sampling": dict(self.light_sampling),
             "sensors": [asdict(sp) for sp in self.sensors],
-        }
+        } | ({"surfaces": list(self.surfaces)} if self.surfaces else {})
+
+
+def surface_needs(scene: Scene) -> list[str]:
+    """One line per row of ``Geometry.surfaces`` its faces use: the prim that first uses it, how many
+    triangles, what the kernels model (coverage, dielectric slab) and why, and what is read but not
+    modelled. Empty when every face is matte (the matte kernels run unchanged)."""
+    g = scene.geometry
+    if not g.has_surfaces:
+        return []
+    out = []
+    counts = np.bincount(g.surface_id[g.surface_id >= 0], minlength=len(g.surfaces))
+    for k, s in enumerate(g.surfaces):
+        if counts[k] == 0:
+            continue
+        if s.pane:
+            why = (f"probesim:transmittance {s.transmittance:g}" if s.transmittance is not None
+                   else f"opacity {s.opacity:g} in {s.opacity_mode} mode")
+            if g.solid_side is not None and (closed := int(np.count_nonzero((g.surface_id == k) & (g.solid_side != 0)))):
+                why += f"; {closed} on closed meshes, read as slabs entered once"
+        elif s.coverage < 1.0:
+            why = (f"opacity {s.opacity:g} in presence mode" if s.opacity_threshold == 0
+                   else f"opacity {s.opacity:g} against opacityThreshold {s.opacity_threshold:g}")
+        else:
+            why = "specular inputs authored away from their fallbacks"
+        line = f"{s.name}: {counts[k]} triangle(s): {'; '.join(s.lobes())} ({why})"
+        if s.unmodelled:
+            line += f"; read, not modelled: {', '.join(s.unmodelled)}"
+        out.append(line)
+    return out
 
 
 def lights_behind(scene: Scene, sensor: Sensor) -> list[str]:
@@ -357,7 +388,7 @@ def _reflecting_in_front(scene: Scene, sensor: Sensor, bounds: SceneBounds) -> t
             return "none", False
         reflects = first["reflecting"] >= 0
     else:  # meters and probes look everywhere
-        reflects = bool(np.any(g.albedo > 0))
+        reflects = bool(np.any(g.reflecting()))
     return ("reflecting surfaces" if reflects else "black occluders"), reflects
 
 
@@ -414,7 +445,8 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
             method, reason = paths, "surfaces it sees reflect: interreflection needs paths" + paths_why
         plans.append(SensorPlan(s.name, kind, method, bool(METHOD_FLAGS.get(method, (0, 0, 0, False))[3]), reason, lights,
                                 culled, geometry))  # fmt: skip
-    return Plan(requested, component, channels, channel_reason, plans, transport, _light_sampling(scene, plans))
+    return Plan(requested, component, channels, channel_reason, plans, transport, _light_sampling(scene, plans),
+                surface_needs(scene))
 
 
 def _light_sampling(scene: Scene, plans: list[SensorPlan]) -> dict[str, str]:
@@ -440,6 +472,8 @@ def _path_method(scene: Scene) -> tuple[str, str]:
 
     if not AUTO_GUIDED:
         return "path", ""
+    if scene.geometry.has_surfaces:
+        return "path", " (panes or cut-outs: plain paths, the surface guide assumes matte segments)"
     lay = patch_layout(scene.geometry.points, scene.geometry.triangles)
     if not lay.usable:
         return "path", f" ({lay.reason})"
@@ -464,4 +498,5 @@ def format_plan(plan: Plan, max_rows: int = 40) -> str:
     for m, how in plan.light_sampling.items():
         lines.append(f"{m} samples {how}")
     lines.append(f"methods: {counts}; component {plan.component}; transport {plan.transport}, channels: {plan.channels} ({plan.channel_reason})")
+    lines += [f"surface {line}" for line in plan.surfaces]
     return "\n".join(lines)

@@ -1253,3 +1253,29 @@ def latlong_rows_illuminance(row_luminance, vertical=False):
         g = lambda x: x - np.sin(x) * np.cos(x)  # noqa: E731
         return float(np.sum(row_luminance * (g(t1) - g(t0))))
     return float(np.sum(row_luminance * np.pi * (np.sin(t1) ** 2 - np.sin(t0) ** 2)))
+
+
+def thin_slab(cos_theta, n: float, t0: float | None = None):
+    """Unpolarised (R, T) of a plane-parallel slab of index ``n`` at incidence cosine ``cos_theta``
+    (docs/REFERENCES.md §Thin slab): per polarisation, with r the Fresnel reflectance of one interface
+    and τ the internal transmittance of one pass, T = (1 − r)²τ/(1 − r²τ²) and R = r + (1 − r)²rτ²/(1 −
+    r²τ²), averaged over s and p. ``t0``: the slab's normal-incidence transmittance (a glazing
+    datasheet's), which fixes τ₀ by T₀r₀²τ₀² + (1 − r₀)²τ₀ − T₀ = 0 and τ = τ₀^(1/cosθ_t); None:
+    clear (τ = 1)."""
+    c = np.asarray(cos_theta, dtype=np.float64)
+    sin_t = np.sqrt(np.maximum(0.0, 1.0 - c * c)) / n
+    ct = np.sqrt(1.0 - sin_t * sin_t)
+    tau0 = 1.0
+    if t0 is not None:
+        r0 = ((n - 1.0) / (n + 1.0)) ** 2
+        a, b = t0 * r0 * r0, (1.0 - r0) ** 2
+        tau0 = (-b + np.sqrt(b * b + 4.0 * a * t0)) / (2.0 * a)
+    tau = tau0 ** (1.0 / ct)
+    rs = ((c - n * ct) / (c + n * ct)) ** 2
+    rp = ((n * c - ct) / (n * c + ct)) ** 2
+    R = T = 0.0
+    for r in (rs, rp):
+        den = 1.0 - (r * tau) ** 2
+        T = T + 0.5 * (1.0 - r) ** 2 * tau / den
+        R = R + 0.5 * (r + (1.0 - r) ** 2 * r * tau * tau / den)
+    return R, T

@@ -304,6 +304,17 @@ class Geometry:
         spectral transport (the emissive spectrum × its uplift,
         :func:`simulator.spectra.sources.colour_emission`). None: grey
         everywhere.
+    surface_id : ndarray, shape (T,), int32, or None
+        Index into ``surfaces`` of each triangle's material beyond Lambert
+        (coverage, a dielectric pane; :mod:`simulator.scene.surfaces`), -1
+        for a matte face; None: every face matte (the kernels then run their
+        matte code only).
+    surfaces : list of Surface
+        The per-material table ``surface_id`` indexes.
+    solid_side : ndarray, shape (T,), int8, or None
+        Pane faces only: 0 on an open pane (a thin slab), +1 / −1 on a face
+        of a closed pane mesh whose front / back faces outward
+        (:func:`simulator.scene.surfaces.solid_sides`); None without panes.
     """
 
     points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
@@ -319,6 +330,21 @@ class Geometry:
     emissive_spectrum: str | float | None = None
     emissive_spectrum_authored: bool = False
     emission_rgb: np.ndarray | None = None
+    surface_id: np.ndarray | None = None
+    surfaces: list = field(default_factory=list)
+    solid_side: np.ndarray | None = None
+
+    @property
+    def has_surfaces(self) -> bool:
+        """Whether any face needs more than the matte kernels (a modelled :class:`Surface`)."""
+        return self.surface_id is not None and bool(np.any(self.surface_id >= 0))
+
+    def reflecting(self) -> np.ndarray:
+        """Per triangle: whether it sends light on (albedo > 0, or a modelled surface), shape (T,)."""
+        out = self.albedo > 0
+        if self.has_surfaces:
+            out = out | (self.surface_id >= 0)
+        return out
 
     @property
     def n_triangles(self) -> int:

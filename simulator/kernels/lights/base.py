@@ -33,6 +33,8 @@ import warp as wp
 
 from simulator.scene.model import LightKind
 
+from ..surface_rec import SurfRec
+
 #: length of a ray that leaves the scene, metres
 RAY_INF = wp.constant(1.0e30)
 
@@ -115,6 +117,14 @@ class SceneRec:
     albedo: wp.array(dtype=float)
     emission: wp.array(dtype=wp.vec2)  # front-face radiance per triangle
     two_sided: wp.array(dtype=wp.int32)
+    # surfaces beyond Lambert (kernels.surfaces); all unread while ``surfaces`` is 0 (an all-matte stage)
+    surfaces: int  # 1: some face has a row of surf (coverage, panes)
+    surf_id: wp.array(dtype=wp.int32)  # per triangle: its row of surf, −1 for a matte face
+    surf_side: wp.array(dtype=wp.int32)  # per triangle: 0 open pane (thin slab); ±1 closed pane mesh, front out / in
+    surf: wp.array(dtype=SurfRec)
+    n_mirror_planes: int  # flat planes of mirror faces (kernels.mirrors), 0 for none
+    mirror_planes: wp.array(dtype=wp.vec4)  # (n, d): n·x = d
+    face_mirror: wp.array(dtype=wp.int32)  # per triangle: its mirror plane, −1 for none
     emit_tris: wp.array(dtype=wp.int32)  # emissive triangle ids
     emit_cdf: wp.array(dtype=float)  # inclusive CDF over emit_tris, last = 1
     emit_prob: wp.array(dtype=float)  # per triangle: probability of being picked (0 if not emissive)

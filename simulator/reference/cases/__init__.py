@@ -149,6 +149,12 @@ _DIRECT: tuple[Case, ...] = (
          method="mis", note=D.overcast_note),
     Case("radiance_floor", "radiance_floor.toml", "a Lambertian floor under a delta sun, seen by radiance meters",
          D.radiance_floor),
+    Case("glazing 0°", "glazing.toml", "a delta sun at the zenith through a clear pane, a 0.70 datasheet pane and a "
+         "presence mesh of opacity 0.3", D.glazing, variants=(("sun", "zenith_0"),)),
+    Case("glazing 30°", "glazing.toml", "the glazing at 30° from the zenith: E cos T(θ)", D.glazing,
+         variants=(("sun", "zenith_30"),)),
+    Case("glazing 60°", "glazing.toml", "the glazing at 60° from the zenith", D.glazing,
+         variants=(("sun", "zenith_60"),)),
 )  # fmt: skip
 
 # Interreflection: path tracing with Russian roulette, several reflectances
@@ -195,6 +201,10 @@ _HARD: tuple[Case, ...] = (
     Case("hdr", "stability/hdr.toml", "a 1e5 W/m2 sun and a 1 W/m2 lamp", H.lights, _ST),
     Case("degenerate", "stability/degenerate.toml", "zero-area, sliver and duplicate faces", H.degenerate, _ST,
          scale=H.degenerate_unoccluded),
+    Case("glass", "stability/glass.toml", "a delta sun at 60 deg through a clear pane, a 0.70 pane and a presence mesh",
+         D.glazing, _ST, variants=(("sun", "zenith_60"),)),
+    Case("glossy", "stability/glossy.toml", "a brushed-metal (GGX) floor under a uniform sky, meters and a sensor",
+         H.glossy, _ST),
 )  # fmt: skip
 
 #: every case, each once: direct light, enclosures, the radiometric twins of

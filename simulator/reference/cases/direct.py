@@ -382,3 +382,29 @@ def cie171_5_2_ies_note(ctx: CaseContext, s: Sensor, ch: int) -> str:
 
 def flush_note(ctx: CaseContext, s: Sensor, ch: int) -> str:
     return "Lambert (flush light)"
+
+
+def glazing(ctx: CaseContext, s: Sensor, ch: int) -> float:
+    """A delta sun through a sheet 1 m above the receiver (stages/glazing.usda): E = E⊥·cosθ·T(θ),
+    T the unpolarised thin-slab transmittance of the sheet's pane (closed_forms.thin_slab: clear, or
+    the datasheet's 0.70 at normal incidence), 0.7 under the presence mesh of opacity 0.3
+    (docs/REFERENCES.md §Thin slab and §Coverage). Which sheet: the surface row of the triangle
+    straight above the receiver."""
+    l = one_light(ctx.scene, LightKind.DISTANT)
+    if l.half_angle != 0.0 or s.kind != SensorKind.IRRADIANCE:
+        raise no_closed_form(ctx, s, "a delta distant light and irradiance receivers only")
+    g = ctx.scene.geometry
+    toward = l.frame[:, 2]
+    c = max(0.0, float(np.dot(s.normal, toward)))
+    p = g.points[g.triangles]
+    above = [t for t in range(g.n_triangles) if ray_hits_triangles(s.position, toward, p[t:t + 1])]
+    rows = {int(g.surface_id[t]) for t in above} if g.surface_id is not None else set()
+    if len(rows) != 1 or min(rows) < 0:  # (a ray along a sheet's diagonal meets both its triangles)
+        raise no_closed_form(ctx, s, "one glazing sheet above the receiver")
+    row = g.surfaces[rows.pop()]
+    cos_sheet = abs(float(toward[2]))
+    if row.pane:
+        t = float(cf.thin_slab(cos_sheet, row.ior, row.transmittance)[1])
+    else:
+        t = 1.0 - row.coverage
+    return l.emission[ch] * c * t

@@ -111,3 +111,24 @@ def degenerate_unoccluded(ctx: CaseContext, s: Sensor, ch: int) -> float:
 def degenerate(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """:func:`degenerate_unoccluded`, and 0 under the blocker (x > 1.5)."""
     return 0.0 if s.position[0] > 1.5 else degenerate_unoccluded(ctx, s, ch)
+
+
+def glossy(ctx: CaseContext, s: Sensor, ch: int) -> float:
+    """A glossy floor (its one material's UsdPreviewSurface lobes) under a uniform sky of radiance L:
+    a meter looking down at θ reads L·A(cos θ), A the directional albedo; a down-facing irradiance
+    sensor 2πL ∫ A(μ) μ dμ (simulator.reference.microfacet, an implementation independent of the
+    kernels; Gauss–Legendre, 24 nodes in μ)."""
+    from simulator.reference.microfacet import directional_albedo, preview_lobes
+
+    g = ctx.scene.geometry
+    row = g.surfaces[int(g.surface_id[0])]
+    lobes = preview_lobes(float(g.albedo[0]), row.roughness, row.metallic, row.ior,
+                          row.specular_grey if row.use_specular_workflow else None, row.clearcoat,
+                          row.clearcoat_roughness)
+    (dome,) = [l for l in ctx.scene.lights if l.kind == LightKind.DOME]
+    big_l = dome.emission[ch]
+    if s.kind == SensorKind.RADIANCE:
+        return big_l * directional_albedo(lobes, abs(float(s.normal[2])))
+    x, w = np.polynomial.legendre.leggauss(24)
+    mu, w = 0.5 * (x + 1.0), 0.5 * w
+    return 2.0 * math.pi * big_l * float(sum(wk * mk * directional_albedo(lobes, mk, 256, 128) for mk, wk in zip(mu, w)))

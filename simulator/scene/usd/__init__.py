@@ -203,6 +203,8 @@ from __future__ import annotations
 
 import os
 
+import numpy as np
+
 from pxr import Usd, UsdGeom, UsdLux
 
 from simulator.errors import UserError
@@ -356,6 +358,10 @@ def load_stage(
         if require_light:
             _require_light(ctx, lights, geometry)
         _refuse_sealed_light(ctx, geometry, lights)
+        if geometry.solid_side is not None and np.any(geometry.solid_side != 0):
+            closed = sorted({geometry.prim_names[i] for i in np.unique(geometry.prim[geometry.solid_side != 0])})
+            ctx.ignored[f"refraction's bend in closed transparent mesh(es) {', '.join(closed[:3])}"
+                        f"{' ...' if len(closed) > 3 else ''} (read as slabs entered once, no offset)"] += len(closed)
         ctx.pxr_messages += pxr_said.collect()
         _finish_warnings(ctx)
     return Scene(
@@ -427,4 +433,4 @@ def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light],
                 if light.kind == LightKind.DOME:
                     domes.append((light, prim))
     attach_portals(ctx, stage, domes, portals)
-    return geo.build(ctx.reflectances, ctx.emissive_spectra), lights, sensors
+    return geo.build(ctx.reflectances, ctx.emissive_spectra, ctx.surfaces), lights, sensors

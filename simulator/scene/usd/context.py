@@ -65,6 +65,10 @@ class _Context:
     skel_cache: object | None = None
     skel_roots: dict = field(default_factory=dict)
 
+    #: surfaces beyond Lambert (:class:`simulator.scene.surfaces.Surface`), one per material; by material key
+    surfaces: list = field(default_factory=list)
+    surface_index: dict = field(default_factory=dict)
+
     def summary_parts(self) -> list[str]:
         """Parts of the stage's one summary warning line beyond what was not read or ignored."""
         parts = []

@@ -52,16 +52,19 @@ class _GeometryBuilder:
         self._emission_rgb: list[np.ndarray] = []
         self._emission: list[np.ndarray] = []
         self._two_sided: list[np.ndarray] = []
+        self._surface_id: list[np.ndarray] = []
         self._prim: list[np.ndarray] = []
         self._names: list[str] = []
         self._n_points = 0
 
     def add(self, name: str, points: np.ndarray, tris: np.ndarray, albedo,
-            emission, two_sided: bool, albedo_rgb=None, reflectance_id=None, emission_rgb=None) -> None:
+            emission, two_sided: bool, albedo_rgb=None, reflectance_id=None, emission_rgb=None,
+            surface_id=None) -> None:
         """Add one prim's world triangles; ``albedo`` (T,) or scalar, ``emission`` (T, 2) or (2,),
         ``albedo_rgb`` (T, 3) or (3,), default grey ``(a, a, a)``; ``reflectance_id`` (T,) or scalar,
         default -1 (no measured reflectance); ``emission_rgb`` (T, 3) or (3,), default (1, 1, 1)
-        (the emission's colour is the shared spectrum's)."""
+        (the emission's colour is the shared spectrum's); ``surface_id`` (T,) or scalar, default -1
+        (matte)."""
         t = len(tris)
         if t == 0:
             return
@@ -79,13 +82,23 @@ class _GeometryBuilder:
         self._emission_rgb.append(np.broadcast_to(np.asarray(1.0 if emission_rgb is None else emission_rgb, float),
                                                   (t, 3)))
         self._two_sided.append(np.full(t, bool(two_sided)))
+        self._surface_id.append(np.broadcast_to(np.asarray(-1 if surface_id is None else surface_id, np.int32), (t,)))
         self._prim.append(np.full(t, index, np.int32))
 
-    def build(self, reflectances=(), emissive_spectra=()) -> Geometry:
+    def build(self, reflectances=(), emissive_spectra=(), surfaces=()) -> Geometry:
         """The soup; ``reflectances`` the measured curves ``(name, ρ, grey)`` the ids index,
-        ``emissive_spectra`` the ``(spectrum or None, authored)`` of the emitting prims."""
+        ``emissive_spectra`` the ``(spectrum or None, authored)`` of the emitting prims, ``surfaces``
+        the :class:`~simulator.scene.surfaces.Surface` rows the surface ids index."""
         if not self._tris:
             return Geometry()
+        from simulator.scene.surfaces import solid_sides
+
+        sid = np.concatenate(self._surface_id).astype(np.int32)
+        points = np.concatenate(self._points).astype(np.float64)
+        triangles = np.concatenate(self._tris).astype(np.int32)
+        prim = np.concatenate(self._prim)
+        pane = np.array([s.pane for s in surfaces] + [False], bool)[sid]
+        side = solid_sides(points, triangles, prim, pane) if pane.any() else None
         ids = np.concatenate(self._reflectance_id).astype(np.int32)
         emission_rgb = np.concatenate(self._emission_rgb)
         spectra = list(dict.fromkeys(emissive_spectra))
@@ -95,15 +108,18 @@ class _GeometryBuilder:
             reflectances=[(name, np.asarray(rho, float)) for name, rho, _ in reflectances],
             emissive_spectrum=one[0],
             emissive_spectrum_authored=bool(one[1]),
-            points=np.concatenate(self._points).astype(np.float64),
-            triangles=np.concatenate(self._tris).astype(np.int32),
+            points=points,
+            triangles=triangles,
             albedo=np.concatenate(self._albedo),
             emission=np.concatenate(self._emission),
             two_sided=np.concatenate(self._two_sided),
-            prim=np.concatenate(self._prim),
+            prim=prim,
             prim_names=list(self._names),
             albedo_rgb=np.concatenate(self._albedo_rgb),
             emission_rgb=emission_rgb if np.any(emission_rgb != 1.0) else None,
+            surface_id=sid if (sid >= 0).any() else None,
+            surfaces=list(surfaces),
+            solid_side=side,
         )
 
 
@@ -128,6 +144,7 @@ class _Part:
     albedo_rgb: np.ndarray | None = None
     reflectance_id: np.ndarray | None = None
     emission_rgb: np.ndarray | None = None
+    surface_id: np.ndarray | None = None
 
 
 def _read_gprim(ctx: _Context, prim: Usd.Prim, geo: _GeometryBuilder) -> None:
@@ -154,12 +171,13 @@ def _gprim_part(ctx: _Context, prim: Usd.Prim) -> _Part | None:
     if is_light:
         surface = _geometry_light_surface(ctx, prim)
         faces = (np.full(n_faces, surface[0]), np.zeros((n_faces, 2)), np.ones(n_faces, bool),
-                 np.tile(surface[2], (n_faces, 1)), np.full(n_faces, surface[3], np.int32), np.ones((n_faces, 3)))
+                 np.tile(surface[2], (n_faces, 1)), np.full(n_faces, surface[3], np.int32), np.ones((n_faces, 3)),
+                 np.full(n_faces, -1, np.int32))
     else:
         faces = _face_surfaces(ctx, prim, n_faces)
     if faces is None:  # opacity 0 everywhere: it lets light through
         return None
-    albedo, emission, keep, albedo_rgb, curve, emission_rgb = faces
+    albedo, emission, keep, albedo_rgb, curve, emission_rgb, surface_id = faces
     tris, fanned, face_of = _triangulate_faces(points, counts, indices)
     if fanned:
         ctx.warn(f"{prim.GetPath()}: {fanned} self-intersecting or non-planar face(s) fan-triangulated")
@@ -171,12 +189,12 @@ def _gprim_part(ctx: _Context, prim: Usd.Prim) -> _Part | None:
     return _Part(name=str(prim.GetPath()), points=points, tris=tris, albedo=albedo[face_of],
                  emission=emission[face_of], two_sided=bool(gprim.GetDoubleSidedAttr().Get(ctx.time)),
                  is_light=is_light, albedo_rgb=albedo_rgb[face_of], reflectance_id=curve[face_of],
-                 emission_rgb=emission_rgb[face_of])
+                 emission_rgb=emission_rgb[face_of], surface_id=surface_id[face_of])
 
 
 def _face_surfaces(ctx: _Context, prim: Usd.Prim, n_faces: int):
     """Per-face ``(albedo (F,), emission (F, 2), kept (F,), albedo colour (F, 3), reflectance id (F,),
-    emission colour (F, 3))`` of a gprim; None when nothing is kept.
+    emission colour (F, 3), surface id (F,))`` of a gprim; None when nothing is kept.
 
     The prim's own bound material (or displayColor) covers every face; each
     ``GeomSubset`` of the ``materialBind`` family with a material bound to
@@ -189,11 +207,13 @@ def _face_surfaces(ctx: _Context, prim: Usd.Prim, n_faces: int):
         if base is None:
             return None
         return (np.full(n_faces, base[0]), np.tile(np.asarray(base[1], float), (n_faces, 1)), np.ones(n_faces, bool),
-                np.tile(base[2], (n_faces, 1)), np.full(n_faces, base[3], np.int32), np.tile(base[4], (n_faces, 1)))
+                np.tile(base[2], (n_faces, 1)), np.full(n_faces, base[3], np.int32), np.tile(base[4], (n_faces, 1)),
+                np.full(n_faces, base[5], np.int32))
     albedo = np.full(n_faces, base[0] if base else 0.0)
     albedo_rgb = np.tile(base[2] if base else np.zeros(3), (n_faces, 1))
     curve = np.full(n_faces, base[3] if base else -1, np.int32)
     emission_rgb = np.tile(base[4] if base else np.ones(3), (n_faces, 1))
+    surface_id = np.full(n_faces, base[5] if base else -1, np.int32)
     emission = np.tile(np.asarray(base[1] if base else (0.0, 0.0), float), (n_faces, 1))
     keep = np.full(n_faces, base is not None)
     for subset in subsets:
@@ -210,8 +230,8 @@ def _face_surfaces(ctx: _Context, prim: Usd.Prim, n_faces: int):
             keep[faces] = False
             continue
         albedo[faces], emission[faces], keep[faces], albedo_rgb[faces] = surface[0], surface[1], True, surface[2]
-        curve[faces], emission_rgb[faces] = surface[3], surface[4]
-    return (albedo, emission, keep, albedo_rgb, curve, emission_rgb) if keep.any() else None
+        curve[faces], emission_rgb[faces], surface_id[faces] = surface[3], surface[4], surface[5]
+    return (albedo, emission, keep, albedo_rgb, curve, emission_rgb, surface_id) if keep.any() else None
 
 
 def _add_placed(ctx: _Context, prim: Usd.Prim, part: _Part, a: np.ndarray, t: np.ndarray,
@@ -248,7 +268,8 @@ def _add_placed(ctx: _Context, prim: Usd.Prim, part: _Part, a: np.ndarray, t: np
     rgb = None if part.albedo_rgb is None else part.albedo_rgb[per_tri]
     rid = None if part.reflectance_id is None else part.reflectance_id[per_tri]
     e_rgb = None if part.emission_rgb is None or part.is_light else part.emission_rgb[per_tri]
-    geo.add(name, world, tris, part.albedo[per_tri], emission, part.two_sided, rgb, rid, e_rgb)
+    sid = None if part.surface_id is None else part.surface_id[per_tri]
+    geo.add(name, world, tris, part.albedo[per_tri], emission, part.two_sided, rgb, rid, e_rgb, sid)
 
 
 def _gprim_polygons(ctx: _Context, prim: Usd.Prim):

@@ -42,23 +42,36 @@ DEFAULT_ALBEDO = 0.18
 #: Material or its UsdPreviewSurface shader (the shader's wins), relative to the layer that authors it
 REFLECTANCE_ATTR = "probesim:reflectance"
 
-# UsdPreviewSurface input fallbacks (from its specification).
+#: a glazing datasheet's normal-incidence visible transmittance, ``float``, on the Material or its
+#: UsdPreviewSurface shader (the shader's wins): the material is then an absorbing thin slab
+TRANSMITTANCE_ATTR = "probesim:transmittance"
+
+# UsdPreviewSurface input fallbacks (from its specification). Every input here is read into the
+# inputs dict (``{name: (value, where)}``) that :func:`_preview_surface_inputs` returns, and from
+# that dict alone into the face's surface (:func:`_surface_row`), whatever wrote the dict.
 _PREVIEW_DEFAULTS = {
     "diffuseColor": (DEFAULT_ALBEDO,) * 3,
     "emissiveColor": (0.0, 0.0, 0.0),
     "opacity": 1.0,
-}
-
-# UsdPreviewSurface inputs probesim does not model, with their fallbacks: an
-# input authored (or connected) away from its fallback is counted as ignored.
-_IGNORED_DEFAULTS = {
-    "useSpecularWorkflow": 0,
-    "specularColor": (0.0, 0.0, 0.0),
-    "metallic": 0.0,
+    "opacityThreshold": 0.0,
+    "opacityMode": "transparent",
     "roughness": 0.5,
+    "metallic": 0.0,
+    "specularColor": (0.0, 0.0, 0.0),
+    "useSpecularWorkflow": 0,
+    "ior": 1.5,
     "clearcoat": 0.0,
     "clearcoatRoughness": 0.01,
-    "ior": 1.5,
+}
+
+# inputs of the specular and clearcoat lobes: authored away from the fallback, they give the face the
+# UsdPreviewSurface BSDF (a face with all of them at their fallbacks stays Lambertian: the fallback's 4%
+# specular at roughness 0.5 is read as part of its matte albedo)
+_UNMODELLED = ("roughness", "metallic", "specularColor", "useSpecularWorkflow", "clearcoat", "clearcoatRoughness")
+
+# UsdPreviewSurface inputs probesim does not read, with their fallbacks: an
+# input authored (or connected) away from its fallback is counted as ignored.
+_IGNORED_DEFAULTS = {
     "normal": (0.0, 0.0, 1.0),
     "displacement": 0.0,
     "occlusion": 1.0,
@@ -66,9 +79,12 @@ _IGNORED_DEFAULTS = {
 
 
 def _surface(ctx: _Context, prim: Usd.Prim,
-             bind_prim: Usd.Prim | None = None) -> tuple[float, tuple[float, float], np.ndarray, int, np.ndarray] | None:
-    """``(albedo, emission pair, albedo colour (3,), reflectance id, emission colour (3,))`` of a gprim, or
-    None when opacity 0 removes it.
+             bind_prim: Usd.Prim | None = None) -> tuple[float, tuple[float, float], np.ndarray, int, np.ndarray, int] | None:
+    """``(albedo, emission pair, albedo colour (3,), reflectance id, emission colour (3,), surface id)`` of a
+    gprim, or None when opacity 0 (or a cut-out threshold above it) removes it.
+
+    The surface id indexes ``ctx.surfaces`` (:func:`_surface_row`), -1 for a
+    matte face.
 
     ``bind_prim`` (default ``prim``) is where the material binding is
     resolved: a GeomSubset of ``prim`` for the subset's faces. The
@@ -81,14 +97,11 @@ def _surface(ctx: _Context, prim: Usd.Prim,
     if inputs is None:
         rgb, source = _display_color(ctx, prim)
         inputs = {"diffuseColor": (rgb, source), "emissiveColor": (_PREVIEW_DEFAULTS["emissiveColor"], ""),
-                  "opacity": (1.0, "")}
-    opacity = float(inputs["opacity"][0])
+                  "opacity": (1.0, ""), "_surface_key": "displayColor"}
     where = prim.GetPath() if bind_prim is None else bind_prim.GetPath()
-    if opacity <= 0.0:
-        ctx.warn(f"{where}: opacity 0; left out (it blocks no light)")
+    sid = _surface_row(ctx, prim if bind_prim is None else bind_prim, inputs)
+    if sid is None:
         return None
-    if opacity < 1.0:
-        ctx.ignored["inputs:opacity between 0 and 1 (read as opaque)"] += 1
     curve = inputs.get("reflectance", (-1, ""))[0]
     albedo = _albedo(ctx, prim, inputs) if curve < 0 else ctx.reflectances[curve][2]
     rgb, source = inputs["emissiveColor"]
@@ -102,7 +115,120 @@ def _surface(ctx: _Context, prim: Usd.Prim,
         raise ctx.error(prim, f"emissiveColor {tuple(float(v) for v in emission_colour)} from {source} must have "
                               "non-negative channels")
     colour = _albedo_colour(inputs, albedo) if curve < 0 else np.full(3, albedo)
-    return albedo, ctx.emission(radiance), colour, curve, emission_colour
+    return albedo, ctx.emission(radiance), colour, curve, emission_colour, sid
+
+
+def _in_unit(ctx: _Context, prim: Usd.Prim, inputs: dict, name: str) -> float:
+    """A scalar input that must lie in [0, 1]; one line naming the prim and input otherwise."""
+    value, source = inputs.get(name, (_PREVIEW_DEFAULTS[name], "the default"))
+    v = float(np.mean(value)) if isinstance(value, tuple) else float(value)
+    if not (math.isfinite(v) and 0.0 <= v <= 1.0):
+        raise ctx.error(prim, f"inputs:{name} {v:g} from {source} must be in [0, 1]")
+    return v
+
+
+def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
+    """The ``ctx.surfaces`` index of the surface these material inputs make (-1: matte), None when the
+    face is left out (opacity 0, or a cut-out threshold above it).
+
+    Reads and validates, from the inputs dict only (so any reader that fills
+    it, UsdPreviewSurface or another network mapped onto its inputs, is read
+    alike): ``opacity``, ``opacityThreshold``, ``opacityMode``, ``ior``,
+    :data:`TRANSMITTANCE_ATTR`, and ``roughness``, ``metallic``,
+    ``specularColor``, ``useSpecularWorkflow``, ``clearcoat``,
+    ``clearcoatRoughness`` (the BSDF's lobes, modelled where any is authored
+    away from its fallback). Rules: :mod:`simulator.scene.surfaces`.
+
+    Raises
+    ------
+    UserError
+        ``<stage>: <prim>: inputs:<name> <value> from <where> ...``: a value
+        in [0, 1] outside it, an ior below 1, an opacityMode other than
+        ``transparent`` or ``presence``, a transmittance outside (0, 1] or
+        above what a clear slab of that ior transmits.
+    """
+    from simulator.scene.surfaces import OPACITY_MODES, Surface, internal_transmittance
+
+    key = inputs.get("_surface_key", None)
+    if key is None:
+        key = id(inputs)
+    if key in ctx.surface_index:
+        sid = ctx.surface_index[key]
+        if isinstance(sid, str):  # left out: say so for every prim
+            ctx.warn(f"{prim.GetPath()}: {sid}; left out (it blocks no light)")
+            return None
+        return sid
+    opacity = _in_unit(ctx, prim, inputs, "opacity")
+    threshold = _in_unit(ctx, prim, inputs, "opacityThreshold")
+    values = {n: _in_unit(ctx, prim, inputs, n) for n in ("roughness", "metallic", "clearcoat", "clearcoatRoughness")}
+    mode, mode_src = inputs.get("opacityMode", ("transparent", "the default"))
+    mode = str(mode)
+    if mode not in OPACITY_MODES:
+        raise ctx.error(prim, f"inputs:opacityMode {mode!r} from {mode_src} must be one of {', '.join(OPACITY_MODES)}")
+    ior, ior_src = inputs.get("ior", (_PREVIEW_DEFAULTS["ior"], "the default"))
+    ior = float(np.mean(ior)) if isinstance(ior, tuple) else float(ior)
+    if not (math.isfinite(ior) and ior >= 1.0):
+        raise ctx.error(prim, f"inputs:ior {ior:g} from {ior_src} must be at least 1")
+    spec, spec_src = inputs.get("specularColor", (_PREVIEW_DEFAULTS["specularColor"], "the default"))
+    spec = tuple(float(v) for v in np.broadcast_to(np.asarray(spec, float), (3,)))
+    if not all(math.isfinite(v) and 0.0 <= v <= 1.0 for v in spec):
+        raise ctx.error(prim, f"inputs:specularColor {spec} from {spec_src} must have channels in [0, 1]")
+    workflow = bool(int(float(np.mean(inputs.get("useSpecularWorkflow", (0, ""))[0]))))
+    t0, t0_src = inputs.get(TRANSMITTANCE_ATTR, (None, ""))
+    tau = 1.0
+    if t0 is not None:
+        t0 = float(t0)
+        if not (math.isfinite(t0) and 0.0 < t0 <= 1.0):
+            raise ctx.error(prim, f"{TRANSMITTANCE_ATTR} {t0:g} from {t0_src} must be in (0, 1]")
+        try:
+            tau = internal_transmittance(t0, ior)
+        except ValueError as e:
+            raise ctx.error(prim, f"{TRANSMITTANCE_ATTR} {t0:g} from {t0_src}: {e}") from None
+    coverage, pane = 1.0, False
+    if threshold > 0.0:  # a cut-out: opacity below the threshold is not there, at or above it is opaque
+        coverage = 1.0 if opacity >= threshold else 0.0
+    elif mode == "presence":
+        coverage = opacity
+    elif opacity <= 0.0:  # wholly transparent, nothing left to reflect: left out, as a clear presence
+        coverage = 0.0
+    elif opacity < 1.0:
+        pane = True
+    if t0 is not None:
+        pane = True
+        if coverage <= 0.0 or (threshold == 0.0 and mode == "transparent"):
+            coverage = 1.0  # a datasheet pane: its transmittance, not its opacity, lets light through
+    if coverage <= 0.0:
+        why = f"opacity {opacity:g} below opacityThreshold {threshold:g}" if threshold > 0 else "opacity 0"
+        ctx.warn(f"{prim.GetPath()}: {why}; left out (it blocks no light)")
+        ctx.surface_index[key] = why
+        return None
+    fallback = {n: _PREVIEW_DEFAULTS[n] for n in _UNMODELLED}
+    got = dict(values, specularColor=spec, useSpecularWorkflow=int(workflow))
+    authored = tuple(n for n in _UNMODELLED
+                     if not np.allclose(np.asarray(got[n], float), np.asarray(fallback[n], float), rtol=0, atol=1e-6))
+    # a face with any of these away from its fallback gets the UsdPreviewSurface BSDF (kernels.bsdf); on a
+    # pane they are read but not modelled (the slab is what it is), counted in the summary warning
+    glossy = bool(authored) and not pane
+    unmodelled = authored if pane else ()
+    for n in unmodelled:
+        ctx.ignored[f"inputs:{n}"] += 1  # read and validated; not modelled on a pane
+    if glossy:
+        c = np.atleast_1d(np.asarray(inputs.get("diffuseColor", ((0.0,),))[0], float))
+        if c.size == 3 and _not_uniform(np.ptp(c), float(np.max(np.abs(c)))):
+            ctx.ignored["diffuseColor's colour on glossy faces (their BSDF is traced grey, also in spectral runs)"] += 1
+    if coverage < 1.0 and inputs.get("opacity", (None, ""))[1].find("mean of the texture") >= 0:
+        ctx.ignored["inputs:opacity from a texture (coverage is its mean, not per texel)"] += 1
+    row = Surface(name=str(prim.GetPath()), coverage=coverage, pane=pane, ior=ior, tau=tau, transmittance=t0,
+                  roughness=values["roughness"], metallic=values["metallic"], clearcoat=values["clearcoat"],
+                  clearcoat_roughness=values["clearcoatRoughness"], specular_color=spec,
+                  use_specular_workflow=workflow, opacity=opacity, opacity_threshold=threshold, opacity_mode=mode,
+                  unmodelled=unmodelled, glossy=glossy)
+    sid = -1
+    if row.modelled:
+        sid = len(ctx.surfaces)
+        ctx.surfaces.append(row)
+    ctx.surface_index[key] = sid
+    return sid
 
 
 def _emission_colour(rgb, radiance: float) -> np.ndarray:
@@ -276,10 +402,39 @@ def _preview_surface_inputs(ctx: _Context, material: UsdShade.Material) -> dict 
     curve = _measured_reflectance(ctx, material, shader)
     inputs = {name: _input_value(ctx, shader, name, default) for name, default in _PREVIEW_DEFAULTS.items()
               if curve < 0 or name != "diffuseColor"}
+    inputs["opacityMode"] = _opacity_mode(ctx, material, shader, inputs["opacityMode"])
+    t0 = _authored_float(ctx, (shader.GetPrim(), material.GetPrim()), TRANSMITTANCE_ATTR)
+    if t0 is not None:
+        inputs[TRANSMITTANCE_ATTR] = t0
     if curve >= 0:
         inputs["diffuseColor"] = ((ctx.reflectances[curve][2],) * 3, f"{REFLECTANCE_ATTR} {ctx.reflectances[curve][0]}")
         inputs["reflectance"] = (curve, inputs["diffuseColor"][1])
     return inputs
+
+
+def _opacity_mode(ctx: _Context, material: UsdShade.Material, shader: UsdShade.Shader, read):
+    """``opacityMode`` as ``(token, where)``: the shader's input (through connections), else an
+    ``inputs:opacityMode`` on the Material itself (some exporters author it there), else the fallback."""
+    inp = shader.GetInput("opacityMode")
+    if inp and (inp.HasConnectedSource() or inp.GetAttr().HasAuthoredValue()):
+        return str(read[0]), read[1]
+    attr = material.GetPrim().GetAttribute("inputs:opacityMode")
+    if attr and attr.HasAuthoredValue():
+        return str(_get(ctx, attr)), str(attr.GetPath())
+    return str(read[0]), read[1]
+
+
+def _authored_float(ctx: _Context, prims, name: str):
+    """``(value, where)`` of the first prim's authored attribute ``name``, None if none authors it."""
+    for p in prims:
+        attr = p.GetAttribute(name)
+        if attr and attr.HasAuthoredValue():
+            value = _get(ctx, attr)
+            try:
+                return float(value), str(attr.GetPath())
+            except (TypeError, ValueError):
+                raise ctx.error(p, f"{name} must be a number, not a {attr.GetTypeName()}") from None
+    return None
 
 
 def _count_ignored_inputs(ctx: _Context, shader: UsdShade.Shader) -> None:
@@ -320,7 +475,9 @@ def _input_value(ctx: _Context, shader: UsdShade.Shader, name: str, default):
             return (value if len(value) > 1 else float(value[0])), f"{where} (mean of the texture at {attr.GetPath()})"
         value = _get(ctx, attr)
         if value is not None:
-            return value if isinstance(value, tuple) else float(value), str(attr.GetPath())
+            if isinstance(value, (tuple, str)):
+                return value, str(attr.GetPath())
+            return float(value), str(attr.GetPath())
     return default, f"{where} (default)"
 
 

@@ -20,10 +20,6 @@ from simulator.units import luminance_grey
 from simulator.scene.usd.context import _Context
 from simulator.scene.usd.shading_graph import Node, NotUniform, Port, Value, as_array, port_value
 
-#: mapped inputs beyond UsdPreviewSurface's own that are carried, with the value that changes nothing
-_CARRIED_EXTRA = {"opacityThreshold": 0.0, "opacityMode": "transparent", "probesim:transmittance": None}
-
-
 class SurfaceInputs:
     """A surface node's inputs, evaluated to uniform values, with the model's defaults.
 
@@ -228,9 +224,9 @@ def complete(ctx: _Context, inputs: dict, where: str) -> dict:
 
 
 def count_carried(ctx: _Context, inputs: dict) -> None:
-    """Count, as "ignored", the mapped inputs today's surfaces do not model (those UsdPreviewSurface's own
-    reader counts: :data:`simulator.scene.usd.materials._IGNORED_DEFAULTS`, plus the cut-out and glazing
-    inputs), where they differ from the value that changes nothing."""
+    """Count, as "ignored", the mapped inputs the surfaces do not model (those UsdPreviewSurface's own
+    reader counts: :data:`simulator.scene.usd.materials._IGNORED_DEFAULTS`), where they differ from the
+    value that changes nothing. The cut-out and glazing inputs are modelled (:mod:`simulator.scene.surfaces`)."""
     from simulator.scene.usd.materials import _IGNORED_DEFAULTS
 
     for name, (value, _) in inputs.items():
@@ -238,5 +234,3 @@ def count_carried(ctx: _Context, inputs: dict) -> None:
             default = _IGNORED_DEFAULTS[name]
             if not np.allclose(np.asarray(value, float), np.asarray(default, float), rtol=0, atol=1e-6):
                 ctx.ignored[f"inputs:{name}"] += 1
-        elif name in _CARRIED_EXTRA and value != _CARRIED_EXTRA[name]:
-            ctx.ignored[f"inputs:{name}"] += 1

@@ -1,0 +1,24 @@
+"""The device record of one surface beyond Lambert (a row of ``Geometry.surfaces``).
+
+Kept apart from :mod:`.surfaces` (the functions that read it) so that
+:class:`~simulator.kernels.lights.base.SceneRec` can hold a table of them
+without importing the ray code.
+"""
+
+import warp as wp
+
+
+@wp.struct
+class SurfRec:
+    coverage: float  # probability in (0, 1] that a ray meets the surface (presence, cut-outs); 1: opaque
+    pane: int  # 1: a dielectric slab of ior (thin pane, or a face of a slab-like closed mesh)
+    ior: float  # index of refraction (≥ 1)
+    tau: float  # internal transmittance of one normal pass through the pane (1: clear)
+    # the UsdPreviewSurface BSDF (kernels.bsdf), when glossy is 1; the diffuse ρ is the face's albedo
+    glossy: int
+    roughness: float
+    metallic: float
+    specular: float  # the specular workflow's F0 (grey)
+    workflow: int  # 1: specular workflow
+    coat: float
+    coat_roughness: float

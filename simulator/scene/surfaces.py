@@ -1,0 +1,264 @@
+"""Surfaces beyond Lambert: the per-material table the reader fills and the thin-slab closed forms.
+
+Most faces of a stage are matte: their albedo (``Geometry.albedo``) is all
+the kernels read. A material whose UsdPreviewSurface inputs make a face more
+than matte gets one :class:`Surface` row in ``Geometry.surfaces``, and its
+faces that row's index in ``Geometry.surface_id`` (-1: matte). Few
+materials, many faces: the table stays small.
+
+What is modelled (the rest is read, validated and named in the summary
+warning):
+
+- **coverage** (``opacityMode = "presence"``, or ``opacityThreshold`` > 0):
+  a ray meets the surface with probability ``coverage`` and otherwise passes
+  it untouched. With a threshold the coverage is 1 where ``opacity`` ≥ the
+  threshold and 0 (the face is left out) below it (UsdPreviewSurface:
+  "fragments with opacity < opacityThreshold are fully transparent").
+- **panes** (``opacity`` < 1 in the default ``transparent`` mode, or a
+  ``probesim:transmittance``): a dielectric of the material's ``ior``. An
+  open surface is a *thin slab*: two parallel interfaces with no offset
+  between them, the inner reflections summed (:func:`slab_rt`). A face of a
+  closed (watertight) mesh is one face of a slab-like solid: a ray entering
+  it meets the whole slab (reflectance and transmittance of
+  :func:`slab_rt`), the face it leaves by passes it (its share was summed on
+  entry). Two parallel faces a few millimetres apart (glazing exported as a
+  thin box) are then exactly the sheet; a solid that is not a parallel slab
+  (a lens, a glass sphere) keeps the slab's reflectance and transmittance
+  but not refraction's bend (named in the summary warning).
+
+Thin-slab formulas (unpolarised light, each polarisation summed on its own,
+then averaged; Born & Wolf, *Principles of Optics*, §1.5; the incoherent
+multiple-reflection sum of a plane-parallel plate, docs/REFERENCES.md
+§Thin slab). With r the single-interface Fresnel reflectance of one
+polarisation at the angle of incidence θ and τ the internal transmittance
+of one pass at that angle,
+
+    T = (1 − r)² τ / (1 − r² τ²),    R = r + (1 − r)² r τ² / (1 − r² τ²),
+
+and for a clear slab (τ = 1) T = (1 − r)/(1 + r), R = 2r/(1 + r). A pane
+given by its normal-incidence transmittance T₀ (``probesim:transmittance``)
+has the τ₀ that gives T₀ at θ = 0 (:func:`internal_transmittance`), and at
+θ the path length through the glass grows as 1/cos θ_t (Snell: sin θ_t =
+sin θ / n), so τ(θ) = τ₀^(1/cos θ_t): the ior's angular fall-off.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["Surface", "OPACITY_MODES", "fresnel_sp", "slab_rt", "internal_transmittance", "clear_slab_transmittance",
+           "solid_sides"]
+
+#: UsdPreviewSurface ``opacityMode`` tokens
+OPACITY_MODES = ("transparent", "presence")
+
+
+@dataclass(frozen=True)
+class Surface:
+    """One material's UsdPreviewSurface inputs beyond Lambert, validated.
+
+    Attributes
+    ----------
+    name : str
+        The material's prim path.
+    coverage : float
+        Probability in (0, 1] that a ray meets the surface (1: opaque).
+    pane : bool
+        A dielectric pane of ``ior``: thin slab (open surface) or slab-like
+        solid (closed mesh).
+    ior : float
+        Index of refraction (≥ 1).
+    tau : float
+        Internal transmittance of one normal pass through the pane, in
+        (0, 1]: 1 for clear glass, below 1 for a datasheet transmittance.
+    transmittance : float or None
+        The authored ``probesim:transmittance`` (normal incidence), if any.
+    glossy : bool
+        The face has the UsdPreviewSurface BSDF (:mod:`simulator.kernels.bsdf`):
+        some of roughness, metallic, specularColor, useSpecularWorkflow,
+        clearcoat, clearcoatRoughness authored away from their fallbacks.
+    roughness, metallic, clearcoat, clearcoat_roughness : float
+        In [0, 1].
+    specular_color : tuple of float
+    use_specular_workflow : bool
+    opacity, opacity_threshold : float
+    opacity_mode : str
+    unmodelled : tuple of str
+        The inputs authored away from their fallback that no lobe models yet
+        (for the summary warning and the plan).
+    """
+
+    name: str
+    coverage: float = 1.0
+    pane: bool = False
+    ior: float = 1.5
+    tau: float = 1.0
+    transmittance: float | None = None
+    roughness: float = 0.5
+    metallic: float = 0.0
+    clearcoat: float = 0.0
+    clearcoat_roughness: float = 0.01
+    specular_color: tuple = (0.0, 0.0, 0.0)
+    use_specular_workflow: bool = False
+    opacity: float = 1.0
+    opacity_threshold: float = 0.0
+    opacity_mode: str = "transparent"
+    unmodelled: tuple = field(default_factory=tuple)
+    glossy: bool = False
+
+    @property
+    def modelled(self) -> bool:
+        """Whether the kernels read anything of this row beyond the face's albedo."""
+        return self.pane or self.coverage < 1.0 or self.glossy
+
+    @property
+    def specular_grey(self) -> float:
+        """The specular workflow's F0 as a luminance grey (BT.709 weights)."""
+        r, g, b = self.specular_color
+        return 0.2126 * r + 0.7152 * g + 0.0722 * b
+
+    @property
+    def delta(self) -> bool:
+        """The specular lobe is a mirror (roughness ≤ 0.01, :data:`simulator.kernels.bsdf.DELTA_ROUGHNESS`)."""
+        return self.glossy and self.roughness <= 0.01
+
+    def lobes(self) -> tuple[str, ...]:
+        """What this surface needs beyond a matte face, in words, for the plan."""
+        out = []
+        if self.coverage < 1.0:
+            out.append(f"coverage {self.coverage:g}")
+        if self.pane:
+            what = f"T0 {self.transmittance:g}" if self.transmittance is not None else "clear"
+            out.append(f"dielectric slab (ior {self.ior:g}, {what})")
+        if self.glossy:
+            spec = ("mirror (delta)" if self.delta else f"GGX specular (roughness {self.roughness:g})")
+            wf = (f"specular workflow F0 {self.specular_grey:.3g}" if self.use_specular_workflow
+                  else f"metallic {self.metallic:g}, ior {self.ior:g}")
+            out.append(f"diffuse + {spec}, {wf}" + (f" + clearcoat {self.clearcoat:g}" if self.clearcoat > 0 else ""))
+        return tuple(out)
+
+
+def fresnel_sp(cos_i, n: float):
+    """Fresnel reflectances ``(r_s, r_p)`` of one interface from a medium of index 1 into one of index
+    ``n`` ≥ 1, at incidence cosines ``cos_i`` (array-like, in [0, 1]); no total internal reflection."""
+    c = np.clip(np.asarray(cos_i, float), 0.0, 1.0)
+    s2 = 1.0 - c * c
+    ct = np.sqrt(np.maximum(0.0, 1.0 - s2 / (n * n)))
+    rs = ((c - n * ct) / (c + n * ct)) ** 2
+    rp = ((n * c - ct) / (n * c + ct)) ** 2
+    return rs, rp
+
+
+def slab_rt(cos_i, n: float, tau0: float = 1.0):
+    """Unpolarised reflectance and transmittance ``(R, T)`` of a plane-parallel slab of index ``n``
+    at incidence cosines ``cos_i``, internal transmittance ``tau0`` per normal pass (module docstring)."""
+    c = np.clip(np.asarray(cos_i, float), 0.0, 1.0)
+    ct = np.sqrt(np.maximum(0.0, 1.0 - (1.0 - c * c) / (n * n)))
+    tau = tau0 ** (1.0 / np.maximum(ct, 1e-12)) if tau0 < 1.0 else np.ones_like(c)
+    R = np.zeros_like(c)
+    T = np.zeros_like(c)
+    for r in fresnel_sp(c, n):
+        den = 1.0 - r * r * tau * tau
+        T = T + 0.5 * (1.0 - r) ** 2 * tau / den
+        R = R + 0.5 * (r + (1.0 - r) ** 2 * r * tau * tau / den)
+    return R, T
+
+
+def clear_slab_transmittance(n: float) -> float:
+    """Normal-incidence transmittance of a clear slab of index ``n``: 2n/(n² + 1)."""
+    return 2.0 * n / (n * n + 1.0)
+
+
+def internal_transmittance(t0: float, n: float) -> float:
+    """τ₀ in (0, 1] for which a slab of index ``n`` transmits ``t0`` at normal incidence.
+
+    Solves t0 = (1 − r)² τ / (1 − r² τ²), r = ((n − 1)/(n + 1))², for τ:
+    t0·r²·τ² + (1 − r)²·τ − t0 = 0, the positive root.
+
+    Raises
+    ------
+    ValueError
+        ``t0`` is not in (0, the clear slab's transmittance].
+    """
+    clear = clear_slab_transmittance(n)
+    if not (0.0 < t0 <= clear + 1e-12):
+        raise ValueError(f"{t0:g} is above the {clear:.4f} a clear slab of ior {n:g} transmits")
+    r = ((n - 1.0) / (n + 1.0)) ** 2
+    a, b = t0 * r * r, (1.0 - r) ** 2
+    if a == 0.0:
+        return min(1.0, t0 / b)
+    tau = (-b + math.sqrt(b * b + 4.0 * a * t0)) / (2.0 * a)
+    return min(1.0, tau)
+
+
+def solid_sides(points: np.ndarray, triangles: np.ndarray, prim: np.ndarray, pane: np.ndarray) -> np.ndarray:
+    """Per triangle: 0 for an open pane face (a thin slab), +1 for a face of a closed pane mesh whose front
+    faces outward, −1 for one whose back does; 0 where ``pane`` is False.
+
+    The pane faces of each prim are welded by position, split into connected
+    components, and a component is closed when every edge is shared by an
+    even number of its triangles (as :mod:`simulator.scene.usd.enclosures`
+    finds enclosures); its orientation is the sign of its signed volume
+    Σ p0·(p1 × p2)/6.
+    """
+    from simulator.scene.usd.enclosures import _closed_components, _components, _welded
+
+    side = np.zeros(len(triangles), np.int8)
+    faces = np.flatnonzero(pane)
+    for pid in np.unique(prim[faces]):
+        mine = faces[prim[faces] == pid]
+        tris = _welded(points, triangles[mine])
+        label = _components(tris)
+        for comp in _closed_components(tris, label):
+            members = mine[label == comp]
+            p = points[triangles[members]]
+            vol = np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2])).sum() / 6.0
+            side[members] = 1 if vol > 0 else -1
+    return side
+
+
+#: most flat mirror planes the image-source connection of delta lights looks at (the rest: named in the plan)
+MAX_MIRROR_PLANES = 16
+
+
+def mirror_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarray | None,
+                  surfaces: list) -> tuple[np.ndarray, np.ndarray, int]:
+    """The flat planes of the mirror faces (a delta specular lobe): ``(planes (K, 4) as (n, d) with
+    n·x = d, per triangle its plane or -1, planes left out beyond MAX_MIRROR_PLANES)``.
+
+    Triangles are grouped by their unit normal (sign made canonical: the
+    first non-zero component positive) and offset, rounded to 1e-6 (of a
+    metre, or of the scene's extent when larger); the largest planes (by
+    area) are kept first.
+    """
+    face_plane = np.full(len(triangles), -1, np.int32)
+    if surface_id is None:
+        return np.zeros((0, 4)), face_plane, 0
+    delta = np.array([getattr(s, "delta", False) for s in surfaces] + [False], bool)[surface_id]
+    faces = np.flatnonzero(delta)
+    if not len(faces):
+        return np.zeros((0, 4)), face_plane, 0
+    p = points[triangles[faces]]
+    cr = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    area = 0.5 * np.linalg.norm(cr, axis=1)
+    n = cr / np.maximum(2 * area, 1e-300)[:, None]
+    lead = np.take_along_axis(n, np.argmax(np.abs(n) > 1e-9, axis=1)[:, None], axis=1)[:, 0]
+    n = n * np.where(lead < 0, -1.0, 1.0)[:, None]
+    d = np.einsum("ij,ij->i", n, p[:, 0])
+    scale = max(1.0, float(np.abs(points).max()))
+    key = np.round(np.column_stack([n, d / scale]) * 1e6).astype(np.int64)
+    uniq, inv = np.unique(key, axis=0, return_inverse=True)
+    inv = inv.ravel()
+    size = np.bincount(inv, weights=area)
+    order = np.argsort(-size, kind="stable")[:MAX_MIRROR_PLANES]
+    planes = np.zeros((len(order), 4))
+    for k, u in enumerate(order):
+        mine = inv == u
+        nn = n[mine].mean(axis=0)
+        nn /= np.linalg.norm(nn)
+        planes[k] = [*nn, float(np.mean(p[mine][:, 0] @ nn))]
+        face_plane[faces[mine]] = k
+    return planes, face_plane, max(0, len(uniq) - len(order))
