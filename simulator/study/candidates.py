@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import fnmatch
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -71,6 +71,7 @@ class CandidateSet:
     grids: dict[str, Grid]  #: prim path -> grid used on it
     dropped_inside: int = 0  #: points dropped inside ``drop_inside`` prims
     dropped_outside: int = 0  #: points whose foot is off the prim
+    dropped_points: list = field(default_factory=list)  #: positions (ndarray (3,)) of the points dropped inside ``drop_inside`` prims
 
 
 def match_prims(names: list[str], pattern: str) -> list[int]:
@@ -207,5 +208,7 @@ def build_candidates(scene: Scene, specs: list[CandidateSpec], file_label: str) 
             if c.sensor.name in seen:
                 raise UserError(f"{label}: sensor name {c.sensor.name!r} is used twice")
             seen.add(c.sensor.name)
-        sets.append(CandidateSet(spec.name, spec.kind, keep, grids, len(cands) - len(keep), outside))
+        kept = {id(c) for c in keep}
+        dropped = [c.position.copy() for c in cands if id(c) not in kept]
+        sets.append(CandidateSet(spec.name, spec.kind, keep, grids, len(cands) - len(keep), outside, dropped))
     return sets

@@ -33,6 +33,8 @@ class StudyResult:
     trace_groups: list
     mean: np.ndarray  #: (J, S, 2) readings per scenario and sensor
     stderr: np.ndarray  #: (J, S, 2)
+    samples: np.ndarray  #: (J, S) samples per sensor of the pass each scenario was recombined from
+    methods: list  #: (J) lists of S method names
     zones: dict  #: zone name -> indices into candidates
     figures: dict  #: (zone, scenario) -> ZoneFigures
     checks: dict  #: (zone, scenario) -> {target: pass|fail|unsure}
@@ -49,6 +51,7 @@ class StudyResult:
     reference: dict | None = None
     warnings: list = field(default_factory=list)
     files: list = field(default_factory=list)
+    scene: object | None = None  #: the stage as read (geometry for the heat maps' plans); not in any output file
 
 
 def zone_members(study: Study, sets, candidates, label: str = "") -> dict[str, np.ndarray]:
@@ -207,6 +210,8 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     n_j, n_s = len(scenarios), len(sensors)
     mean = np.zeros((n_j, n_s, 2))
     stderr = np.zeros((n_j, n_s, 2))
+    samples = np.zeros((n_j, n_s), np.int64)
+    methods = [[""] * n_s for _ in range(n_j)]
     by_tg: dict[str, list] = {}
     for s in specs:
         by_tg.setdefault(s.trace_key, []).append(s)
@@ -216,6 +221,9 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
             m, e = gr.combine(sc.levels)
             ids = np.asarray(s.sensor_ids)
             mean[j, ids], stderr[j, ids] = m, e
+            samples[j, ids] = np.asarray(results[s.id]["samples"])[0]
+            for i, name in zip(s.sensor_ids, gr.methods):
+                methods[j][i] = name
 
     ch = 1 if study.light_units == "photometric" else 0
     figures, checks = {}, {}
@@ -264,11 +272,11 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     trace_s = sum(float(np.sum(results[s.id]["trace_s"])) for s in specs)
     return StudyResult(
         study=study, path=path, out_dir=out_dir, candidates=candidates, sets=sets, scenarios=scenarios, trace_groups=tgs,
-        mean=mean, stderr=stderr, zones=zones, figures=figures, checks=checks, placement=placement, chunks_total=len(specs),
+        mean=mean, stderr=stderr, samples=samples, methods=methods, zones=zones, figures=figures, checks=checks, placement=placement, chunks_total=len(specs),
         chunks_computed=computed, chunks_loaded=loaded, mode=used_mode, workers=n_workers,
         timings_s={"setup": t_setup - t0, "chunks": t_traced - t_chunks, "trace_in_chunks": trace_s,
                    "analysis": t_analysis - t_traced, "reference_run": t_end - t_analysis, "total": t_end - t0},
-        chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings,
+        chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings, scene=base,
         chunk_trace_s={(s.trace_key, s.block): float(np.sum(results[s.id]["trace_s"])) for s in specs},
         chunk_trace_cpu_s={(s.trace_key, s.block): float(results[s.id].get("trace_cpu_s", 0.0)) for s in specs},
     )  # fmt: skip

@@ -27,7 +27,7 @@ Schema
     workers = 0                        # LocalCluster workers; 0 = one per core
     scheduler = "tcp://host:8786"      # a running dask scheduler (optional)
     retries = 2                        # re-runs of a failed chunk
-    sensor_block = 64                  # sensors per chunk
+    sensor_block = "auto"              # sensors per chunk, or "auto": from the study's size
 
     [[candidates]]                     # a grid on prims ...
     name = "workplane"
@@ -95,6 +95,7 @@ Schema
 
     [output]
     dir = "../out/office_study"        # default: "<study stem>.out/" beside the file
+    heat_map_scale = "per_scenario"    # or "log": one logarithmic scale for all panels
 """
 
 from __future__ import annotations
@@ -279,6 +280,7 @@ class PlacementSpec(_Model):
 
 class OutputSpec(_Model):
     dir: str | None = None
+    heat_map_scale: Literal["per_scenario", "log"] = "per_scenario"
 
 
 class Study(_Model):
