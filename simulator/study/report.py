@@ -315,7 +315,7 @@ def record(res, versions: dict) -> dict:
         "zones": {z: len(ix) for z, ix in res.zones.items()},
         "chunks": {"total": res.chunks_total, "computed": res.chunks_computed, "loaded": res.chunks_loaded,
                    "wall_s": res.chunk_wall_s},  # fmt: skip
-        "compute": {"mode": res.mode, "workers": res.workers},
+        "compute": {"mode": res.mode, "workers": res.workers, "sensor_block": res.sensor_block},
         "timings_s": res.timings_s,
         "cost": cost(res),
         "reference_run": res.reference,

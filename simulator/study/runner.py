@@ -44,6 +44,7 @@ class StudyResult:
     chunks_loaded: int = 0
     mode: str = "inprocess"
     workers: int = 1
+    sensor_block: int = 0  #: sensors per chunk used
     timings_s: dict = field(default_factory=dict)
     chunk_wall_s: dict = field(default_factory=dict)
     chunk_trace_s: dict = field(default_factory=dict)  #: (trace key, block) -> seconds tracing
@@ -176,8 +177,12 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     zones = zone_members(study, sets, candidates, label)
     t_setup = time.perf_counter()
 
-    specs = make_chunks(tgs, sensors, groups, stage, study.light_units, _sim_dict(study), study.seed, study.compute.sensor_block,
-                        sky_split)  # fmt: skip
+    block = study.compute.sensor_block
+    if block == "auto":  # from the study's size alone, so chunks (and bytes) are the same in every mode
+        from simulator.study.blocks import auto_block
+
+        block = auto_block(len(sensors), study.simulation.samples)
+    specs = make_chunks(tgs, sensors, groups, stage, study.light_units, _sim_dict(study), study.seed, block, sky_split)
     store = ChunkStore(out_dir)
     results: dict[str, dict] = {}
     for s in specs:
@@ -273,7 +278,7 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     return StudyResult(
         study=study, path=path, out_dir=out_dir, candidates=candidates, sets=sets, scenarios=scenarios, trace_groups=tgs,
         mean=mean, stderr=stderr, samples=samples, methods=methods, zones=zones, figures=figures, checks=checks, placement=placement, chunks_total=len(specs),
-        chunks_computed=computed, chunks_loaded=loaded, mode=used_mode, workers=n_workers,
+        chunks_computed=computed, chunks_loaded=loaded, mode=used_mode, workers=n_workers, sensor_block=int(block),
         timings_s={"setup": t_setup - t0, "chunks": t_traced - t_chunks, "trace_in_chunks": trace_s,
                    "analysis": t_analysis - t_traced, "reference_run": t_end - t_analysis, "total": t_end - t0},
         chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings, scene=base,

@@ -143,7 +143,7 @@ class ComputeSpec(_Model):
     workers: int = Field(0, ge=0)
     scheduler: str | None = None
     retries: int = Field(2, ge=0, le=20)
-    sensor_block: int = Field(64, ge=1)
+    sensor_block: Union[Literal["auto"], Annotated[int, Field(ge=1)]] = "auto"  #: sensors per chunk (simulator.study.blocks)
 
     @field_validator("scheduler")
     @classmethod
