@@ -269,10 +269,11 @@ def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str
     plan = make_plan(sub, sensors, sim.method, sim.component)
     light_group = np.array([owner[l.name] for l in sub.lights], np.int64)
     patch_base = np.array([split_lights.get(l.name, -1) for l in sub.lights], np.int64) if split_lights else None
-    levels = None
-    if sim.adaptive and scenarios:
-        levels = np.array([[level_of(sc, n) for n in names] for sc in scenarios])
-    lg = LightGroups(light_group, n_g, levels, patch_base=patch_base)
+    levels = pick = None
+    if scenarios:
+        pick = np.array([[level_of(sc, n) for n in names] for sc in scenarios])
+        levels = pick if sim.adaptive else None
+    lg = LightGroups(light_group, n_g, levels, patch_base=patch_base, pick_levels=pick)
     mean = np.zeros((n_g, n_s, 2))
     cov = np.zeros((n_s, 2, n_g, n_g))
     samples = np.zeros(n_s, np.int64)
