@@ -400,6 +400,10 @@ class SensorKindSpec:
         proved wholly behind it may be skipped there.
     directed : bool
         Its ``normal`` is a direction the CSV reports (``dx, dy, dz``).
+    extra_columns : bool
+        Its value columns are written only by a run that holds such a sensor,
+        after the standard ones (:func:`simulator.io.results.extra_columns`),
+        so that the CSVs of runs without one keep their header.
     """
 
     kind: SensorKind
@@ -410,6 +414,7 @@ class SensorKindSpec:
     culls_lights: bool
     headline: int = 0
     directed: bool = True
+    extra_columns: bool = False
 
 
 #: every sensor kind, in ``SensorKind`` order
@@ -418,8 +423,9 @@ SENSOR_SPECS = (
     SensorKindSpec(SensorKind.RADIANCE, "radiance", ("half_angle",), "estimate", (_RADIANCE,), culls_lights=False),
     SensorKindSpec(SensorKind.PATCH, "patch", ("up", "size"), "estimate", (_IRRADIANCE, _FLUX), culls_lights=True, headline=1),
     SensorKindSpec(SensorKind.PROBE, "probe", ("resolution",), "probe", (_SCALAR, _DIRECTION), culls_lights=False, directed=False),
-    SensorKindSpec(SensorKind.CYLINDRICAL, "cylindrical", ("up",), "estimate", (_CYLINDRICAL,), culls_lights=False),
-    SensorKindSpec(SensorKind.SEMICYLINDRICAL, "semicylindrical", ("up",), "estimate", (_SEMICYLINDRICAL,), culls_lights=False),
+    SensorKindSpec(SensorKind.CYLINDRICAL, "cylindrical", ("up",), "estimate", (_CYLINDRICAL,), culls_lights=False, extra_columns=True),
+    SensorKindSpec(SensorKind.SEMICYLINDRICAL, "semicylindrical", ("up",), "estimate", (_SEMICYLINDRICAL,), culls_lights=False,
+                   extra_columns=True),
 )  # fmt: skip
 assert [int(s.kind) for s in SENSOR_SPECS] == list(range(len(SensorKind)))
 
