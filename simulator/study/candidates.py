@@ -121,6 +121,16 @@ def _boxes(scene: Scene, patterns: list[str], label: str) -> list[tuple[np.ndarr
 
 
 def _sensor(spec: CandidateSpec, name: str, position: np.ndarray, normal: np.ndarray, source: str) -> Sensor:
+    if spec.kind in ("cylindrical", "semicylindrical"):  # the axis along the prim's normal (a floor: vertical)
+        axis = normal / np.linalg.norm(normal)
+        ref = np.asarray(spec.facing, float) if spec.facing is not None else np.array([1.0, 0.0, 0.0])
+        ref = ref - float(ref @ axis) * axis
+        if np.linalg.norm(ref) < 1e-6:
+            if spec.facing is not None:
+                raise UserError(f"{source}: facing is parallel to the cylinders' axis (the prim's normal)")
+            ref = np.array([0.0, 1.0, 0.0]) - axis[1] * axis
+        kind = SensorKind.CYLINDRICAL if spec.kind == "cylindrical" else SensorKind.SEMICYLINDRICAL
+        return Sensor(name=name, kind=kind, position=position, normal=ref / np.linalg.norm(ref), up=axis.copy(), source=source)
     if spec.kind == "photosensor":
         return Sensor(name=name, kind=SensorKind.RADIANCE, position=position, normal=normal,
                       half_angle=math.radians(spec.half_angle_deg), source=source)  # fmt: skip

@@ -85,7 +85,10 @@ def atomic_write(path: Path, data: bytes) -> None:
 
 
 def _sensor_text(s: Sensor) -> str:
-    return f"{s.name}|{int(s.kind)}|{s.position.tolist()}|{s.normal.tolist()}|{s.half_angle!r}"
+    text = f"{s.name}|{int(s.kind)}|{s.position.tolist()}|{s.normal.tolist()}|{s.half_angle!r}"
+    if "up" in s.spec.attributes and s.spec.name != "patch":  # a cylinder's axis
+        text += f"|{s.up.tolist()}"
+    return text
 
 
 def make_chunks(trace_groups, sensors: list[Sensor], groups: dict[str, list[str]], stage: Path, light_units: str,

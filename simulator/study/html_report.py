@@ -87,6 +87,22 @@ def _zones(res) -> Section:
     return Section("zones", "Zones and targets", table_html(head, rows, "num"))
 
 
+def _areas(res) -> Section | None:
+    rows_in = getattr(res, "areas", [])
+    if not rows_in:
+        return None
+    unit = "lx" if res.study.light_units == "photometric" else "W/m²"
+    rows = []
+    for r in rows_in:
+        f = r.figures
+        model = "" if r.modelling is None else f"{r.modelling[0]:.2f} ± {r.modelling[1]:.2f} ({r.modelling_verdict})"
+        rows.append([r.area, r.part, r.scenario, r.sensors, float("nan") if f is None else f.mean, float("nan") if f is None else f.u0,
+                     f"≥ {r.required_mean:g} / ≥ {r.required_u0:g}", r.verdicts["mean"], r.verdicts["u0"], model])  # fmt: skip
+    head = ["area", "part", "scenario", "points", f"Ē maintained ({unit})", "U0", "required Ē / U0", "Ē", "U0", "E_z/E_h"]
+    return Section("areas", "EN 12464-1 areas", "<p>Maintained values (maintenance factor × the computed ones).</p>"
+                   + table_html(head, rows, "num"))  # fmt: skip
+
+
 def _gain_curve_png(res) -> bytes:
     from matplotlib.figure import Figure
 
@@ -147,7 +163,7 @@ def _warnings(res) -> Section | None:
 
 #: the page's sections in order: (name, builder)
 SECTIONS: list[tuple[str, Callable]] = [
-    ("overview", _overview), ("zones", _zones), ("placement", _placement), ("heatmaps", _heat_maps), ("warnings", _warnings),
+    ("overview", _overview), ("zones", _zones), ("areas", _areas), ("placement", _placement), ("heatmaps", _heat_maps), ("warnings", _warnings),
 ]  # fmt: skip
 
 

@@ -129,6 +129,24 @@ def placement_csv(res) -> str:
     return buf.getvalue()
 
 
+def areas_csv(res) -> str:
+    """One row per (EN 12464-1 area, part, scenario): maintained figures, requirements and verdicts."""
+    from simulator.study.areas import AREA_COLUMNS
+
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(AREA_COLUMNS)
+    unit = "lx" if res.study.light_units == "photometric" else "W/m2"
+    mfs = {a.name: a.maintenance_factor for a in res.study.area}
+    for r in res.areas:
+        f = r.figures
+        vals = ["", "", "", "", "", ""] if f is None else [_f(v) for v in (f.mean, f.mean_se, f.min, f.min_se, f.u0, f.u0_se)]
+        m = ("", "") if r.modelling is None else (_f(r.modelling[0]), _f(r.modelling[1]))
+        w.writerow([r.area, r.part, r.scenario, r.sensors, unit, _f(mfs[r.area]), *vals, _f(float(r.required_mean)),
+                    _f(float(r.required_u0)), r.verdicts["mean"], r.verdicts["u0"], *m, r.modelling_verdict])  # fmt: skip
+    return buf.getvalue()
+
+
 def _predictions(res) -> dict:
     """(zone, scenario) -> (predictor, predicted zone mean, relative error) from the chosen set."""
     pl = res.placement
@@ -195,7 +213,10 @@ def zone_plan(res, zone: str):
     scene = getattr(res, "scene", None)
     ids = res.zones[zone]
     cands = [res.candidates[i] for i in ids]
-    if scene is None or not all(abs(abs(float(c.sensor.normal[2])) - 1.0) < 1e-6 for c in cands):
+    def facing(sn):  # a cylinder's axis; a plane receiver's normal
+        return sn.up if sn.spec.name in ("cylindrical", "semicylindrical") else sn.normal
+
+    if scene is None or not all(abs(abs(float(facing(c.sensor)[2])) - 1.0) < 1e-6 for c in cands):
         return None
     prims = sorted({c.prim for c in cands if c.prim})
     if not prims:
@@ -376,6 +397,8 @@ def write_outputs(res, versions: dict) -> list[Path]:
     files = {d / "readings.csv": long_csv(res).encode(), d / "summary.csv": summary_csv(res).encode()}
     if res.placement is not None:
         files[d / "placement.csv"] = placement_csv(res).encode()
+    if getattr(res, "areas", None):
+        files[d / "areas.csv"] = areas_csv(res).encode()
     res.heat_map_cache = {}
     for z in res.study.zone:
         png = heat_map_png(res, z.name)

@@ -52,6 +52,7 @@ class StudyResult:
     reference: dict | None = None
     warnings: list = field(default_factory=list)
     files: list = field(default_factory=list)
+    areas: list = field(default_factory=list)  #: simulator.study.areas.AreaRow, EN 12464-1 areas
     scene: object | None = None  #: the stage as read (geometry for the heat maps' plans); not in any output file
 
 
@@ -239,6 +240,9 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
             figures[(z.name, sc.name)] = f
             checks[(z.name, sc.name)] = compliance(f, dict(z.targets))
 
+    from simulator.study.areas import area_rows
+
+    areas = area_rows(study, sets, candidates, scenarios, mean, stderr, label)
     placement = None
     if study.placement is not None:
         pl = study.placement
@@ -281,7 +285,7 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
         chunks_computed=computed, chunks_loaded=loaded, mode=used_mode, workers=n_workers, sensor_block=int(block),
         timings_s={"setup": t_setup - t0, "chunks": t_traced - t_chunks, "trace_in_chunks": trace_s,
                    "analysis": t_analysis - t_traced, "reference_run": t_end - t_analysis, "total": t_end - t0},
-        chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings, scene=base,
+        chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings, scene=base, areas=areas,
         chunk_trace_s={(s.trace_key, s.block): float(np.sum(results[s.id]["trace_s"])) for s in specs},
         chunk_trace_cpu_s={(s.trace_key, s.block): float(results[s.id].get("trace_cpu_s", 0.0)) for s in specs},
     )  # fmt: skip
