@@ -868,12 +868,21 @@ def semicylindrical_point_irradiance(intensity, source, p, facing, axis=(0.0, 0.
 def dome_cylindrical_irradiance(radiance):
     """Cylindrical (and semi-cylindrical) irradiance under a uniform sky over a black ground, vertical axis.
 
+    Parameters
+    ----------
+    radiance : float or array_like
+        Sky radiance, W m⁻² sr⁻¹ (or cd/m²).
+
     Returns
     -------
     E : ndarray or float
-        πL/2, W/m² (or lx): (1/π)·L·∫₀^{2π}∫₀^{π/2} sinθ·sinθ dθ dφ = (1/π)·L·2π·π/4.
-        A semi-cylinder reads the same: ∫(1 + cos φ)dφ = 2π. Half the
-        horizontal irradiance πL, so the modelling ratio E_z/E_h is 0.5.
+        πL/2, W/m² (or lx).
+
+    Notes
+    -----
+    (1/π)·L·∫₀^{2π}∫₀^{π/2} sinθ·sinθ dθ dφ = (1/π)·L·2π·π/4 = πL/2. A
+    semi-cylinder reads the same: ∫(1 + cos φ)dφ = 2π. Half the horizontal
+    irradiance πL, so the modelling ratio E_z/E_h is 0.5.
 
     References
     ----------
