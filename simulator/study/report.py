@@ -254,8 +254,8 @@ def heat_map_png(res, zone: str) -> bytes:
     log = getattr(res.study.output, "heat_map_scale", "per_scenario") == "log"
     ncol = min(4, len(scen))
     nrow = math.ceil(len(scen) / ncol)
-    fig = Figure(figsize=(3.0 * ncol + (1.2 if log else 0.3), 2.5 * nrow + 0.7), dpi=80)
-    fig.subplots_adjust(left=0.06, right=0.86 if log else 0.95, bottom=0.1, top=1.0 - 0.62 / (2.5 * nrow + 0.7), wspace=0.55, hspace=0.75)
+    fig = Figure(figsize=(3.0 * ncol + (1.2 if log else 0.3), 2.5 * nrow + 1.0), dpi=80)
+    fig.subplots_adjust(left=0.06, right=0.86 if log else 0.95, bottom=0.1, top=1.0 - 0.95 / (2.5 * nrow + 1.0), wspace=0.55, hspace=0.75)
     axes = fig.subplots(nrow, ncol, squeeze=False)
     pos_vals = vals[vals > 0]
     shared = None
