@@ -219,6 +219,9 @@ def test_areas_csv_parts_maintained_figures_and_verdicts(tmp_path, capsys):
             assert r[f"{key}_verdict"] == ("pass" if v - req > 2 * s else "fail" if v - req < -2 * s else "unsure")
     # the report shows them
     assert 'id="areas"' in (out / "report.html").read_text()
+    # the cylindrical set's axis is the floor's normal
+    ez = [x for x in read if x["candidates"] == "ez"]
+    assert {x["kind"] for x in ez} == {"cylindrical"} and all(float(x["z"]) == pytest.approx(1.2) for x in ez)
     # the lamps at half level halve the readings: light is linear in emission
     full = {r["part"]: float(r["mean"]) for r in rows if r["area"] == "desk_1" and r["scenario"] == "full[lamps=1]"}
     half = {r["part"]: float(r["mean"]) for r in rows if r["area"] == "desk_1" and r["scenario"] == "full[lamps=0.5]"}
@@ -230,6 +233,7 @@ def test_areas_csv_parts_maintained_figures_and_verdicts(tmp_path, capsys):
     ('candidates = "ez"', 'candidates = "eh"', "area[2].candidates: a cylindrical area needs a cylindrical set"),
     ("required_lx = 500\n", "", "area[0]: a task area needs task = [x0, y0, x1, y1], required_lx and u0"),
     ('horizontal = "eh"', 'horizontal = "ehh"', "area[2].horizontal: no [[candidates]] named 'ehh'"),
+    ('kind = "cylindrical"\non', 'kind = "semicylindrical"\non', "candidates[2]: a semicylindrical set needs 'facing'"),
 ])  # fmt: skip
 def test_area_mistakes_are_one_line(tmp_path, capsys, old, new, message):
     text = AREA_STUDY.format(stage=(Path(__file__).resolve().parent.parent / "stages" / "office.usda").as_posix())
