@@ -85,7 +85,10 @@ def _parser() -> argparse.ArgumentParser:
     sd = sub.add_parser("study", help="placement study: candidates x scenarios, zone figures, the best K sensors (resumable, dask)")
     sd.add_argument("study", metavar="STUDY.toml", help="study file (.toml)")
     sd.add_argument("--out", metavar="DIR", help="output and chunk folder (default: the study's [output] dir)")
-    sd.add_argument("--scheduler", metavar="ADDRESS", help="dask scheduler, e.g. tcp://host:8786 (default: this machine)")
+    sd.add_argument("--scheduler", metavar="ADDRESS",
+                    help="dask scheduler, e.g. tcp://host:8786 or tls://host:8786 (TLS from dask's distributed.comm.tls settings)")
+    sd.add_argument("--local", action="store_true", help="run the chunks on a dask LocalCluster on this machine")
+    sd.add_argument("--workers", type=int, metavar="N", help="LocalCluster worker processes (implies --local; default one per core)")
     return p
 
 
@@ -260,7 +263,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.command == "study":
             from simulator.commands.study import main_study
 
-            return main_study(args.study, args.out, args.scheduler)
+            return main_study(args.study, args.out, args.scheduler, workers=args.workers, local=args.local)
     except UserError as e:
         print(f"probesim: error: {e}", file=sys.stderr)
         return e.exit_code

@@ -54,7 +54,7 @@ def closing_note(res) -> list[str]:
     lines = [
         f"{ncand} candidates ({', '.join(f'{s.name} {len(s.candidates)}' for s in res.sets)}), {len(res.scenarios)} scenarios "
         f"in {len(res.trace_groups)} trace group{'s' if len(res.trace_groups) != 1 else ''}, {res.chunks_total} chunks ({res.chunks_computed} computed, "
-        f"{res.chunks_loaded} resumed) {'in this process' if res.mode == 'inprocess' else f'on {res.mode} dask ({res.workers} workers)'}",
+        f"{res.chunks_loaded} resumed; {res.sensor_block} sensors a chunk) {'in this process' if res.mode == 'inprocess' else f'on {res.mode} dask ({res.workers} workers)'}",
     ]
     per = t["trace_in_chunks"] / max(len(res.scenarios), 1)
     ref = res.reference
@@ -70,13 +70,18 @@ def closing_note(res) -> list[str]:
     lines.append(f"wall time {t['total']:.1f} s (setup {t['setup']:.1f} s, chunks {t['chunks']:.1f} s); {cost}")
     pl = res.placement
     if pl is not None:
+        from simulator.study.report import score_text
+
+        st = lambda v, e: score_text(pl.objective, v, e)  # noqa: E731  (relative errors in percent)
+        what = "mean correlation" if pl.objective == "correlation" else "relative error"
         lines.append(f"placement ({pl.objective}, target {', '.join(pl.zones)}; greedy with lazy evaluation, "
-                     f"{pl.evaluations} evaluations for {pl.candidates} candidates; score with no sensor {pl.baseline:.4f}):")  # fmt: skip
+                     f"{pl.evaluations} evaluations for {pl.candidates} candidates; score ({what}) with no sensor "
+                     f"{st(pl.baseline, 0.0).split(' ±')[0]}):")  # fmt: skip
         pos = {c.sensor.name: c.position for c in res.candidates}
         for s in pl.steps:
-            sep = "" if s.separable else f"  (not separable from {s.runner_up}: lead {s.lead:.4f} ± {s.lead_se:.4f})"
+            sep = "" if s.separable else f"  (not separable from {s.runner_up}: lead {st(s.lead, s.lead_se)})"
             at = "({:.2f}, {:.2f}, {:.2f})".format(*pos[s.sensor])
-            lines.append(f"  k={s.k}  {s.sensor:<16} at {at}  gain {s.gain:.4f} ± {s.gain_se:.4f}  score {s.score:.4f} ± {s.score_se:.4f}{sep}")
+            lines.append(f"  k={s.k}  {s.sensor:<16} at {at}  gain {st(s.gain, s.gain_se)}  score {st(s.score, s.score_se)}{sep}")
         lines.append("  zone -> sensor: " + ", ".join(f"{z} -> {sn}" for z, sn in pl.assignment.items()))
     tally: dict[tuple[str, str], list[int]] = {}
     for (z, _), chk in res.checks.items():
@@ -89,20 +94,37 @@ def closing_note(res) -> list[str]:
     return lines
 
 
-def main_study(path: str, out: str | None, scheduler: str | None) -> int:
+def compute_overrides(scheduler: str | None, workers: int | None, local: bool) -> tuple[str | None, int | None]:
+    """``(mode, workers)`` the command line asks for (None: the study file's ``[compute]``).
+
+    ``--scheduler`` sends the chunks to a running cluster; ``--local`` or
+    ``--workers N`` start a LocalCluster here (N worker processes, default one
+    per core); the two cannot be combined."""
+    if scheduler is not None and "://" not in scheduler:
+        raise UserError(f"--scheduler: expected an address such as tcp://host:8786, got {scheduler!r}")
+    if workers is not None and workers < 1:
+        raise UserError(f"--workers: expected a number of workers >= 1, got {workers}")
+    if scheduler is not None and (local or workers is not None):
+        raise UserError("--scheduler runs the chunks on that cluster: give --local/--workers or --scheduler, not both")
+    if local or workers is not None:
+        return "local", workers
+    return None, None
+
+
+def main_study(path: str, out: str | None, scheduler: str | None, workers: int | None = None, local: bool = False) -> int:
     from simulator.pipeline import _versions
     from simulator.study.report import write_outputs
     from simulator.study.runner import run_study
     from simulator.study.schema import load_study
 
-    if scheduler is not None and "://" not in scheduler:
-        raise UserError(f"--scheduler: expected an address such as tcp://host:8786, got {scheduler!r}")
+    mode, n_workers = compute_overrides(scheduler, workers, local)
     study, p = load_study(path)
     out_dir = _out_dir(study, p, out)
     bar = ChunkProgress()
     t0 = time.perf_counter()
     try:
-        res = run_study(study, p, out_dir, scheduler=scheduler, on_chunk=bar, log=lambda m: print(m, file=sys.stderr))
+        res = run_study(study, p, out_dir, scheduler=scheduler, on_chunk=bar, log=lambda m: print(m, file=sys.stderr), mode=mode,
+                        workers=n_workers)  # fmt: skip
     except KeyboardInterrupt:
         bar.close()
         print(f"probesim: interrupted; finished chunks are kept in {out_dir}: run the same command again to resume", file=sys.stderr)

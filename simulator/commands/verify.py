@@ -90,6 +90,10 @@ _UNITS = {
     (SensorKind.RADIANCE, 1): "cd/m²",
     (SensorKind.PATCH, 0): "W",
     (SensorKind.PATCH, 1): "lm",
+    (SensorKind.CYLINDRICAL, 0): "W/m²",
+    (SensorKind.CYLINDRICAL, 1): "lx",
+    (SensorKind.SEMICYLINDRICAL, 0): "W/m²",
+    (SensorKind.SEMICYLINDRICAL, 1): "lx",
 }
 
 

@@ -8,7 +8,7 @@ discriminated union of them on ``kind``; a new kind is one more model in
 
 ::
 
-    [[sensor]]            # irradiance | radiance | patch | probe
+    [[sensor]]            # irradiance | radiance | patch | probe | cylindrical | semicylindrical
     name = "desk"         # default: "sensor[<index>]"
     kind = "irradiance"
     position = [0, 0, 0.75]   # metres
@@ -21,12 +21,12 @@ import math
 from typing import Annotated, Any, ClassVar, Literal, Union, get_args
 
 import numpy as np
-from pydantic import BeforeValidator, ConfigDict, Field
+from pydantic import AfterValidator, BeforeValidator, ConfigDict, Field, ValidationInfo
 from pydantic_core import PydanticCustomError
 
 from simulator.config.errors import MISSING, expected, rule, unknown_key
 from simulator.config.fields import (
-    Direction, Number, Point, Resolution, Size, Text, UpDirection, interval, nonblank, one_of,
+    PARALLEL_SIN, Direction, Number, Point, Resolution, Size, Text, UpDirection, interval, nonblank, one_of,
 )  # fmt: skip
 from simulator.config.table import Table
 from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SensorKind, Sensor
@@ -37,6 +37,8 @@ __all__ = [
     "RadianceEntry",
     "PatchEntry",
     "ProbeEntry",
+    "CylindricalEntry",
+    "SemicylindricalEntry",
     "SENSOR_ENTRIES",
     "SENSOR_KEYS",
     "SensorEntry",
@@ -135,6 +137,54 @@ class ProbeEntry(SensorFields):
         )  # fmt: skip
 
 
+def _z_axis() -> np.ndarray:
+    return np.array([0.0, 0.0, 1.0])
+
+
+def _perpendicular(a: np.ndarray) -> np.ndarray:
+    """A unit vector orthogonal to unit ``a`` (the origin of a whole cylinder's azimuths)."""
+    helper = np.array([1.0, 0.0, 0.0]) if abs(a[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+    v = np.cross(a, helper)
+    return v / np.linalg.norm(v)
+
+
+def _facing_beside_axis(facing: np.ndarray, info: ValidationInfo) -> np.ndarray:
+    axis = info.data.get("axis")
+    if axis is None:
+        return facing
+    ortho = facing - float(np.dot(facing, axis)) * axis
+    length = float(np.linalg.norm(ortho))
+    if length < PARALLEL_SIN:
+        raise rule("parallel to {sibling}; a semi-cylinder faces across its axis", sibling="axis")
+    return ortho / length
+
+
+class CylindricalEntry(SensorFields):
+    """Cylindrical illuminance: the mean irradiance on the curved surface of a small cylinder about ``axis``
+    (EN 12464-1's E_z with the default vertical axis)."""
+
+    KIND = SensorKind.CYLINDRICAL
+    kind: Literal["cylindrical"]
+    axis: Direction = Field(default_factory=_z_axis)
+
+    def to_sensor(self, name: str, source: str) -> Sensor:
+        return Sensor(name=name, kind=self.KIND, position=self.position, normal=_perpendicular(self.axis), up=self.axis,
+                      source=source)  # fmt: skip
+
+
+class SemicylindricalEntry(SensorFields):
+    """Semi-cylindrical illuminance: the mean irradiance on the curved half of a small cylinder about ``axis``
+    that faces ``facing`` (made orthogonal to the axis)."""
+
+    KIND = SensorKind.SEMICYLINDRICAL
+    kind: Literal["semicylindrical"]
+    axis: Direction = Field(default_factory=_z_axis)
+    facing: Annotated[Direction, AfterValidator(_facing_beside_axis)]
+
+    def to_sensor(self, name: str, source: str) -> Sensor:
+        return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.facing, up=self.axis, source=source)
+
+
 #: the model of each kind, by the name configs use (the order of
 #: :data:`simulator.scene.model.SENSOR_KINDS`)
 SENSOR_ENTRIES: dict[str, type[SensorFields]] = {
@@ -142,6 +192,8 @@ SENSOR_ENTRIES: dict[str, type[SensorFields]] = {
     "radiance": RadianceEntry,
     "patch": PatchEntry,
     "probe": ProbeEntry,
+    "cylindrical": CylindricalEntry,
+    "semicylindrical": SemicylindricalEntry,
 }
 #: every key some kind takes, in a stable order
 SENSOR_KEYS: tuple[str, ...] = tuple(dict.fromkeys(k for m in SENSOR_ENTRIES.values() for k in m.model_fields))

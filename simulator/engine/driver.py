@@ -118,6 +118,8 @@ class LightGroups:
     emissive_group: int = -1
     patch_base: np.ndarray | None = None
     batch: bool | None = None
+    #: (J, G) the dimming vectors the light pick serves (simulator.engine.scenario_pick); None: the authored levels
+    pick_levels: np.ndarray | None = None
 
     @property
     def uses_batches(self) -> bool:
@@ -397,6 +399,40 @@ class Engine:
         factors[1:] = np.where(est > 0, got / np.where(est > 0, est, 1.0), overall)
         dev.set_pick_factors(factors)
         self._pick_key = key
+        # what each light gave per row, for a pass serving several scenarios (scenario_pick)
+        self._pick_learnt = (factors, np.concatenate([tally[:, 1].sum(0)[None, :, 1], got], axis=0))
+        self._pick_scaled = False
+
+    def _scenario_pick(self, groups: LightGroups | None, mode: int) -> int:
+        """Steer the learnt pick toward the scenarios a group pass serves (``groups.pick_levels``,
+        :mod:`simulator.engine.scenario_pick`), or back to the learnt factors. Returns the pick mode
+        to use: ``mode``, or 0 (every light sampled) where no one pick serves all the scenarios."""
+        learnt = getattr(self, "_pick_learnt", None)
+        if learnt is None or self._pick_key == "fixed":
+            return mode
+        factors, got = learnt
+        if groups is None or groups.pick_levels is None:
+            if self._pick_scaled:
+                self._dev.set_pick_factors(factors)
+                self._pick_scaled = False
+            return mode
+        from simulator.engine.scenario_pick import MAX_SPREAD, light_levels, pick_spread, scenario_multipliers
+
+        n_l = factors.shape[1]
+        lg = np.full(n_l, -1, np.int64)
+        lg[: len(groups.light_group)] = groups.light_group
+        if self.emissive_light >= 0:
+            lg[self.emissive_light] = groups.emissive_group
+        pb = None
+        if groups.patch_base is not None:
+            pb = np.full(n_l, -1, np.int64)
+            pb[: len(groups.patch_base)] = groups.patch_base
+        d = light_levels(groups.pick_levels, lg, pb)
+        self._dev.set_pick_factors(factors * scenario_multipliers(got, d))
+        self._pick_scaled = True
+        rows = got[:1] if mode == LIGHT_PICK_MODES["after_first"] else got  # the rows the mode reads
+        self.pick_spread = float(pick_spread(rows, d).max())
+        return 0 if self.pick_spread > MAX_SPREAD else mode
 
     def _prepare_rr(self, params, method: str, max_depth: int, component: str, ids: np.ndarray,
                     first_batch: int, z: float, rel_error: float | None) -> float:
@@ -637,6 +673,7 @@ class Engine:
         params.pick_light = LIGHT_PICK_MODES[self.light_pick_mode(method)]
         if params.pick_light:
             self._prepare_pick(method, seed, max_depth, component, ids_all)
+            params.pick_light = self._scenario_pick(groups, params.pick_light)
         if METHOD_FLAGS[method][3] and params.bounces != 0 and self.rr_threshold is None:
             params.rr_threshold = self._prepare_rr(params, method, max_depth, component, ids_all,
                                                    min(samples, max_samples) if rel_error is not None else samples,

@@ -25,9 +25,11 @@ __all__ = ["COLUMNS", "PROBE_COLUMNS", "Reading", "readings_from", "probe_readin
 
 def _value_columns() -> tuple[str, ...]:
     """Every sensor kind's value columns (``SensorKindSpec.columns``), in
-    kind order, each once."""
+    kind order, each once; kinds with ``extra_columns`` are left out."""
     out: list[str] = []
     for spec in SENSOR_SPECS:
+        if spec.extra_columns:
+            continue  # written only when a run holds one (extra_columns)
         for group in spec.columns:
             out += [c for c in group.columns if c not in out]
     return tuple(out)

@@ -587,6 +587,69 @@ def sample_patch(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.
 
 
 @wp.func
+def cylinder_normal(s: SensorRec, phi: float) -> wp.vec3:
+    """The outward normal at azimuth ``phi`` about the axis ``s.up``, from ``s.right`` (the facing) toward ``up × right``."""
+    return wp.cos(phi) * s.right + wp.sin(phi) * wp.cross(s.up, s.right)
+
+
+@wp.func
+def sample_cylindrical(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+    """One estimate of the mean irradiance on a small cylinder's curved surface.
+
+    The mean over the surface is the mean over its outward normals n(φ), φ
+    uniform on [0, 2π): E_z = (1/2π)∫E(n(φ))dφ = (1/π)∫L sinθ dω (θ from the
+    axis). So a sample draws φ, then one irradiance sample on (p, n(φ)): the
+    directions it draws have density sinθ/π² over the sphere when cosine
+    sampled, the weight E_z carries."""
+    rng = rng_in
+    n = cylinder_normal(s, 2.0 * PI * wp.randf(rng))
+    return vertex_irradiance(scene, s.position, n, 1.0, params, params.skip_direct, rng)
+
+
+@wp.func
+def sample_semicylindrical(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+    """One estimate of the mean irradiance on the half cylinder facing ``s.right``: φ uniform on
+    [−π/2, π/2], E_sc = (1/π)∫E(n(φ))dφ = (1/π)∫L sinθ (1 + cos φ_ω) dω (φ_ω the direction's azimuth from the facing)."""
+    rng = rng_in
+    n = cylinder_normal(s, PI * (wp.randf(rng) - 0.5))
+    return vertex_irradiance(scene, s.position, n, 1.0, params, params.skip_direct, rng)
+
+
+@wp.func
+def analytic_cylinder(scene: SceneRec, s: SensorRec, half: int) -> wp.vec2:
+    """Point lights on a (semi-)cylinder in closed form: the irradiance on the normal toward the light's
+    projection across the axis is I·sinθ/d², and the mean over the (half) surface is that × (1 + cos φ)/π
+    for a half facing φ away, 1/π for the whole (the planner sends only point lights here)."""
+    v = wp.vec2(0.0, 0.0)
+    for li in range(scene.n_lights):
+        l = scene.lights[li]
+        w = l.position - s.position
+        across = w - wp.dot(w, s.up) * s.up
+        la = wp.length(across)
+        if la <= 0.0:
+            continue  # on the axis: sinθ = 0
+        n = across / la
+        e = analytic_light(scene, li, s.position, n)
+        if l.shaped != 0:
+            e = e * shaping_factor(l, wp.normalize(s.position - l.position))
+        f = 1.0 / PI
+        if half != 0:
+            f = (1.0 + wp.dot(n, s.right)) / PI
+        v += f * e
+    return v
+
+
+@wp.func
+def analytic_cylindrical(scene: SceneRec, s: SensorRec) -> wp.vec2:
+    return analytic_cylinder(scene, s, 0)
+
+
+@wp.func
+def analytic_semicylindrical(scene: SceneRec, s: SensorRec) -> wp.vec2:
+    return analytic_cylinder(scene, s, 1)
+
+
+@wp.func
 def analytic_irradiance(scene: SceneRec, s: SensorRec) -> wp.vec2:
     """Every light's unoccluded irradiance on the sensor, in closed form."""
     v = wp.vec2(0.0, 0.0)
@@ -612,6 +675,12 @@ def analytic_patch(scene: SceneRec, s: SensorRec) -> wp.vec2:
 def _upload_radiance(rec, sensor: Sensor) -> None:
     # 1 − cos of the cone as 2·sin²(θ/2), without cancellation
     rec.one_minus_cos = 2.0 * math.sin(0.5 * sensor.half_angle) ** 2
+
+
+def _upload_cylinder(rec, sensor: Sensor) -> None:
+    # axis in ``up``, the facing (a whole cylinder's azimuth origin) in ``right``, orthogonal to it
+    rec.up = wp.vec3(*map(float, sensor.up))
+    rec.right = wp.vec3(*map(float, sensor.normal))
 
 
 def _upload_patch(rec, sensor: Sensor) -> None:
@@ -641,6 +710,8 @@ SENSOR_KERNELS = (
     SensorKernel(SensorKind.IRRADIANCE, sample_irradiance, analytic=analytic_irradiance),
     SensorKernel(SensorKind.RADIANCE, sample_radiance, upload=_upload_radiance),
     SensorKernel(SensorKind.PATCH, sample_patch, analytic=analytic_patch, upload=_upload_patch),
+    SensorKernel(SensorKind.CYLINDRICAL, sample_cylindrical, analytic=analytic_cylindrical, upload=_upload_cylinder),
+    SensorKernel(SensorKind.SEMICYLINDRICAL, sample_semicylindrical, analytic=analytic_semicylindrical, upload=_upload_cylinder),
 )
 def _sample_link(k, hook, rest):
     @wp.func

@@ -156,6 +156,14 @@ def analytic_refusal(scene: Scene, sensor: Sensor, bounds: SceneBounds | None = 
     if sensor.kind == SensorKind.PATCH:
         if any(l.kind != LightKind.POINT for l in scene.lights):
             return "a patch has a closed form for point lights only"
+    elif sensor.kind in (SensorKind.CYLINDRICAL, SensorKind.SEMICYLINDRICAL):
+        # E = I(ω)·sinθ·(1 + cos φ)/(π d²) (whole cylinder: 1/π in place of (1 + cos φ)/π); it looks all round,
+        # so any triangle may block a light
+        if any(l.kind != LightKind.POINT for l in scene.lights):
+            return f"a {sensor.kind.name.lower()} sensor has a closed form for point lights only"
+        if scene.geometry.n_triangles:
+            return f"a {sensor.kind.name.lower()} sensor looks all round: any surface may block a light"
+        return None
     elif sensor.kind != SensorKind.IRRADIANCE:
         return f"no closed form for a {sensor.kind.name.lower()} sensor"
     g = scene.geometry

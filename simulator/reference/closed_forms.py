@@ -63,6 +63,9 @@ __all__ = [
     "polygon_solid_angle",
     "point_flux_through_polygon",
     "dome_irradiance",
+    "cylindrical_point_irradiance",
+    "semicylindrical_point_irradiance",
+    "dome_cylindrical_irradiance",
     "lambertian_radiance",
     "furnace_radiance",
     "furnace_irradiance",
@@ -772,6 +775,120 @@ def dome_irradiance(radiance, tilt):
     .. [1] docs/REFERENCES.md §Uniform environment.
     """
     return _out(np.asarray(radiance, float) * np.pi * 0.5 * (1.0 + np.cos(np.asarray(tilt, float))))
+
+
+def _across(source, p, axis):
+    """(d², unit direction across the axis toward the source, sinθ) for a point source."""
+    w = np.asarray(source, float) - np.asarray(p, float)
+    a = np.asarray(axis, float)
+    a = a / np.linalg.norm(a, axis=-1, keepdims=True)
+    d2 = np.sum(w * w, axis=-1)
+    if np.any(d2 <= 0.0):
+        raise ValueError("cylindrical: receiver coincides with the source")
+    across = w - np.sum(w * a, axis=-1, keepdims=True) * a
+    la = np.linalg.norm(across, axis=-1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        u = np.where(la[..., None] > 0, across / np.where(la > 0, la, 1.0)[..., None], 0.0)
+    return d2, u, la / np.sqrt(d2)
+
+
+def cylindrical_point_irradiance(intensity, source, p, axis=(0.0, 0.0, 1.0)):
+    """Cylindrical irradiance (illuminance) from a point source: the mean over a small cylinder's curved surface.
+
+    Parameters
+    ----------
+    intensity : float or array_like
+        Intensity toward the receiver, W/sr (or cd).
+    source, p : array_like, shape (..., 3)
+        Source and receiver positions, metres.
+    axis : array_like, shape (3,)
+        The cylinder's axis (normalised here); EN 12464-1's E_z: vertical.
+
+    Returns
+    -------
+    E : ndarray or float
+        E_z = I·sinθ/(π·d²), W/m² (or lx); θ between the axis and the direction to the source.
+
+    Notes
+    -----
+    The surface's outward normals n(φ) = cos φ·u + sin φ·v (u, v across the
+    axis) see the source with cos ψ = sinθ·cos(φ − φ_s); the mean of
+    E(n) = I·max(0, cos ψ)/d² over φ is (I/d²)·sinθ·(1/2π)∫max(0, cos φ)dφ
+    = I·sinθ/(π·d²). For any radiance field the same averaging gives
+    E_z = (1/π)∫L(ω)·sinθ dω over the sphere.
+
+    References
+    ----------
+    .. [1] docs/REFERENCES.md §Cylindrical illuminance.
+    """
+    d2, _, sin_t = _across(source, p, axis)
+    return _out(np.asarray(intensity, float) * sin_t / (np.pi * d2))
+
+
+def semicylindrical_point_irradiance(intensity, source, p, facing, axis=(0.0, 0.0, 1.0)):
+    """Semi-cylindrical irradiance from a point source: the mean over the half cylinder facing ``facing``.
+
+    Parameters
+    ----------
+    intensity : float or array_like
+        Intensity toward the receiver, W/sr (or cd).
+    source, p : array_like, shape (..., 3)
+        Source and receiver positions, metres.
+    facing : array_like, shape (3,)
+        Where the half cylinder faces (made orthogonal to the axis here).
+    axis : array_like, shape (3,)
+        The cylinder's axis.
+
+    Returns
+    -------
+    E : ndarray or float
+        E_sc = I·sinθ·(1 + cos φ)/(π·d²), W/m² (or lx); φ the azimuth between
+        the facing and the source across the axis.
+
+    Notes
+    -----
+    Over the half's normals φ_n ∈ [−π/2, π/2] about the facing,
+    (1/π)∫max(0, cos(φ − φ_n))dφ_n = (1 + cos φ)/π for |φ| ≤ π, so
+    E_sc = (1/π)∫L(ω)·sinθ·(1 + cos φ_ω) dω over the sphere; a uniform field
+    L gives πL, as a plane receiver would.
+
+    References
+    ----------
+    .. [1] docs/REFERENCES.md §Cylindrical illuminance.
+    """
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    f = np.asarray(facing, float)
+    f = f - np.dot(f, a) * a
+    f = f / np.linalg.norm(f)
+    d2, u, sin_t = _across(source, p, a)
+    cos_phi = np.sum(u * f, axis=-1)
+    return _out(np.asarray(intensity, float) * sin_t * (1.0 + cos_phi) / (np.pi * d2))
+
+
+def dome_cylindrical_irradiance(radiance):
+    """Cylindrical (and semi-cylindrical) irradiance under a uniform sky over a black ground, vertical axis.
+
+    Parameters
+    ----------
+    radiance : float or array_like
+        Sky radiance, W m⁻² sr⁻¹ (or cd/m²).
+
+    Returns
+    -------
+    E : ndarray or float
+        πL/2, W/m² (or lx).
+
+    Notes
+    -----
+    (1/π)·L·∫₀^{2π}∫₀^{π/2} sinθ·sinθ dθ dφ = (1/π)·L·2π·π/4 = πL/2. A
+    semi-cylinder reads the same: ∫(1 + cos φ)dφ = 2π. Half the horizontal
+    irradiance πL, so the modelling ratio E_z/E_h is 0.5.
+
+    References
+    ----------
+    .. [1] docs/REFERENCES.md §Cylindrical illuminance.
+    """
+    return _out(np.asarray(radiance, float) * np.pi * 0.5)
 
 
 def lambertian_radiance(albedo, irradiance):

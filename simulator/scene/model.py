@@ -358,6 +358,8 @@ class SensorKind(IntEnum):
     RADIANCE = 1  #: mean radiance arriving from a cone around ``direction``
     PATCH = 2  #: rectangle; flux through it from the side it faces
     PROBE = 3  #: full-sphere light probe
+    CYLINDRICAL = 4  #: mean irradiance on a small cylinder's curved surface about the axis ``up``
+    SEMICYLINDRICAL = 5  #: the same over the half cylinder facing ``normal``
 
 
 #: lat-long map size ``(width, height)`` of a probe that does not say
@@ -386,6 +388,14 @@ _FLUX = ColumnGroup(("flux_W", "flux_stderr_W", "luminous_flux_lm", "luminous_fl
 _SCALAR = ColumnGroup(
     ("scalar_irradiance_W_m2", "scalar_irradiance_stderr_W_m2", "scalar_illuminance_lx", "scalar_illuminance_stderr_lx"), "1", "W/m²", "lx"
 )
+_CYLINDRICAL = ColumnGroup(
+    ("cylindrical_irradiance_W_m2", "cylindrical_irradiance_stderr_W_m2", "cylindrical_illuminance_lx", "cylindrical_illuminance_stderr_lx"),
+    "1", "W/m²", "lx",
+)  # fmt: skip
+_SEMICYLINDRICAL = ColumnGroup(
+    ("semicylindrical_irradiance_W_m2", "semicylindrical_irradiance_stderr_W_m2", "semicylindrical_illuminance_lx",
+     "semicylindrical_illuminance_stderr_lx"), "1", "W/m²", "lx",
+)  # fmt: skip
 _DIRECTION = ColumnGroup(("mean_direction_x", "mean_direction_y", "mean_direction_z", "mean_direction_stderr_deg"))
 
 
@@ -416,6 +426,10 @@ class SensorKindSpec:
         proved wholly behind it may be skipped there.
     directed : bool
         Its ``normal`` is a direction the CSV reports (``dx, dy, dz``).
+    extra_columns : bool
+        Its value columns are written only by a run that holds such a sensor,
+        after the standard ones (:func:`simulator.io.results.extra_columns`),
+        so that the CSVs of runs without one keep their header.
     """
 
     kind: SensorKind
@@ -426,6 +440,7 @@ class SensorKindSpec:
     culls_lights: bool
     headline: int = 0
     directed: bool = True
+    extra_columns: bool = False
 
 
 #: every sensor kind, in ``SensorKind`` order
@@ -434,6 +449,9 @@ SENSOR_SPECS = (
     SensorKindSpec(SensorKind.RADIANCE, "radiance", ("half_angle",), "estimate", (_RADIANCE,), culls_lights=False),
     SensorKindSpec(SensorKind.PATCH, "patch", ("up", "size"), "estimate", (_IRRADIANCE, _FLUX), culls_lights=True, headline=1),
     SensorKindSpec(SensorKind.PROBE, "probe", ("resolution",), "probe", (_SCALAR, _DIRECTION), culls_lights=False, directed=False),
+    SensorKindSpec(SensorKind.CYLINDRICAL, "cylindrical", ("up",), "estimate", (_CYLINDRICAL,), culls_lights=False, extra_columns=True),
+    SensorKindSpec(SensorKind.SEMICYLINDRICAL, "semicylindrical", ("up",), "estimate", (_SEMICYLINDRICAL,), culls_lights=False,
+                   extra_columns=True),
 )  # fmt: skip
 assert [int(s.kind) for s in SENSOR_SPECS] == list(range(len(SensorKind)))
 
@@ -463,7 +481,10 @@ class Sensor:
         Unit vector the sensor faces: toward the light it measures. For a
         radiance meter this is the look direction (rays leave along it).
     up : ndarray, shape (3,)
-        Patch only: unit direction of the height side, orthogonal to normal.
+        Patch: unit direction of the height side, orthogonal to normal.
+        Cylindrical and semi-cylindrical: the cylinder's axis (``normal``,
+        orthogonal to it, is where a semi-cylinder faces; for a whole
+        cylinder only the origin of its azimuths).
     size : tuple of float
         Patch only: ``(width, height)`` in metres.
     half_angle : float

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import fnmatch
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -72,6 +72,7 @@ class CandidateSet:
     grids: dict[str, Grid]  #: prim path -> grid used on it
     dropped_inside: int = 0  #: points dropped inside ``drop_inside`` prims
     dropped_outside: int = 0  #: points whose foot is off the prim
+    dropped_points: list = field(default_factory=list)  #: positions (ndarray (3,)) of the points dropped inside ``drop_inside`` prims
 
 
 def match_prims(names: list[str], pattern: str) -> list[int]:
@@ -121,6 +122,16 @@ def _boxes(scene: Scene, patterns: list[str], label: str) -> list[tuple[np.ndarr
 
 
 def _sensor(spec: CandidateSpec, name: str, position: np.ndarray, normal: np.ndarray, source: str) -> Sensor:
+    if spec.kind in ("cylindrical", "semicylindrical"):  # the axis along the prim's normal (a floor: vertical)
+        axis = normal / np.linalg.norm(normal)
+        ref = np.asarray(spec.facing, float) if spec.facing is not None else np.array([1.0, 0.0, 0.0])
+        ref = ref - float(ref @ axis) * axis
+        if np.linalg.norm(ref) < 1e-6:
+            if spec.facing is not None:
+                raise UserError(f"{source}: facing is parallel to the cylinders' axis (the prim's normal)")
+            ref = np.array([0.0, 1.0, 0.0]) - axis[1] * axis
+        kind = SensorKind.CYLINDRICAL if spec.kind == "cylindrical" else SensorKind.SEMICYLINDRICAL
+        return Sensor(name=name, kind=kind, position=position, normal=ref / np.linalg.norm(ref), up=axis.copy(), source=source)
     if spec.kind == "photosensor":
         return Sensor(name=name, kind=SensorKind.RADIANCE, position=position, normal=normal,
                       half_angle=math.radians(spec.half_angle_deg), source=source)  # fmt: skip
@@ -211,5 +222,7 @@ def build_candidates(scene: Scene, specs: list[CandidateSpec], file_label: str) 
             if c.sensor.name in seen:
                 raise UserError(f"{label}: sensor name {c.sensor.name!r} is used twice")
             seen.add(c.sensor.name)
-        sets.append(CandidateSet(spec.name, spec.kind, keep, grids, len(cands) - len(keep), outside))
+        kept = {id(c) for c in keep}
+        dropped = [c.position.copy() for c in cands if id(c) not in kept]
+        sets.append(CandidateSet(spec.name, spec.kind, keep, grids, len(cands) - len(keep), outside, dropped))
     return sets

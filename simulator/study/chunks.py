@@ -37,7 +37,7 @@ from simulator.study.sun import sun_direction, sun_frame
 __all__ = ["ChunkSpec", "ChunkStore", "compute_chunk", "atomic_write", "make_chunks", "StudyInterrupted"]
 
 #: bump when a change to the tracing would change a chunk's numbers
-CHUNK_FORMAT = 3
+CHUNK_FORMAT = 4
 
 
 class StudyInterrupted(Exception):
@@ -85,7 +85,10 @@ def atomic_write(path: Path, data: bytes) -> None:
 
 
 def _sensor_text(s: Sensor) -> str:
-    return f"{s.name}|{int(s.kind)}|{s.position.tolist()}|{s.normal.tolist()}|{s.half_angle!r}"
+    text = f"{s.name}|{int(s.kind)}|{s.position.tolist()}|{s.normal.tolist()}|{s.half_angle!r}"
+    if "up" in s.spec.attributes and s.spec.name != "patch":  # a cylinder's axis
+        text += f"|{s.up.tolist()}"
+    return text
 
 
 def make_chunks(trace_groups, sensors: list[Sensor], groups: dict[str, list[str]], stage: Path, light_units: str,
@@ -146,13 +149,13 @@ def compute_chunk(spec: ChunkSpec) -> dict:
                       scenarios=[dict(lv) for lv in spec.levels], sky_split=spec.sky_split)  # fmt: skip
     return {
         "id": spec.id, "names": gr.names, "mean": gr.mean, "stderr": gr.stderr, "cov": gr.cov, "samples": gr.samples,
-        "trace_s": gr.trace_s, "trace_cpu_s": gr.trace_cpu_s, "wall_s": time.perf_counter() - t0, "host": socket.gethostname(), "pid": os.getpid(),
+        "trace_s": gr.trace_s, "trace_cpu_s": gr.trace_cpu_s, "methods": list(gr.methods), "wall_s": time.perf_counter() - t0, "host": socket.gethostname(), "pid": os.getpid(),
     }  # fmt: skip
 
 
 def readings_of(result: dict) -> GroupReadings:
     return GroupReadings(list(result["names"]), result["mean"], result["stderr"], result["cov"], result["samples"], result["trace_s"],
-                         float(result.get("trace_cpu_s", 0.0)))  # fmt: skip
+                         float(result.get("trace_cpu_s", 0.0)), [str(m) for m in result.get("methods", [])])  # fmt: skip
 
 
 class ChunkStore:
@@ -184,6 +187,7 @@ class ChunkStore:
         with np.load(io.BytesIO(data), allow_pickle=False) as z:
             out = {k: z[k] for k in z.files}
         out["names"] = [str(n) for n in out["names"]]
+        out["methods"] = [str(m) for m in out.get("methods", [])]
         out["id"] = cid
         out.update({k: e[k] for k in ("wall_s", "host", "pid") if k in e})
         return out
@@ -192,7 +196,8 @@ class ChunkStore:
         """Write a chunk, then its manifest entry, each atomically."""
         buf = io.BytesIO()
         np.savez(buf, names=np.array(result["names"]), mean=result["mean"], stderr=result["stderr"], cov=result["cov"],
-                 samples=result["samples"], trace_s=result["trace_s"], trace_cpu_s=np.float64(result.get("trace_cpu_s", 0.0)))  # fmt: skip
+                 samples=result["samples"], trace_s=result["trace_s"], trace_cpu_s=np.float64(result.get("trace_cpu_s", 0.0)),
+                 methods=np.array(list(result.get("methods", [])), dtype=str))  # fmt: skip
         data = buf.getvalue()
         name = f"{result['id']}.npz"
         atomic_write(self.dir / name, data)

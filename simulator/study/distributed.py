@@ -33,6 +33,30 @@ def choose_mode(mode: str, scheduler: str | None, n_chunks: int, workers: int) -
     return mode, (n if mode == "local" else 1)
 
 
+#: dask settings a tls:// scheduler needs (``distributed.comm.tls.*``, or DASK_DISTRIBUTED__COMM__TLS__... variables)
+TLS_KEYS = ("distributed.comm.tls.ca-file", "distributed.comm.tls.client.cert")
+
+
+def scheduler_security(address: str):
+    """The client's :class:`distributed.Security` for ``address``: None for tcp (dask's default),
+    and for ``tls://`` the one dask's configuration describes (``distributed.comm.tls.ca-file``,
+    ``.client.cert``, ``.client.key``), checked here so that a missing setting is one line."""
+    if not address.startswith("tls://"):
+        return None
+    import dask
+    from distributed import Security
+
+    missing = [k for k in TLS_KEYS if not dask.config.get(k, None)]
+    if missing:
+        env = ", ".join("DASK_" + k.upper().replace(".", "__").replace("-", "_") for k in missing)
+        raise UserError(f"--scheduler {address}: a tls:// scheduler needs dask's {', '.join(missing)} (in dask's config file, or {env})")
+    for k in ("distributed.comm.tls.ca-file", "distributed.comm.tls.client.cert", "distributed.comm.tls.client.key"):
+        f = dask.config.get(k, None)
+        if f and not os.path.isfile(f):
+            raise UserError(f"--scheduler {address}: {k} = {f}: no such file")
+    return Security(require_encryption=True)
+
+
 def run_chunks(specs: list[ChunkSpec], mode: str, workers: int, scheduler: str | None, retries: int,
                log: Callable[[str], None] = print) -> Iterator[dict]:  # fmt: skip
     """Compute ``specs``, yielding each chunk's result as it finishes."""
@@ -49,7 +73,7 @@ def run_chunks(specs: list[ChunkSpec], mode: str, workers: int, scheduler: str |
     cluster = None
     if mode == "scheduler":
         try:
-            client = Client(scheduler, timeout="20s")
+            client = Client(scheduler, timeout="20s", security=scheduler_security(scheduler))
         except (OSError, TimeoutError) as exc:
             raise UserError(f"dask scheduler {scheduler}: cannot reach it: {exc}") from None
     else:

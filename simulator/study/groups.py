@@ -88,7 +88,7 @@ from __future__ import annotations
 
 import hashlib
 import time
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -142,6 +142,8 @@ class GroupReadings:
     trace_cpu_s : float
         CPU seconds of the pass (this process, all its threads): a cost figure
         less sensitive than wall time to other work on the machine.
+    methods : list of str
+        The method each sensor was read by in the pass (the union's plan), length S.
     """
 
     names: list[str]
@@ -151,6 +153,7 @@ class GroupReadings:
     samples: np.ndarray
     trace_s: np.ndarray
     trace_cpu_s: float = 0.0
+    methods: list = field(default_factory=list)
 
     def combine(self, levels: dict[str, float]) -> tuple[np.ndarray, np.ndarray]:
         """Readings ``(mean, stderr)``, each (S, 2), of the dimming vector ``levels``
@@ -266,10 +269,11 @@ def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str
     plan = make_plan(sub, sensors, sim.method, sim.component)
     light_group = np.array([owner[l.name] for l in sub.lights], np.int64)
     patch_base = np.array([split_lights.get(l.name, -1) for l in sub.lights], np.int64) if split_lights else None
-    levels = None
-    if sim.adaptive and scenarios:
-        levels = np.array([[level_of(sc, n) for n in names] for sc in scenarios])
-    lg = LightGroups(light_group, n_g, levels, patch_base=patch_base)
+    levels = pick = None
+    if scenarios:
+        pick = np.array([[level_of(sc, n) for n in names] for sc in scenarios])
+        levels = pick if sim.adaptive else None
+    lg = LightGroups(light_group, n_g, levels, patch_base=patch_base, pick_levels=pick)
     mean = np.zeros((n_g, n_s, 2))
     cov = np.zeros((n_s, 2, n_g, n_g))
     samples = np.zeros(n_s, np.int64)
@@ -287,4 +291,8 @@ def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str
         _closed_forms_of_groups(sub, sensors, names, groups, plan, sim, threads, mean, cov)
     stderr = np.sqrt(np.maximum(np.transpose(np.diagonal(cov, axis1=2, axis2=3), (2, 0, 1)), 0.0))
     trace_s = np.full(n_g, (time.perf_counter() - t0) / max(n_g, 1))
-    return GroupReadings(names, mean, stderr, cov, np.broadcast_to(samples, (n_g, n_s)).copy(), trace_s, time.process_time() - c0)
+    methods = [sp.method for sp in plan.sensors]
+    if split_lights:
+        methods = ["mis" if m in ("analytic", "exact") else m for m in methods]
+    return GroupReadings(names, mean, stderr, cov, np.broadcast_to(samples, (n_g, n_s)).copy(), trace_s, time.process_time() - c0,
+                         methods)  # fmt: skip

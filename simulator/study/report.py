@@ -17,22 +17,23 @@ from pathlib import Path
 
 import numpy as np
 
-from simulator.io.results import json_default
-from simulator.scene.model import SensorKind
+from simulator.io.results import json_default, readings_from
+from simulator.scene.model import SENSOR_SPECS
 from simulator.study.chunks import atomic_write
 from simulator.study.objectives import TARGET_FIGURES, calibrated_errors
 
-__all__ = ["write_outputs", "LONG_COLUMNS", "SUMMARY_COLUMNS", "MAX_PANELS"]
+__all__ = ["write_outputs", "long_columns", "summary_columns", "value_columns", "score_text", "MAX_PANELS"]
 
-LONG_COLUMNS = ("scenario", "sensor", "candidates", "kind", "x_m", "y_m", "z_m", "photometric", "photometric_stderr",
-                "photometric_unit", "radiometric", "radiometric_stderr", "radiometric_unit")  # fmt: skip
-SUMMARY_COLUMNS = ("zone", "scenario", "sensors", "unit", "min", "min_stderr", "mean", "mean_stderr", "max", "max_stderr",
-                   "u0", "u0_stderr", "min_max", "min_max_stderr", "targets", "chosen_set", "predictor", "predicted_mean",
-                   "prediction_rel_error")  # fmt: skip
+#: columns every readings row starts with; the value columns are ``run``'s
+#: (:data:`simulator.io.results.COLUMNS`) for the kinds the study holds, then
+#: ``samples``, ``method`` and one ``level_<group>`` column per light group
+LONG_LEAD = ("scenario", "sensor", "candidates", "kind", "x", "y", "z", "dx", "dy", "dz")
+LONG_TAIL = ("samples", "method")
+SUMMARY_LEAD = ("zone", "scenario", "sensors", "unit", "min", "min_stderr", "mean", "mean_stderr", "max", "max_stderr",
+                "u0", "u0_stderr", "min_max", "min_max_stderr")  # fmt: skip
+SUMMARY_TAIL = ("chosen_set", "predictor", "predicted_mean", "prediction_rel_error")
 #: most scenario panels in one zone's heat map
 MAX_PANELS = 16
-
-_UNITS = {SensorKind.IRRADIANCE: ("lx", "W/m2"), SensorKind.RADIANCE: ("cd/m2", "W/(m2 sr)")}
 
 
 def _f(x) -> str:
@@ -43,17 +44,106 @@ def _f(x) -> str:
     return str(x)
 
 
+def value_columns(res) -> list[str]:
+    """``run``'s value columns of the sensor kinds in the study, in kind order."""
+    kinds = sorted({int(c.sensor.kind) for c in res.candidates})
+    out: list[str] = []
+    for k in kinds:
+        for group in SENSOR_SPECS[k].columns:
+            out += [c for c in group.columns if c not in out]
+    return out
+
+
+def group_names(res) -> list[str]:
+    """The study's light groups, in file order."""
+    return [g.name for g in res.study.group]
+
+
+def long_columns(res) -> list[str]:
+    return [*LONG_LEAD, *value_columns(res), *LONG_TAIL, *(f"level_{g}" for g in group_names(res))]
+
+
 def long_csv(res) -> str:
+    """One row per (scenario, candidate): ``run``'s columns and units, the pass's samples and method, the scenario's levels."""
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(LONG_COLUMNS)
+    cols = value_columns(res)
+    groups = group_names(res)
+    w.writerow(long_columns(res))
     for j, sc in enumerate(res.scenarios):
-        for i, c in enumerate(res.candidates):
+        levels = [_f(float(sc.levels.get(g, 0.0))) for g in groups]
+        rows = readings_from([c.sensor for c in res.candidates], res.mean[j], res.stderr[j], res.samples[j],
+                             np.zeros(len(res.candidates)), res.methods[j], None)  # fmt: skip
+        for c, r in zip(res.candidates, rows):
             s = c.sensor
-            up, ur = _UNITS[s.kind]
-            kind = "photosensor" if s.kind == SensorKind.RADIANCE else "irradiance"
-            w.writerow([sc.name, s.name, c.set_name, kind, *(_f(v) for v in s.position), _f(res.mean[j, i, 1]), _f(res.stderr[j, i, 1]),
-                        up, _f(res.mean[j, i, 0]), _f(res.stderr[j, i, 0]), ur])  # fmt: skip
+            w.writerow([sc.name, s.name, c.set_name, s.spec.name, *(_f(float(v)) for v in s.position),
+                        *(_f(float(v)) for v in s.normal), *(_f(r.values.get(k)) for k in cols), r.samples, r.method, *levels])  # fmt: skip
+    return buf.getvalue()
+
+
+def target_keys(res) -> list[str]:
+    """Every target any zone sets, in ``TARGET_FIGURES`` order."""
+    used = {k for z in res.study.zone for k in z.targets}
+    return [k for k in TARGET_FIGURES if k in used]
+
+
+def summary_columns(res) -> list[str]:
+    per = [c for k in target_keys(res) for c in (f"{k}_required", f"{k}_verdict")]
+    return [*SUMMARY_LEAD, *per, *SUMMARY_TAIL]
+
+
+def placement_unit(objective: str) -> str:
+    """How a placement score reads: a correlation, or a relative error in percent."""
+    return "correlation" if objective == "correlation" else "%"
+
+
+def score_value(objective: str, v: float) -> float:
+    """A placement score (or gain) as reported: correlations as they are, relative errors × 100 (percent)."""
+    return float(v) if objective == "correlation" else 100.0 * float(v)
+
+
+def score_text(objective: str, v: float, se: float) -> str:
+    """``0.9731 ± 0.0040`` for a correlation, ``4.21% ± 0.35%`` for a relative error."""
+    if objective == "correlation":
+        return f"{v:.4f} ± {se:.4f}"
+    return f"{100 * v:.2f}% ± {100 * se:.2f}%"
+
+
+PLACEMENT_COLUMNS = ("k", "sensor", "candidates", "x", "y", "z", "gain", "gain_stderr", "score", "score_stderr", "unit",
+                     "runner_up", "lead", "lead_stderr", "separable")  # fmt: skip
+
+
+def placement_csv(res) -> str:
+    """The greedy picks, scores in percent for the relative-error objectives (a bare fraction misleads)."""
+    pl = res.placement
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(PLACEMENT_COLUMNS)
+    by = {c.sensor.name: c for c in res.candidates}
+    sv = lambda v: _f(score_value(pl.objective, v))  # noqa: E731
+    for s in pl.steps:
+        c = by[s.sensor]
+        w.writerow([s.k, s.sensor, c.set_name, *(_f(float(v)) for v in c.position), sv(s.gain), sv(s.gain_se), sv(s.score),
+                    sv(s.score_se), placement_unit(pl.objective), s.runner_up or "", sv(s.lead), sv(s.lead_se),
+                    "yes" if s.separable else "no"])  # fmt: skip
+    return buf.getvalue()
+
+
+def areas_csv(res) -> str:
+    """One row per (EN 12464-1 area, part, scenario): maintained figures, requirements and verdicts."""
+    from simulator.study.areas import AREA_COLUMNS
+
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(AREA_COLUMNS)
+    unit = "lx" if res.study.light_units == "photometric" else "W/m2"
+    mfs = {a.name: a.maintenance_factor for a in res.study.area}
+    for r in res.areas:
+        f = r.figures
+        vals = ["", "", "", "", "", ""] if f is None else [_f(v) for v in (f.mean, f.mean_se, f.min, f.min_se, f.u0, f.u0_se)]
+        m = ("", "") if r.modelling is None else (_f(r.modelling[0]), _f(r.modelling[1]))
+        w.writerow([r.area, r.part, r.scenario, r.sensors, unit, _f(mfs[r.area]), *vals, _f(float(r.required_mean)),
+                    _f(float(r.required_u0)), r.verdicts["mean"], r.verdicts["u0"], *m, r.modelling_verdict])  # fmt: skip
     return buf.getvalue()
 
 
@@ -79,23 +169,23 @@ def _predictions(res) -> dict:
 
 
 def summary_csv(res) -> str:
+    """One row per (zone, scenario): the figures with their errors, then per target its required value and verdict."""
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(SUMMARY_COLUMNS)
+    w.writerow(summary_columns(res))
     preds = _predictions(res)
     chosen = ";".join(res.placement.chosen) if res.placement else ""
     unit = "lx" if res.study.light_units == "photometric" else "W/m2"
+    keys = target_keys(res)
     for z in res.study.zone:
         for sc in res.scenarios:
             f = res.figures[(z.name, sc.name)]
             chk = res.checks[(z.name, sc.name)]
-            targets = ";".join(
-                f"{k}{'>=' if TARGET_FIGURES[k][1] == 'min' else '<='}{v:g}:{chk[k]}" for k, v in z.targets.items()
-            )  # fmt: skip
+            per = [x for k in keys for x in ((_f(float(z.targets[k])), chk[k]) if k in z.targets else ("", ""))]
             p = preds.get((z.name, sc.name), ("", None, None))
             w.writerow([z.name, sc.name, len(res.zones[z.name]), unit, *(_f(getattr(f, a)) for a in
                         ("min", "min_se", "mean", "mean_se", "max", "max_se", "u0", "u0_se", "min_max", "min_max_se")),
-                        targets, chosen, p[0], _f(p[1]), _f(p[2])])  # fmt: skip
+                        *per, chosen, p[0], _f(p[1]), _f(p[2])])  # fmt: skip
     return buf.getvalue()
 
 
@@ -115,9 +205,45 @@ def _raster(xy: np.ndarray, v: np.ndarray):
     return img, ext
 
 
+def zone_plan(res, zone: str):
+    """The room's plan around a zone (:func:`simulator.study.outline.plan_of_zone`), or None
+    (no stage scene kept, a zone that is not horizontal, no prims of its own)."""
+    from simulator.study.outline import plan_of_zone
+
+    scene = getattr(res, "scene", None)
+    ids = res.zones[zone]
+    cands = [res.candidates[i] for i in ids]
+    def facing(sn):  # a cylinder's axis; a plane receiver's normal
+        return sn.up if sn.spec.name in ("cylindrical", "semicylindrical") else sn.normal
+
+    if scene is None or not all(abs(abs(float(facing(c.sensor)[2])) - 1.0) < 1e-6 for c in cands):
+        return None
+    prims = sorted({c.prim for c in cands if c.prim})
+    if not prims:
+        return None
+    return plan_of_zone(scene, prims, float(np.median([c.position[2] for c in cands])))
+
+
+def dropped_in_zone(res, zone: str) -> np.ndarray:
+    """Positions (N, 3) of the zone's set's points dropped inside furniture, within the zone's region."""
+    z = next(z for z in res.study.zone if z.name == zone)
+    cs = next(s for s in res.sets if s.name == z.candidates)
+    pts = [p for p in getattr(cs, "dropped_points", [])
+           if z.region is None or (z.region[0] <= p[0] <= z.region[2] and z.region[1] <= p[1] <= z.region[3])]  # fmt: skip
+    return np.array(pts).reshape(-1, 3)
+
+
 def heat_map_png(res, zone: str) -> bytes:
-    """PNG of one zone's readings, a panel per scenario (up to :data:`MAX_PANELS`),
-    world x and y in metres on the axes, the chosen sensors marked (×)."""
+    """PNG of one zone's readings, a panel per scenario (up to :data:`MAX_PANELS`).
+
+    Each panel has its own colour scale (``[output] heat_map_scale =
+    "per_scenario"``, the default: an evening at 50 lx and a sunny
+    afternoon at 5,000 lx both show their pattern) or all share one
+    logarithmic scale (``"log"``); world x and y in metres on the axes; the
+    room's walls (dark grey), openings (blue) and furniture (brown) of
+    :func:`zone_plan`; the chosen sensors (red ×) and the points dropped
+    inside furniture (grey +)."""
+    from matplotlib.colors import LogNorm, Normalize
     from matplotlib.figure import Figure
 
     ch = 1 if res.study.light_units == "photometric" else 0
@@ -125,39 +251,70 @@ def heat_map_png(res, zone: str) -> bytes:
     xy = np.array([res.candidates[i].position[:2] for i in ids])
     scen = res.scenarios[:MAX_PANELS]
     vals = res.mean[: len(scen), ids, ch]
+    log = getattr(res.study.output, "heat_map_scale", "per_scenario") == "log"
     ncol = min(4, len(scen))
     nrow = math.ceil(len(scen) / ncol)
-    fig = Figure(figsize=(2.6 * ncol + 1.2, 2.3 * nrow + 0.5), dpi=80)
-    fig.subplots_adjust(left=0.06, right=0.86, bottom=0.08, top=0.9, wspace=0.35, hspace=0.6)
+    fig = Figure(figsize=(3.0 * ncol + (1.2 if log else 0.3), 2.5 * nrow + 1.0), dpi=80)
+    fig.subplots_adjust(left=0.06, right=0.86 if log else 0.95, bottom=0.1, top=1.0 - 0.95 / (2.5 * nrow + 1.0), wspace=0.55, hspace=0.75)
     axes = fig.subplots(nrow, ncol, squeeze=False)
-    vmax = float(vals.max()) if vals.size and vals.max() > 0 else 1.0
+    pos_vals = vals[vals > 0]
+    shared = None
+    if log and pos_vals.size:
+        shared = LogNorm(vmin=float(pos_vals.min()), vmax=float(pos_vals.max()) if pos_vals.max() > pos_vals.min() else float(pos_vals.min()) * 10)
     chosen = [] if res.placement is None else res.placement.chosen
     index = {c.sensor.name: c for c in res.candidates}
+    plan = zone_plan(res, zone)
+    dropped = dropped_in_zone(res, zone)
     lo, hi = xy.min(axis=0), xy.max(axis=0)
+    unit = "lx" if ch == 1 else "W/m²"
     im = None
     for k, ax in enumerate(axes.flat):
         if k >= len(scen):
             ax.set_visible(False)
             continue
-        r = _raster(xy, vals[k])
-        if r is not None:
-            im = ax.imshow(r[0], origin="lower", extent=r[1], cmap="viridis", vmin=0.0, vmax=vmax, interpolation="nearest")
+        v = vals[k]
+        if shared is not None:
+            norm = shared
         else:
-            im = ax.scatter(xy[:, 0], xy[:, 1], c=vals[k], cmap="viridis", vmin=0.0, vmax=vmax, marker="s", s=30, linewidths=0)
+            vmax = float(v.max()) if v.size and v.max() > 0 else 1.0
+            norm = Normalize(vmin=min(0.0, float(v.min())), vmax=vmax)
+        r = _raster(xy, v)
+        if r is not None:
+            im = ax.imshow(np.where(r[0] > 0, r[0], np.nan) if shared is not None else r[0], origin="lower", extent=r[1],
+                           cmap="viridis", norm=norm, interpolation="nearest")  # fmt: skip
+        else:
+            im = ax.scatter(xy[:, 0], xy[:, 1], c=v, cmap="viridis", norm=norm, marker="s", s=30, linewidths=0)
+        if plan is not None:
+            for seg in plan.walls:
+                ax.plot(seg[:, 0], seg[:, 1], color="0.25", lw=1.6, solid_capstyle="butt")
+            for line in plan.openings:
+                ax.plot(line[:, 0], line[:, 1], color="tab:blue", lw=2.2)
+            for line in plan.furniture:
+                ax.plot(line[:, 0], line[:, 1], color="saddlebrown", lw=0.8)
+        if len(dropped):
+            ax.plot(dropped[:, 0], dropped[:, 1], "+", color="0.5", markersize=5, mew=1)
         for name in chosen:
             p = index[name].position
             if lo[0] - 1 <= p[0] <= hi[0] + 1 and lo[1] - 1 <= p[1] <= hi[1] + 1:
                 ax.plot(p[0], p[1], marker="x", color="red", markersize=7, mew=2)
         f = res.figures[(zone, scen[k].name)]
-        ax.set_title(f"{scen[k].name}\nmean {f.mean:.0f}, U0 {f.u0:.2f}", fontsize=6)
+        ax.set_title(f"{scen[k].name}\nmean {f.mean:.0f} {unit}, U0 {f.u0:.2f}", fontsize=6)
         ax.tick_params(labelsize=6)
         ax.set_xlabel("x (m)", fontsize=6)
         ax.set_ylabel("y (m)", fontsize=6)
-    unit = "lx" if ch == 1 else "W/m²"
-    cax = fig.add_axes((0.89, 0.15, 0.02, 0.7))
-    fig.colorbar(im, cax=cax).set_label(f"illuminance ({unit})", fontsize=7)
+        ax.set_aspect("equal", adjustable="datalim")
+        if shared is None:
+            cb = fig.colorbar(im, ax=ax, fraction=0.046, pad=0.04)
+            cb.ax.tick_params(labelsize=5)
+    if shared is not None and im is not None:
+        cax = fig.add_axes((0.89, 0.15, 0.02, 0.65))
+        fig.colorbar(im, cax=cax).set_label(f"illuminance ({unit}, log scale)", fontsize=7)
     more = f" (first {MAX_PANELS} of {len(res.scenarios)} scenarios)" if len(res.scenarios) > MAX_PANELS else ""
-    fig.suptitle(f"zone {zone}{more}; x = chosen sensors", fontsize=8)
+    scale = "one log scale" if shared is not None else f"each panel its own scale ({unit})"
+    key = "x chosen sensors" + (", + dropped inside furniture" if len(dropped) else "")
+    if plan is not None:
+        key += "; walls grey, openings blue, furniture brown"
+    fig.suptitle(f"zone {zone}{more}; {scale}\n{key}", fontsize=7)
     buf = io.BytesIO()
     fig.savefig(buf, format="png", metadata={"Software": None})
     return buf.getvalue()
@@ -179,7 +336,7 @@ def record(res, versions: dict) -> dict:
         "zones": {z: len(ix) for z, ix in res.zones.items()},
         "chunks": {"total": res.chunks_total, "computed": res.chunks_computed, "loaded": res.chunks_loaded,
                    "wall_s": res.chunk_wall_s},  # fmt: skip
-        "compute": {"mode": res.mode, "workers": res.workers},
+        "compute": {"mode": res.mode, "workers": res.workers, "sensor_block": res.sensor_block},
         "timings_s": res.timings_s,
         "cost": cost(res),
         "reference_run": res.reference,
@@ -189,6 +346,7 @@ def record(res, versions: dict) -> dict:
         "placement": None if pl is None else {
             "objective": pl.objective, "zones": pl.zones, "candidates": pl.candidates, "scenarios": pl.scenarios,
             "evaluations": pl.evaluations, "replicates": pl.replicates, "assignment": pl.assignment, "baseline_score": pl.baseline,
+            "score_unit": "correlation" if pl.objective == "correlation" else "fraction (x 100 in placement.csv, report.html and the closing note: percent)",
             "steps": [{"k": s.k, "sensor": s.sensor, "gain": s.gain, "gain_stderr": s.gain_se, "score": s.score,
                        "score_stderr": s.score_se, "runner_up": s.runner_up, "lead": s.lead, "lead_stderr": s.lead_se,
                        "separable": s.separable} for s in pl.steps],
@@ -232,11 +390,21 @@ def cost(res) -> dict:
 
 
 def write_outputs(res, versions: dict) -> list[Path]:
-    """Write the CSVs, heat maps and record into ``res.out_dir``; returns the paths."""
+    """Write the CSVs, heat maps, report page and record into ``res.out_dir``; returns the paths."""
+    from simulator.study.html_report import report_html
+
     d = res.out_dir
     files = {d / "readings.csv": long_csv(res).encode(), d / "summary.csv": summary_csv(res).encode()}
+    if res.placement is not None:
+        files[d / "placement.csv"] = placement_csv(res).encode()
+    if getattr(res, "areas", None):
+        files[d / "areas.csv"] = areas_csv(res).encode()
+    res.heat_map_cache = {}
     for z in res.study.zone:
-        files[d / f"heatmap_{_safe(z.name)}.png"] = heat_map_png(res, z.name)
+        png = heat_map_png(res, z.name)
+        res.heat_map_cache[z.name] = png
+        files[d / f"heatmap_{_safe(z.name)}.png"] = png
+    files[d / "report.html"] = report_html(res).encode()
     res.files = sorted(p.name for p in files) + ["study.json"]
     files[d / "study.json"] = (json.dumps(record(res, versions), indent=1, default=json_default) + "\n").encode()
     for p, data in files.items():

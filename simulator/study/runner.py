@@ -33,6 +33,8 @@ class StudyResult:
     trace_groups: list
     mean: np.ndarray  #: (J, S, 2) readings per scenario and sensor
     stderr: np.ndarray  #: (J, S, 2)
+    samples: np.ndarray  #: (J, S) samples per sensor of the pass each scenario was recombined from
+    methods: list  #: (J) lists of S method names
     zones: dict  #: zone name -> indices into candidates
     figures: dict  #: (zone, scenario) -> ZoneFigures
     checks: dict  #: (zone, scenario) -> {target: pass|fail|unsure}
@@ -42,6 +44,7 @@ class StudyResult:
     chunks_loaded: int = 0
     mode: str = "inprocess"
     workers: int = 1
+    sensor_block: int = 0  #: sensors per chunk used
     timings_s: dict = field(default_factory=dict)
     chunk_wall_s: dict = field(default_factory=dict)
     chunk_trace_s: dict = field(default_factory=dict)  #: (trace key, block) -> seconds tracing
@@ -49,6 +52,8 @@ class StudyResult:
     reference: dict | None = None
     warnings: list = field(default_factory=list)
     files: list = field(default_factory=list)
+    areas: list = field(default_factory=list)  #: simulator.study.areas.AreaRow, EN 12464-1 areas
+    scene: object | None = None  #: the stage as read (geometry for the heat maps' plans); not in any output file
 
 
 def zone_members(study: Study, sets, candidates, label: str = "") -> dict[str, np.ndarray]:
@@ -173,8 +178,12 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     zones = zone_members(study, sets, candidates, label)
     t_setup = time.perf_counter()
 
-    specs = make_chunks(tgs, sensors, groups, stage, study.light_units, _sim_dict(study), study.seed, study.compute.sensor_block,
-                        sky_split)  # fmt: skip
+    block = study.compute.sensor_block
+    if block == "auto":  # from the study's size alone, so chunks (and bytes) are the same in every mode
+        from simulator.study.blocks import auto_block
+
+        block = auto_block(len(sensors), study.simulation.samples)
+    specs = make_chunks(tgs, sensors, groups, stage, study.light_units, _sim_dict(study), study.seed, block, sky_split)
     store = ChunkStore(out_dir)
     results: dict[str, dict] = {}
     for s in specs:
@@ -207,6 +216,8 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     n_j, n_s = len(scenarios), len(sensors)
     mean = np.zeros((n_j, n_s, 2))
     stderr = np.zeros((n_j, n_s, 2))
+    samples = np.zeros((n_j, n_s), np.int64)
+    methods = [[""] * n_s for _ in range(n_j)]
     by_tg: dict[str, list] = {}
     for s in specs:
         by_tg.setdefault(s.trace_key, []).append(s)
@@ -216,6 +227,9 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
             m, e = gr.combine(sc.levels)
             ids = np.asarray(s.sensor_ids)
             mean[j, ids], stderr[j, ids] = m, e
+            samples[j, ids] = np.asarray(results[s.id]["samples"])[0]
+            for i, name in zip(s.sensor_ids, gr.methods):
+                methods[j][i] = name
 
     ch = 1 if study.light_units == "photometric" else 0
     figures, checks = {}, {}
@@ -226,6 +240,9 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
             figures[(z.name, sc.name)] = f
             checks[(z.name, sc.name)] = compliance(f, dict(z.targets))
 
+    from simulator.study.areas import area_rows
+
+    areas = area_rows(study, sets, candidates, scenarios, mean, stderr, label)
     placement = None
     if study.placement is not None:
         pl = study.placement
@@ -264,11 +281,11 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     trace_s = sum(float(np.sum(results[s.id]["trace_s"])) for s in specs)
     return StudyResult(
         study=study, path=path, out_dir=out_dir, candidates=candidates, sets=sets, scenarios=scenarios, trace_groups=tgs,
-        mean=mean, stderr=stderr, zones=zones, figures=figures, checks=checks, placement=placement, chunks_total=len(specs),
-        chunks_computed=computed, chunks_loaded=loaded, mode=used_mode, workers=n_workers,
+        mean=mean, stderr=stderr, samples=samples, methods=methods, zones=zones, figures=figures, checks=checks, placement=placement, chunks_total=len(specs),
+        chunks_computed=computed, chunks_loaded=loaded, mode=used_mode, workers=n_workers, sensor_block=int(block),
         timings_s={"setup": t_setup - t0, "chunks": t_traced - t_chunks, "trace_in_chunks": trace_s,
                    "analysis": t_analysis - t_traced, "reference_run": t_end - t_analysis, "total": t_end - t0},
-        chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings,
+        chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings, scene=base, areas=areas,
         chunk_trace_s={(s.trace_key, s.block): float(np.sum(results[s.id]["trace_s"])) for s in specs},
         chunk_trace_cpu_s={(s.trace_key, s.block): float(results[s.id].get("trace_cpu_s", 0.0)) for s in specs},
     )  # fmt: skip

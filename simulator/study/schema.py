@@ -27,7 +27,7 @@ Schema
     workers = 0                        # LocalCluster workers; 0 = one per core
     scheduler = "tcp://host:8786"      # a running dask scheduler (optional)
     retries = 2                        # re-runs of a failed chunk
-    sensor_block = 64                  # sensors per chunk
+    sensor_block = "auto"              # sensors per chunk, or "auto": from the study's size
 
     [[candidates]]                     # a grid on prims ...
     name = "workplane"
@@ -95,6 +95,7 @@ Schema
 
     [output]
     dir = "../out/office_study"        # default: "<study stem>.out/" beside the file
+    heat_map_scale = "per_scenario"    # or "log": one logarithmic scale for all panels
 """
 
 from __future__ import annotations
@@ -142,7 +143,7 @@ class ComputeSpec(_Model):
     workers: int = Field(0, ge=0)
     scheduler: str | None = None
     retries: int = Field(2, ge=0, le=20)
-    sensor_block: int = Field(64, ge=1)
+    sensor_block: Union[Literal["auto"], Annotated[int, Field(ge=1)]] = "auto"  #: sensors per chunk (simulator.study.blocks)
 
     @field_validator("scheduler")
     @classmethod
@@ -154,8 +155,9 @@ class ComputeSpec(_Model):
 
 class CandidateSpec(_Model):
     name: str = Field(min_length=1)
-    kind: Literal["irradiance", "photosensor"] = "irradiance"
+    kind: Literal["irradiance", "photosensor", "cylindrical", "semicylindrical"] = "irradiance"
     half_angle_deg: float = Field(30.0, gt=0.0, lt=90.0)
+    facing: Vec3 | None = None  #: semicylindrical: where the half cylinders face (across the axis)
     on: list[str] | None = None
     height_m: float = 0.0
     spacing_m: Union[float, str] = "en12464"
@@ -175,6 +177,10 @@ class CandidateSpec(_Model):
 
     @model_validator(mode="after")
     def _one_source(self):
+        if self.kind == "semicylindrical" and self.facing is None:
+            raise ValueError("a semicylindrical set needs 'facing' (the direction the half cylinders face)")
+        if self.kind != "semicylindrical" and self.facing is not None:
+            raise ValueError("facing is for kind = \"semicylindrical\"")
         if (self.on is None) == (self.points is None):
             raise ValueError("give either 'on' (prims to grid) or 'points' (an explicit list), not both or neither")
         if self.points is not None:
@@ -269,6 +275,37 @@ class ZoneSpec(_Model):
         return v
 
 
+class AreaSpec(_Model):
+    """An EN 12464-1 area (:mod:`simulator.study.areas`)."""
+
+    name: str = Field(min_length=1)
+    kind: Literal["task", "walls", "ceiling", "cylindrical"] = "task"
+    candidates: str
+    task: tuple[float, float, float, float] | None = None  #: kind task: x0, y0, x1, y1 (m)
+    region: tuple[float, float, float, float] | None = None  #: other kinds: the candidates inside it (default all)
+    required_lx: float | None = Field(None, gt=0.0)  #: task: the task's Ē_m; others: default from the standard
+    u0: float | None = Field(None, gt=0.0, le=1.0)  #: task: the task's U0; others: default 0.10
+    surround_m: float = Field(0.5, ge=0.5)
+    background_m: float = Field(3.0, ge=3.0)
+    space: Literal["general", "office"] = "general"  #: walls/ceiling: 50/30 lx, or 75/50 lx in offices, education, health care
+    maintenance_factor: float = Field(1.0, gt=0.0, le=1.0)
+    horizontal: str | None = None  #: cylindrical: a horizontal set at the same points, for E_z/E_h
+
+    @model_validator(mode="after")
+    def _fields(self):
+        for key, v in (("task", self.task), ("region", self.region)):
+            if v is not None and not (v[0] < v[2] and v[1] < v[3]):
+                raise ValueError(f"{key}: expected [x0, y0, x1, y1] with x0 < x1 and y0 < y1")
+        if self.kind == "task":
+            if self.task is None or self.required_lx is None or self.u0 is None:
+                raise ValueError("a task area needs task = [x0, y0, x1, y1], required_lx and u0 (from the standard's table for the task)")
+        elif self.task is not None:
+            raise ValueError(f"task is for kind = \"task\", not {self.kind!r} (give region)")
+        if self.horizontal is not None and self.kind != "cylindrical":
+            raise ValueError("horizontal is for kind = \"cylindrical\"")
+        return self
+
+
 class PlacementSpec(_Model):
     k: int = Field(1, ge=1, le=64)
     candidates: list[str] = Field(min_length=1)
@@ -279,6 +316,7 @@ class PlacementSpec(_Model):
 
 class OutputSpec(_Model):
     dir: str | None = None
+    heat_map_scale: Literal["per_scenario", "log"] = "per_scenario"
 
 
 class Study(_Model):
@@ -293,6 +331,7 @@ class Study(_Model):
     group: list[GroupSpec] = Field(min_length=1)
     scenario: list[ScenarioSpec] = Field(min_length=1)
     zone: list[ZoneSpec] = []
+    area: list[AreaSpec] = []
     placement: PlacementSpec | None = None
     output: OutputSpec = OutputSpec()
 
@@ -321,6 +360,12 @@ class Study(_Model):
         for i, z in enumerate(self.zone):
             if z.candidates not in cands:
                 raise _RefError(f"zone[{i}].candidates", f"no [[candidates]] named {z.candidates!r}{_hint(z.candidates, cands)}")
+        unique(self.area, "area")
+        for i, a in enumerate(self.area):
+            for key in ("candidates", "horizontal"):
+                c = getattr(a, key)
+                if c is not None and c not in cands:
+                    raise _RefError(f"area[{i}].{key}", f"no [[candidates]] named {c!r}{_hint(c, cands)}")
         if self.placement is not None:
             for j, c in enumerate(self.placement.candidates):
                 if c not in cands:

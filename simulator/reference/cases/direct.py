@@ -193,6 +193,24 @@ def dome(ctx: CaseContext, s: Sensor, ch: int) -> float:
     raise no_closed_form(ctx, s, "radiance meter looking at the ground")
 
 
+def cylindrical(ctx: CaseContext, s: Sensor, ch: int) -> float:
+    """Cylindrical and semi-cylindrical receivers. Under an isotropic point source:
+    E_z = I·sinθ/(π·d²), E_sc = I·sinθ·(1 + cos φ)/(π·d²); under a uniform sky over a
+    black ground, vertical axis: πL/2 for both (docs/REFERENCES.md §Cylindrical illuminance)."""
+    if s.kind not in (SensorKind.CYLINDRICAL, SensorKind.SEMICYLINDRICAL):
+        raise no_closed_form(ctx, s, "not a cylindrical receiver")
+    kinds = {l.kind for l in ctx.scene.lights}
+    if kinds == {LightKind.DOME}:
+        l = one_light(ctx.scene, LightKind.DOME)
+        if not _ground_is_black_plane(ctx.scene) or s.position[2] <= 0 or abs(abs(s.up[2]) - 1.0) > 1e-12:
+            raise no_closed_form(ctx, s, "needs a vertical axis above a black ground")
+        return float(cf.dome_cylindrical_irradiance(l.emission[ch]))
+    l = one_light(ctx.scene, LightKind.POINT)
+    if s.kind == SensorKind.CYLINDRICAL:
+        return float(cf.cylindrical_point_irradiance(l.emission[ch], l.position, s.position, s.up))
+    return float(cf.semicylindrical_point_irradiance(l.emission[ch], l.position, s.position, s.normal, s.up))
+
+
 def _overcast_rows(ctx: CaseContext) -> tuple:
     """(dome light, its map's row values) for a sky map uniform in azimuth,
     whose lat-long pole the stage turned to the zenith (+Z)."""
