@@ -314,7 +314,7 @@ class AnnualSpec(_Model):
     udi_lx: tuple[float, float] = (100.0, 2000.0)
     en17037_lx: tuple[float, float] = (300.0, 100.0)
     replicates: int = Field(64, ge=8, le=4096)
-    sun_patches: int = Field(3, ge=1, le=8)        # nearest patches the sun's interreflected light is spread over
+    sun_patches: int = Field(4, ge=1, le=8)        # nearest patches the sun's interreflected light is spread over
 
     @model_validator(mode="after")
     def _ranges(self):
