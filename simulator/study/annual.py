@@ -149,6 +149,9 @@ class AnnualResult:
     notes: list = field(default_factory=list)
     chunks_total: int = 0
     chunks_computed: int = 0
+    coefficients: Coefficients | None = None
+    sky_levels: np.ndarray | None = None  #: (H, 146) d_h
+    zones: dict = field(default_factory=dict)  #: zone -> candidate indices
 
 
 def _coefficients(specs_dir, specs_ind, specs_lamp, results, n_s: int, lamp_names: list) -> Coefficients:
@@ -338,5 +341,6 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
                         timings_s={"weather_and_skies": t_weather - t0, "chunks": t_traced - t_weather, "hourly": t_hourly - t_traced,
                                    "metrics_and_control": t_end - t_hourly, "total": t_end - t0},
                         cpu_s={"total": time.process_time() - c0, "trace_in_chunks": trace_cpu, "sun_shadow_rays": c_sun},
-                        notes=notes, chunks_total=len(specs), chunks_computed=computed)  # fmt: skip
+                        notes=notes, chunks_total=len(specs), chunks_computed=computed, coefficients=co, sky_levels=d,
+                        zones=zones)  # fmt: skip
 
