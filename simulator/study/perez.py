@@ -229,7 +229,7 @@ def hour_skies(w, hours: np.ndarray, illuminance: str = "file", n_sub: int = 8, 
     import pandas as pd
     from pvlib.irradiance import get_extra_radiation
 
-    i0 = np.asarray(get_extra_radiation(pd.DatetimeIndex(w.centre[hours])), np.float64)
+    i0 = np.asarray(get_extra_radiation(np.asarray(pd.DatetimeIndex(w.centre[hours]).day_of_year, np.float64)), np.float64)
     eps, delta = clearness_brightness(dhi, dni, zen, i0)
     if illuminance == "file":
         if w.dhi_lx is None or w.dni_lx is None:
