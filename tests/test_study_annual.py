@@ -300,30 +300,52 @@ def _instant(res, base, k, sensors, samples, seed):
     return r.mean[:, 1], r.stderr[:, 1]
 
 
-def test_recombined_hours_agree_with_single_instant_runs(office):
-    """24 hours over four days (low sun at 06:30 and 18:30 included) on five work-plane sensors: the sky-only
-    hours within 4 standard errors every one, all hours at least 95% of readings (the interreflected sun
-    is spread over the patches around it, an approximation; see README "A year of daylight")."""
+def _agreement(res, hours, samples=256):
+    """|z| of every (hour, sensor) of single-instant runs against the recombination, and of the sky-only hours."""
     from simulator.scene.usd import load_stage
 
-    study, p, res = office
     base = load_stage(ROOT / "stages" / "office.usda", light_units="photometric", radiometric_spectrum="E")
-    wp = [i for i, c in enumerate(res.sensors) if c.set_name == "wp"]
-    sensors = [res.sensors[i].sensor for i in wp]
-    el = res.weather.sun_elevation_deg[res.rows]
-    lit = np.nonzero(res.skies.dhi_lx > 0)[0]
-    hours = list(lit[::2][:24])
-    assert len(hours) >= 20 and any(0 < el[k] < 5 for k in hours) and any(el[k] > 30 for k in hours)
+    ids = [i for i, c in enumerate(res.sensors) if c.set_name in ("wp", "ceiling")]
+    sensors = [res.sensors[i].sensor for i in ids]
     z_all, z_sky = [], []
     for n, k in enumerate(hours):
-        m, e = _instant(res, base, k, sensors, 256, 100 + n)
-        z = (m - res.mean[k, wp]) / np.sqrt(e**2 + res.stderr[k, wp] ** 2)
+        m, e = _instant(res, base, k, sensors, samples, 100 + n)
+        z = np.abs(m - res.mean[k, ids]) / np.sqrt(e**2 + res.stderr[k, ids] ** 2)
         z_all += list(z)
         if res.skies.dni_lx[k] == 0:
             z_sky += list(z)
-    z_all, z_sky = np.abs(np.array(z_all)), np.abs(np.array(z_sky))
+    return np.array(z_all), np.array(z_sky)
+
+
+def test_recombined_hours_agree_with_single_instant_runs(office):
+    """24 hours over four days (low sun at 06:30 and 18:30 included) on five work-plane sensors and two
+    downward ceiling photosensors: every sky-only hour within 4 standard errors, all hours in at least
+    95% of readings (the interreflected sun is spread over the 4 patches around it, an approximation;
+    see README "A year of daylight")."""
+    _, _, res = office
+    el = res.weather.sun_elevation_deg[res.rows]
+    hours = list(np.nonzero(res.skies.dhi_lx > 0)[0][::2][:24])
+    assert len(hours) >= 20 and any(0 < el[k] < 5 for k in hours) and any(el[k] > 30 for k in hours)
+    z_all, z_sky = _agreement(res, hours)
     assert len(z_sky) >= 10 and np.all(z_sky <= 4.0), z_sky.max()
     assert np.mean(z_all <= 4.0) >= 0.95, np.sort(z_all)[-8:]
+
+
+def test_a_traced_sun_agrees_with_single_instant_runs_every_sunny_hour(tmp_path):
+    """``sun_indirect = "traced"``: the sun traced at binned positions (6 degrees), its exact direct part
+    per hour: 16 sunny hours, low sun included, all within 4 standard errors."""
+    text = OFFICE.format(stage=ROOT / "stages" / "office.usda", weather=_days(tmp_path)).replace(
+        "replicates = 16", 'replicates = 16\nsun_indirect = "traced"\nsun_group = "sun"').replace(
+        "[[zone]]", '[[group]]\nname = "sun"\nlights = ["/Office/Sun"]\n[[zone]]', 1)  # fmt: skip
+    study, p = _study(tmp_path, text)
+    res = run_annual(study, p, tmp_path / "out", log=lambda m: None)
+    assert any("traced at" in n for n in res.notes)
+    el = res.weather.sun_elevation_deg[res.rows]
+    sunny = np.nonzero(res.skies.dni_lx > 1000)[0]
+    hours = list(sunny[:: max(1, len(sunny) // 16)][:16])
+    assert len(hours) >= 12 and any(el[k] < 15 for k in hours)
+    z_all, _ = _agreement(res, hours)
+    assert np.all(z_all <= 4.0), np.sort(z_all)[-5:]
 
 
 def test_a_photosensor_on_the_work_plane_keeps_its_zone_at_target_every_hour(office):
@@ -381,6 +403,7 @@ def test_the_switched_control_holds_its_state_inside_the_deadband():
     ('groups = ["rows"]\nphotosensor = "onplane[0]"', 'groups = ["sky"]\nphotosensor = "onplane[0]"', "control[0].groups[0]: no lamp [[group]]"),
     ('model = "switched"', 'model = "pid"', "control[1].model"),
     ('replicates = 16', 'occupied_h = [18, 8]', "occupied_h: expected"),
+    ('replicates = 16', 'sun_indirect = "traced"', "annual.sun_group: sun_indirect = \"traced\" needs sun_group"),
 ])  # fmt: skip
 def test_annual_mistakes_are_one_line(tmp_path, old, new, message):
     text = OFFICE.format(stage=ROOT / "stages" / "office.usda", weather=tmp_path / "w.csv")

@@ -70,6 +70,8 @@ class Coefficients:
     lamp_cov: np.ndarray
     lamp_names: list
     samples: np.ndarray
+    sun: np.ndarray | None = None  #: (S, B) traced sun per bin less its exact direct part, for the authored sun
+    sun_var: np.ndarray | None = None  #: (S, B) its variance
 
 
 def sun_patch_levels(sun_dir: np.ndarray, sun_lx: np.ndarray, k: int, l_dome: float) -> np.ndarray:
@@ -95,16 +97,58 @@ def sky_levels_of(skies, l_dome: float, ground_reflectance: float) -> np.ndarray
     return d
 
 
-def hourly(co: Coefficients, d: np.ndarray, q: np.ndarray, sun_direct: np.ndarray, stderr: bool = True):
-    """Hourly readings (H, S) and their standard errors (see the module's Notes)."""
+def hourly(co: Coefficients, d: np.ndarray, q: np.ndarray, sun_direct: np.ndarray, stderr: bool = True,
+           sun_bin: np.ndarray | None = None, sun_scale: np.ndarray | None = None, cone: np.ndarray | None = None):  # fmt: skip
+    """Hourly readings (H, S) and their standard errors (see the module's Notes).
+
+    ``cone`` (S,) marks cone photosensors: their *direct* coefficients hold
+    the surfaces they see lit directly (the engine's direct component of a
+    radiance meter is its first hit's light), so the sun in patches ``q``
+    enters their direct coefficients too (and ``sun_direct`` holds only a
+    sun inside the cone). With ``sun_bin`` (H,) and ``sun_scale`` (H,): the
+    sun's light apart from ``sun_direct`` is the traced bin's coefficient
+    times the hour's E_n over the authored sun's (``q`` is then 0)."""
     dq = d + q
     mean = d @ co.dir.T + dq @ co.ind.T + sun_direct
+    if cone is not None and cone.any():
+        mean[:, cone] += q @ co.dir[cone].T
+    traced = sun_bin is not None and co.sun is not None
+    if traced:
+        on = sun_bin >= 0
+        mean[on] += co.sun[:, sun_bin[on]].T * sun_scale[on, None]
     if not stderr:
         return mean, None
     var = np.zeros_like(mean)
     for s in range(co.dir.shape[0]):
-        var[:, s] = np.sum((d @ co.dir_cov[s]) * d, axis=1) + np.sum((dq @ co.ind_cov[s]) * dq, axis=1)
+        dd = dq if (cone is not None and cone[s]) else d
+        var[:, s] = np.sum((dd @ co.dir_cov[s]) * dd, axis=1) + np.sum((dq @ co.ind_cov[s]) * dq, axis=1)
+    if traced:
+        var[on] += co.sun_var[:, sun_bin[on]].T * sun_scale[on, None] ** 2
     return mean, np.sqrt(np.maximum(var, 0.0))
+
+
+def sun_bins(sun_dir: np.ndarray, lit: np.ndarray, bin_deg: float) -> tuple[np.ndarray, list]:
+    """Each lit hour's sun-position bin (−1 where unlit) and each bin's traced sun ``(azimuth, elevation)``.
+
+    Bins: altitude bands ``bin_deg`` high from the horizon, each cut into
+    ``max(1, round(360·cos(mid-altitude)/bin_deg))`` equal azimuth bins; a
+    bin's sun is the normalised mean direction of its hours (so the traced
+    sun lies among them, at most about ``bin_deg``/√2 from any)."""
+    alt = np.degrees(np.arcsin(np.clip(sun_dir[:, 2], -1.0, 1.0)))
+    az = np.mod(np.degrees(np.arctan2(sun_dir[:, 0], sun_dir[:, 1])), 360.0)
+    band = np.clip((alt // bin_deg).astype(np.int64), 0, None)
+    n_az = np.maximum(1, np.round(360.0 * np.cos(np.radians((band + 0.5) * bin_deg)) / bin_deg)).astype(np.int64)
+    cell = band * 100000 + np.floor(az / (360.0 / n_az)).astype(np.int64) % n_az
+    keys = sorted(set(cell[lit].tolist()))
+    index = {k: i for i, k in enumerate(keys)}
+    out = np.full(len(sun_dir), -1, np.int64)
+    out[lit] = [index[c] for c in cell[lit]]
+    suns = []
+    for i in range(len(keys)):
+        m = sun_dir[out == i].mean(axis=0)
+        m /= np.linalg.norm(m)
+        suns.append((float(np.mod(np.degrees(np.arctan2(m[0], m[1])), 360.0)), float(np.degrees(np.arcsin(m[2])))))
+    return out, suns
 
 
 def _sqrt_psd(c: np.ndarray) -> np.ndarray:
@@ -123,8 +167,9 @@ def replicate_years(co: Coefficients, replicates: int, seed: int):
         zi = rng.standard_normal(co.ind.shape)
         zl = rng.standard_normal(co.lamp.shape)
         lamp = co.lamp + (np.einsum("sgk,sk->sg", al, zl) if al is not None else 0.0)
+        sun = None if co.sun is None else co.sun + np.sqrt(np.maximum(co.sun_var, 0.0)) * rng.standard_normal(co.sun.shape)
         yield Coefficients(co.dir + np.einsum("spk,sk->sp", ad, zd), co.dir_cov, co.ind + np.einsum("spk,sk->sp", ai, zi), co.ind_cov,
-                           lamp, co.lamp_cov, co.lamp_names, co.samples)  # fmt: skip
+                           lamp, co.lamp_cov, co.lamp_names, co.samples, sun, co.sun_var)  # fmt: skip
 
 
 @dataclass
@@ -188,7 +233,7 @@ def _control_pools(study, cands, names_index: dict, label: str) -> list[list[int
 def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None = None, workers: int | None = None,
                scheduler: str | None = None) -> AnnualResult:  # fmt: skip
     """Run (or resume) the ``[annual]`` part of a study; outputs are written by :mod:`simulator.study.annual_outputs`."""
-    from simulator.scene.model import LightKind
+    from simulator.scene.model import LightKind, SensorKind
     from simulator.scene.usd import load_stage
     from simulator.study import control as CT
     from simulator.study.candidates import build_candidates
@@ -199,6 +244,7 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
     from simulator.study.perez import hour_skies
     from simulator.study.runner import _sim_dict, zone_members
     from simulator.study.scenarios import TraceGroup, check_split_groups, resolve_groups
+    from simulator.study.sun import sun_direction
     from simulator.study.sunlight import direct_sun
 
     a = study.annual
@@ -244,6 +290,21 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
            (TraceGroup("annual;sky;indirect", {}, None, [], [a.sky_group]), {**sim, "component": "indirect"})]  # fmt: skip
     if lamp_groups:
         tgs.append((TraceGroup("annual;lamps", {}, None, [], lamp_groups), sim))
+    sun_bin = sun_scale = None
+    n_fixed = len(tgs)
+    if a.sun_indirect == "traced":
+        distant = [l for l in base.lights if l.kind == LightKind.DISTANT]
+        if len(distant) != 1 or groups[a.sun_group] != [distant[0].name]:
+            raise UserError(f"{label}: annual.sun_group: group {a.sun_group!r} must hold the stage's one DistantLight "
+                            f"(the stage has {len(distant)})")  # fmt: skip
+        sl = distant[0]
+        e_auth = float(sl.emission[1]) if sl.half_angle == 0.0 else float(sl.emission[1]) * math.pi * math.sin(sl.half_angle) ** 2
+        lit_h = skies.dni_lx > 0
+        sun_bin, bin_suns = sun_bins(skies.sun_dir, lit_h, a.sun_bin_deg)
+        sun_scale = skies.dni_lx / e_auth
+        for az, el in bin_suns:
+            tgs.append((TraceGroup(f"annual;sun;{az:.6f},{el:.6f}", {}, (az, el), [], [a.sun_group]), sim))
+        notes.append(f"interreflected sun traced at {len(bin_suns)} sun positions (bins of {a.sun_bin_deg:g} deg)")
     spec_lists = [make_chunks([tg], sensors, groups, stage, study.light_units, sd, study.seed, study.compute.sensor_block, sky_split)
                   for tg, sd in tgs]  # fmt: skip
     specs = [s for lst in spec_lists for s in lst]
@@ -259,15 +320,30 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
         computed += 1
     t_traced = time.perf_counter()
     co = _coefficients(spec_lists[0], spec_lists[1], spec_lists[2] if lamp_groups else [], results, len(sensors), lamp_groups)
+    if sun_bin is not None:
+        from simulator.study.chunks import readings_of
+
+        co.sun = np.zeros((len(sensors), len(spec_lists) - n_fixed))
+        co.sun_var = np.zeros_like(co.sun)
+        for b, lst in enumerate(spec_lists[n_fixed:]):
+            for s_ in lst:
+                gr = readings_of(results[s_.id])
+                ids = np.asarray(s_.sensor_ids)
+                co.sun[ids, b] = gr.mean[0, :, 1]
+                co.sun_var[ids, b] = gr.stderr[0, :, 1] ** 2
+        # the passes trace the whole sun; its exact direct part at the bin's own sun comes off (it is added per hour)
+        bin_dirs = np.stack([sun_direction(az, el) for az, el in bin_suns])
+        co.sun -= direct_sun(sensors, base, bin_dirs, np.full(len(bin_suns), e_auth)).T
     trace_cpu = sum(float(results[s.id].get("trace_cpu_s", 0.0)) for s in specs)
 
     # every hour
     d = sky_levels_of(skies, l_dome, a.ground_reflectance)
-    q = sun_patch_levels(skies.sun_dir, skies.dni_lx, a.sun_patches, l_dome)
+    q = sun_patch_levels(skies.sun_dir, skies.dni_lx, a.sun_patches, l_dome) if sun_bin is None else np.zeros_like(d)
     c_sun = time.process_time()
     sun = direct_sun(sensors, base, skies.sun_dir, skies.dni_lx)
+    cone = np.array([c.sensor.kind == SensorKind.RADIANCE for c in cands])
     c_sun = time.process_time() - c_sun
-    mean, stderr = hourly(co, d, q, sun)
+    mean, stderr = hourly(co, d, q, sun, sun_bin=sun_bin, sun_scale=sun_scale, cone=cone if sun_bin is None else None)
     ov = np.zeros(SP.N_PATCHES + 1)
     ov[: SP.N_PATCHES] = SP.sky_weights("overcast", None, _DF_SKY_LX / l_dome)
 
@@ -304,7 +380,7 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
     reps_m = {z: {k: [] for k in m0[z]} for z in m0}
     reps_c = [[[] for _ in pools[i]] for i in range(len(study.control))]
     for rc in replicate_years(co, a.replicates, derive_seed(study.seed, "annual", "replicates")):
-        e_r, _ = hourly(rc, d, q, sun, stderr=False)
+        e_r, _ = hourly(rc, d, q, sun, stderr=False, sun_bin=sun_bin, sun_scale=sun_scale, cone=cone if sun_bin is None else None)
         m_r, c_r = figures(e_r, rc, df_of(rc))
         for z in m_r:
             for k, v in m_r[z].items():

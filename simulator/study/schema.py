@@ -315,6 +315,9 @@ class AnnualSpec(_Model):
     en17037_lx: tuple[float, float] = (300.0, 100.0)
     replicates: int = Field(64, ge=8, le=4096)
     sun_patches: int = Field(4, ge=1, le=8)        # nearest patches the sun's interreflected light is spread over
+    sun_indirect: Literal["patches", "traced"] = "patches"  # or traced: the sun traced at binned positions
+    sun_group: str | None = Field(None, min_length=1)       # traced: a [[group]] holding the stage's one DistantLight
+    sun_bin_deg: float = Field(6.0, ge=1.0, le=30.0)        # traced: size of the sun-position bins
 
     @model_validator(mode="after")
     def _ranges(self):
@@ -401,6 +404,11 @@ def _check_annual(study: "Study", groups: set, split: set, zones: set, cands: se
     a = study.annual
     if a is not None and a.sky_group not in split:
         raise _RefError("annual.sky_group", f"no [[group]] named {a.sky_group!r} with sky = \"tregenza\"{_hint(a.sky_group, split)}")
+    if a is not None and a.sun_indirect == "traced":
+        if a.sun_group is None:
+            raise _RefError("annual.sun_group", "sun_indirect = \"traced\" needs sun_group (a [[group]] holding the DistantLight)")
+        if a.sun_group not in groups or a.sun_group in split:
+            raise _RefError("annual.sun_group", f"no lamp [[group]] named {a.sun_group!r}{_hint(a.sun_group, groups - split)}")
     if study.control and a is None:
         raise _RefError("control", "needs an [annual] table (control runs over the year's hours)")
     for i, c in enumerate(study.control):
