@@ -25,9 +25,15 @@ Method
    angle to a patch's centre, as Radiance's gendaymtx spreads it), at
    luminance w_p E_n / Ω_p: the sun's *interreflected* light comes from
    the indirect coefficients of the patches around it, its direct light is
-   never approximated. The interreflected sun is then the mean of that light
-   over a region of about one patch (12°) around the sun: the error this
-   leaves is measured against single-instant runs (tests, README).
+   never approximated. A cone photosensor's direct coefficients hold the
+   surfaces it sees lit directly (a radiance meter's direct component is
+   its first hit's light), so for it q_h enters them too:
+   E_h += q_hᵀ c^{dir}, and only a sun inside its cone is left to E^sun.
+   With ``sun_indirect = "traced"`` q_h = 0 and the stage's DistantLight is
+   traced at the mean sun of each bin of the year's sun positions
+   (:func:`sun_bins`); its exact direct light at that position is taken off
+   the bin's coefficient t_b, and hour h adds (E_n,h / E_n,authored)·t_b of
+   its bin (variance scaled alike).
 4. Annual metrics (:mod:`simulator.study.metrics`) and control
    (:mod:`simulator.study.control`) are functions of the hourly series. An
    hour's readings of one sensor share its coefficients, so errors are
