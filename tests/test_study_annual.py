@@ -468,3 +468,19 @@ def test_the_bundled_annual_study_reads_its_derived_weather():
     study, p = load_study(ROOT / "configs" / "studies" / "office_annual.toml")
     assert not study.scenario and study.annual.sky_group == "sky" and len(study.control) == 2
     assert (p.parent / study.annual.weather).resolve() == BUNDLED
+
+
+def test_probesim_study_runs_the_scenarios_and_the_year_into_one_folder(tmp_path):
+    import subprocess
+    import sys
+
+    p = tmp_path / "both.toml"
+    p.write_text(OPEN.format(stage=ROOT / "stages" / "dome.usda", weather=_days(tmp_path))
+                 + '[[scenario]]\nname = "overcast"\nlevels = { sky = 1.0 }\nsky = { group = "sky", cie = "overcast" }\n')  # fmt: skip
+    r = subprocess.run([sys.executable, "-m", "simulator", "study", str(p)], capture_output=True, text=True, cwd=ROOT,
+                       env={**os.environ, "PYTHONPATH": str(ROOT)})  # fmt: skip
+    assert r.returncode == 0, r.stderr
+    out = tmp_path / "both.out"
+    for name in ("readings.csv", "summary.csv", "study.json", "annual_hourly.csv", "annual_metrics.csv", "annual.json"):
+        assert (out / name).is_file(), name
+    assert "annual: " in r.stdout and "roof: sDA300/50% 100.0" in r.stdout
