@@ -102,7 +102,8 @@ Schema
     illuminance = "file"               # or "efficacy" (Perez 1990 on the irradiances)
     ground_reflectance = 0.2           # the dome below the horizon
     occupied_h = [8, 18]               # LM-83 hours, local standard time
-    # da_lx, ase_lx, ase_hours, udi_lx, en17037_lx, step_h, replicates, sun_patches
+    # da_lx, ase_lx, ase_hours, udi_lx, en17037_lx, step_h, replicates, sun_patches;
+    # sun_indirect = "traced" with sun_group (the DistantLight's group) and sun_bin_deg
 
     [[control]]                        # photosensor control (simulator.study.control)
     zone = "window_zone"
