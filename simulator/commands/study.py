@@ -122,20 +122,39 @@ def main_study(path: str, out: str | None, scheduler: str | None, workers: int |
     out_dir = _out_dir(study, p, out)
     bar = ChunkProgress()
     t0 = time.perf_counter()
-    try:
-        res = run_study(study, p, out_dir, scheduler=scheduler, on_chunk=bar, log=lambda m: print(m, file=sys.stderr), mode=mode,
-                        workers=n_workers)  # fmt: skip
-    except KeyboardInterrupt:
-        bar.close()
-        print(f"probesim: interrupted; finished chunks are kept in {out_dir}: run the same command again to resume", file=sys.stderr)
-        return 130
-    finally:
-        bar.close()
-    for w in res.warnings:
-        print(f"warning: {w}", file=sys.stderr)
-    res.timings_s["total"] = time.perf_counter() - t0
-    files = write_outputs(res, _versions())
-    for line in closing_note(res):
-        print(line)
+    files = []
+    if study.scenario:
+        try:
+            res = run_study(study, p, out_dir, scheduler=scheduler, on_chunk=bar, log=lambda m: print(m, file=sys.stderr), mode=mode,
+                            workers=n_workers)  # fmt: skip
+        except KeyboardInterrupt:
+            bar.close()
+            print(f"probesim: interrupted; finished chunks are kept in {out_dir}: run the same command again to resume", file=sys.stderr)
+            return 130
+        finally:
+            bar.close()
+        for w in res.warnings:
+            print(f"warning: {w}", file=sys.stderr)
+        res.timings_s["total"] = time.perf_counter() - t0
+        files = write_outputs(res, _versions())
+        for line in closing_note(res):
+            print(line)
+    if study.annual is not None:
+        files += _annual(study, p, out_dir, scheduler)
     print(f"wrote {', '.join(f.name for f in files)} in {out_dir} ({time.perf_counter() - t0:.1f} s in all)")
     return 0
+
+
+def _annual(study, p: Path, out_dir: Path, scheduler: str | None) -> list:
+    """The study's ``[annual]`` part: run (or resume) it, write its files, print its closing lines."""
+    from simulator.study.annual import run_annual
+    from simulator.study.annual_outputs import annual_note, write_annual_outputs
+
+    try:
+        res = run_annual(study, p, out_dir, scheduler=scheduler, log=lambda m: print(m, file=sys.stderr))
+    except KeyboardInterrupt:
+        print(f"probesim: interrupted; finished chunks are kept in {out_dir}: run the same command again to resume", file=sys.stderr)
+        raise SystemExit(130) from None
+    for line in annual_note(res):
+        print(line)
+    return write_annual_outputs(res, study, out_dir)

@@ -96,6 +96,25 @@ Schema
     [output]
     dir = "../out/office_study"        # default: "<study stem>.out/" beside the file
     heat_map_scale = "per_scenario"    # or "log": one logarithmic scale for all panels
+
+    [annual]                           # a year of daylight (simulator.study.annual);
+    weather = "../stages/weather/greensboro_tmy3_lux.csv"  # EPW or TMY3
+    sky_group = "sky"                  # a group with sky = "tregenza"
+    illuminance = "file"               # or "efficacy" (Perez 1990 on the irradiances)
+    ground_reflectance = 0.2           # the dome below the horizon
+    occupied_h = [8, 18]               # LM-83 hours, local standard time
+    # da_lx, ase_lx, ase_hours, udi_lx, en17037_lx, step_h, replicates, sun_patches;
+    # sun_indirect = "traced" with sun_group (the DistantLight's group) and sun_bin_deg
+
+    [[control]]                        # photosensor control (simulator.study.control)
+    zone = "window_zone"
+    groups = ["window_row"]            # light groups it dims
+    model = "closed_loop"              # closed_loop | open_loop | switched
+    photosensor = "ceiling"            # a candidate, or a set: the best annual control
+    target_lx = 500                    # default: the zone's mean target
+    min_level = 0.1                    # dimming floor; deadband = 0.2 (switched)
+
+An annual study may have no ``[[scenario]]``.
 """
 
 from __future__ import annotations
@@ -110,7 +129,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 
 from simulator.errors import UserError
 
-__all__ = ["Study", "load_study", "CandidateSpec", "GroupSpec", "ScenarioSpec", "ZoneSpec", "PlacementSpec", "SunSpec", "SkySpec"]
+__all__ = ["Study", "load_study", "CandidateSpec", "GroupSpec", "ScenarioSpec", "ZoneSpec", "PlacementSpec", "SunSpec", "SkySpec", "AnnualSpec", "ControlSpec"]
 
 _SEED_LIMIT = 2**31
 Level = Annotated[float, Field(ge=0.0, le=1e6, allow_inf_nan=False)]
@@ -319,6 +338,47 @@ class OutputSpec(_Model):
     heat_map_scale: Literal["per_scenario", "log"] = "per_scenario"
 
 
+class AnnualSpec(_Model):
+    """A year of daylight from a climate file (:mod:`simulator.study.annual`)."""
+
+    weather: str = Field(min_length=1)             # EPW (.epw) or TMY3 (.csv), relative to the study file
+    sky_group: str = Field(min_length=1)           # a [[group]] with sky = "tregenza"
+    illuminance: Literal["file", "efficacy"] = "file"
+    ground_reflectance: float = Field(0.2, ge=0.0, le=1.0)
+    step_h: int = Field(1, ge=1, le=24)            # every n-th daylight hour
+    occupied_h: tuple[float, float] = (8.0, 18.0)  # local standard time, IES LM-83
+    da_lx: float = Field(300.0, gt=0.0)
+    ase_lx: float = Field(1000.0, gt=0.0)
+    ase_hours: float = Field(250.0, ge=0.0)
+    udi_lx: tuple[float, float] = (100.0, 2000.0)
+    en17037_lx: tuple[float, float] = (300.0, 100.0)
+    replicates: int = Field(64, ge=8, le=4096)
+    sun_patches: int = Field(4, ge=1, le=8)        # nearest patches the sun's interreflected light is spread over
+    sun_indirect: Literal["patches", "traced"] = "patches"  # or traced: the sun traced at binned positions
+    sun_group: str | None = Field(None, min_length=1)       # traced: a [[group]] holding the stage's one DistantLight
+    sun_bin_deg: float = Field(6.0, ge=1.0, le=30.0)        # traced: size of the sun-position bins
+
+    @model_validator(mode="after")
+    def _ranges(self):
+        if not 0.0 <= self.occupied_h[0] < self.occupied_h[1] <= 24.0:
+            raise ValueError("occupied_h: expected [start, end] hours with 0 <= start < end <= 24")
+        if not 0.0 < self.udi_lx[0] < self.udi_lx[1]:
+            raise ValueError("udi_lx: expected [lower, upper] with 0 < lower < upper")
+        return self
+
+
+class ControlSpec(_Model):
+    """Photosensor control of a zone's light groups over the annual hours (:mod:`simulator.study.control`)."""
+
+    zone: str
+    groups: list[str] = Field(min_length=1)        # light groups the control dims
+    model: Literal["closed_loop", "open_loop", "switched"] = "closed_loop"
+    photosensor: str                               # a candidate's name, or a [[candidates]] set to choose from
+    target_lx: float | None = Field(None, gt=0.0)  # default: the zone's mean target
+    min_level: float = Field(0.1, ge=0.0, le=1.0)  # dimming floor (closed and open loop)
+    deadband: float = Field(0.2, ge=0.0, le=10.0)  # switched: off above target·(1 + deadband), on below target
+
+
 class Study(_Model):
     """A whole study file; see the module docstring for the schema."""
 
@@ -329,11 +389,13 @@ class Study(_Model):
     compute: ComputeSpec = ComputeSpec()
     candidates: list[CandidateSpec] = Field(min_length=1)
     group: list[GroupSpec] = Field(min_length=1)
-    scenario: list[ScenarioSpec] = Field(min_length=1)
+    scenario: list[ScenarioSpec] = []
     zone: list[ZoneSpec] = []
     area: list[AreaSpec] = []
     placement: PlacementSpec | None = None
     output: OutputSpec = OutputSpec()
+    annual: AnnualSpec | None = None
+    control: list[ControlSpec] = []
 
     @model_validator(mode="after")
     def _references(self):
@@ -350,6 +412,9 @@ class Study(_Model):
         unique(self.scenario, "scenario")
         zones = unique(self.zone, "zone")
         split = {g.name for g in self.group if g.sky is not None}
+        if not self.scenario and self.annual is None:
+            raise _RefError("scenario", "give at least one [[scenario]] (or an [annual] table)")
+        _check_annual(self, groups, split, zones, cands)
         for i, sc in enumerate(self.scenario):
             for g in sc.levels:
                 if g not in groups:
@@ -375,7 +440,32 @@ class Study(_Model):
                 raise _RefError("placement.target", f"expected 'each_zone' or a zone name, got {t!r}{_hint(t, zones)}")
             if not self.zone:
                 raise _RefError("placement", "needs at least one [[zone]] to predict")
+            if not self.scenario:
+                raise _RefError("placement", "needs [[scenario]] entries to predict (an annual study chooses photosensors by [[control]])")
         return self
+
+
+def _check_annual(study: "Study", groups: set, split: set, zones: set, cands: set) -> None:
+    """Cross-references of ``[annual]`` and ``[[control]]``."""
+    a = study.annual
+    if a is not None and a.sky_group not in split:
+        raise _RefError("annual.sky_group", f"no [[group]] named {a.sky_group!r} with sky = \"tregenza\"{_hint(a.sky_group, split)}")
+    if a is not None and a.sun_indirect == "traced":
+        if a.sun_group is None:
+            raise _RefError("annual.sun_group", "sun_indirect = \"traced\" needs sun_group (a [[group]] holding the DistantLight)")
+        if a.sun_group not in groups or a.sun_group in split:
+            raise _RefError("annual.sun_group", f"no lamp [[group]] named {a.sun_group!r}{_hint(a.sun_group, groups - split)}")
+    if study.control and a is None:
+        raise _RefError("control", "needs an [annual] table (control runs over the year's hours)")
+    for i, c in enumerate(study.control):
+        if c.zone not in zones:
+            raise _RefError(f"control[{i}].zone", f"no [[zone]] named {c.zone!r}{_hint(c.zone, zones)}")
+        for j, g in enumerate(c.groups):
+            if g not in groups or g in split:
+                raise _RefError(f"control[{i}].groups[{j}]", f"no lamp [[group]] named {g!r}{_hint(g, groups - split)}")
+        z = next(zz for zz in study.zone if zz.name == c.zone)
+        if c.target_lx is None and "mean" not in z.targets:
+            raise _RefError(f"control[{i}].target_lx", f"zone {c.zone!r} has no mean target: give target_lx")
 
 
 class _RefError(ValueError):
