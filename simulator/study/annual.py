@@ -311,7 +311,12 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
         for az, el in bin_suns:
             tgs.append((TraceGroup(f"annual;sun;{az:.6f},{el:.6f}", {}, (az, el), [], [a.sun_group]), sim))
         notes.append(f"interreflected sun traced at {len(bin_suns)} sun positions (bins of {a.sun_bin_deg:g} deg)")
-    spec_lists = [make_chunks([tg], sensors, groups, stage, study.light_units, sd, study.seed, study.compute.sensor_block, sky_split)
+    block = study.compute.sensor_block
+    if block == "auto":  # from the study's size alone, as the scenario runner does (simulator.study.blocks)
+        from simulator.study.blocks import auto_block
+
+        block = auto_block(len(sensors), study.simulation.samples)
+    spec_lists = [make_chunks([tg], sensors, groups, stage, study.light_units, sd, study.seed, block, sky_split)
                   for tg, sd in tgs]  # fmt: skip
     specs = [s for lst in spec_lists for s in lst]
     store = ChunkStore(out_dir)
