@@ -93,7 +93,8 @@ def apply_overrides(
             raise user_error(None, "--variant", f"expected SET=VARIANT, got {item!r}")
         chosen[name.strip()] = choice.strip()
 
-    table = {"stage": str(cfg.stage), "variants": chosen, "simulation": {**asdict(cfg.simulation), **flags}}
+    kept = {k: v for k, v in asdict(cfg.simulation).items() if k != "samples_set"}
+    table = {"stage": str(cfg.stage), "variants": chosen, "simulation": {**kept, **flags}}
     if csv is not None:
         table["output"] = {"csv": os.fspath(csv)}
     rename = {f"simulation.{key}": flag for key, flag in FLAGS.items()}
@@ -104,7 +105,7 @@ def apply_overrides(
     except ValidationError as exc:
         raise translate(exc, table, None, rename) from None
 
-    simulation = doc.simulation.to_record()
+    simulation = replace(doc.simulation.to_record(), samples_set=cfg.simulation.samples_set or samples is not None)
     given = {key: getattr(simulation, key) for key in flags}
     if variants:
         given["variants"] = list(variants)
