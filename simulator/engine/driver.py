@@ -230,6 +230,7 @@ class Engine:
         self.rr_pilot: dict | None = None  #: the roulette pilot's finding for the latest path run (None: none ran)
         #: per method, how the latest adaptive run sized its batches (see :meth:`run`, ``choose_first_batch``)
         self.batch_plans: dict[str, dict] = {}
+        self.piece_factors: np.ndarray | None = None  #: the emitter pieces' learned factors (None: not learnt)
         self._mask_version = 0
 
     def _upload(self) -> DeviceScene:
@@ -395,6 +396,14 @@ class Engine:
         est = first[..., 0] + prior
         got = first[..., 1] + prior * overall
         factors[1:] = np.where(est > 0, got / np.where(est > 0, est, 1.0), overall)
+        pieces = getattr(self, "_piece_tally", None)
+        if pieces is not None:
+            # emitter pieces learn their own factors (one row: the piece's pdf is read at any vertex
+            # without its depth); the emissive record's estimate is their sum, so its own factor stays 1
+            pf = ratio(pieces, 1.0)
+            dev.set_piece_factors(pf)
+            self.piece_factors = pf
+            factors[:, self.emissive_light] = 1.0
         dev.set_pick_factors(factors)
         self._pick_key = key
 
@@ -510,8 +519,11 @@ class Engine:
             a_count = wp.array(t_count, dtype=wp.int32)
             if params.count_rays:
                 rec.ray_counts = wp.zeros(n, dtype=wp.int32)
+            n_pc = int(rec.n_pieces)
             if tally:
                 rec.pick_tally = wp.zeros(n * 2 * int(rec.n_lights), dtype=wp.vec2)
+                if n_pc > 1:
+                    rec.piece_tally = wp.zeros(n * n_pc, dtype=wp.vec2)
             shift = wp.empty(n, dtype=wp.vec2d)
             s1 = wp.empty(n, dtype=wp.vec2d)
             s2 = wp.empty(n, dtype=wp.vec2d)
@@ -547,6 +559,10 @@ class Engine:
             if tally:
                 counts = rec.pick_tally.numpy()
                 rec.pick_tally = wp.zeros(1, dtype=wp.vec2)
+                self._piece_tally = None
+                if n_pc > 1:
+                    self._piece_tally = rec.piece_tally.numpy().reshape(n, n_pc, 2).astype(np.float64).sum(axis=0)
+                    rec.piece_tally = wp.zeros(1, dtype=wp.vec2)
                 return t_sensor, counts
             out = RunningStats.reduce_blocks(t_sensor, t_count, shift.numpy(), s1.numpy(), s2.numpy())
             if params.count_rays:
@@ -692,8 +708,8 @@ class Engine:
         params = self.trace_params(method, seed, max_depth, component)
         params.count_rays = 1 if count_rays else 0
         params.pick_light = LIGHT_PICK_MODES[self.light_pick_mode(method)]
-        if params.pick_light:
-            self._prepare_pick(method, seed, max_depth, component, ids_all)
+        if params.pick_light or (params.nee and int(self._dev.rec.n_pieces) > 1):
+            self._prepare_pick(method, seed, max_depth, component, ids_all)  # and the emitter pieces' factors
         adaptive = rel_error is not None
         choose = adaptive and choose_first_batch
         z = z_for_confidence(confidence)

@@ -273,7 +273,7 @@ def vertex_irradiance(
                             if params.tally != 0 and depth > 0:
                                 tally_patch(scene, params, prev_row, cur_face, p, c_light)
                 if params.tally_pick != 0:
-                    tally_pick(scene, params, li, p, n, depth, weight, got)
+                    tally_pick(scene, params, li, p, n, depth, weight, got, ls.tri)
         if params.bsdf == 0:
             break
         # -- Russian roulette (a weight window): below the threshold t the path

@@ -429,6 +429,12 @@ def _light_sampling(scene: Scene, plans: list[SensorPlan]) -> dict[str, str]:
             out[m] = f"{how} ({why})"
             if METHOD_FLAGS[m][3]:  # paths: their roulette threshold
                 out[m] += "; " + rr_threshold_rule(scene)[1]
+    if out and scene.geometry.n_triangles and np.any(scene.geometry.emission > 0):
+        from simulator.scene.emitters import pieces_note
+
+        note = pieces_note(scene.geometry)
+        for m in out:
+            out[m] += "; " + note
     return out
 
 
