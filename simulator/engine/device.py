@@ -131,7 +131,7 @@ class DeviceScene:
         self._n_sensors = len(sensors)
         # large emitting triangles cut for the emitter pieces (coplanar: the same surface and emission);
         # every per-triangle array on the device follows ``tri_orig`` (the scene's triangle of each)
-        split, self.tri_orig = split_emitters(scene.geometry)
+        split, self.tri_orig = split_emitters(scene.geometry, emitters.SPLIT_M)
         self._n_scene_tris = scene.geometry.n_triangles
         if split is not scene.geometry:
             scene = dc_replace(scene, geometry=split)
@@ -188,7 +188,7 @@ class DeviceScene:
         prob = np.zeros(max(n_tri, 1), np.float64)
         lights = [L.light_record(l, self._keep) for l in scene.lights]
         self.emissive_light = -1
-        pieces = emitter_pieces(g, cap=emitters.MAX_PIECES) if n_tri else None
+        pieces = emitter_pieces(g, emitters.PIECE_M, emitters.MAX_PIECES) if n_tri else None
         self.pieces = pieces
         piece_of = np.full(max(n_tri, 1), -1, np.int32)
         if pieces is not None:

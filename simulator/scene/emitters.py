@@ -26,10 +26,12 @@ import numpy as np
 from simulator.scene.model import Geometry
 from simulator.scene.vectors import cross3
 
-__all__ = ["MAX_PIECES", "PIECE_M", "EmitterPieces", "split_emitters", "emitter_pieces", "pieces_note"]
+__all__ = ["MAX_PIECES", "PIECE_M", "SPLIT_M", "EmitterPieces", "split_emitters", "emitter_pieces", "pieces_note"]
 
 #: target size of a piece (bounding-box diagonal, metres) before the cap grows it
 PIECE_M = 1.0
+#: emitting triangles with a longer edge than this (metres) are cut
+SPLIT_M = 1.0
 #: most pieces: the pick weighs every piece at each vertex (a loop over them)
 MAX_PIECES = 32
 #: most subdivisions per edge of one emitting triangle
@@ -86,7 +88,7 @@ def _importance(emission: np.ndarray) -> np.ndarray:
     return np.maximum(emission[:, 0], 0.0) + np.maximum(emission[:, 1], 0.0) / 683.0
 
 
-def split_emitters(g: Geometry, h: float = PIECE_M, max_m: int = MAX_SPLIT) -> tuple[Geometry, np.ndarray]:
+def split_emitters(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> tuple[Geometry, np.ndarray]:
     """``g`` with each emitting triangle longer than ``h`` (longest edge)
     cut into m × m coplanar sub-triangles, m = ⌈edge/h⌉ ≤ ``max_m``; the
     others as they are. Returns the geometry and, per new triangle, the
@@ -206,8 +208,8 @@ def emitter_pieces(g: Geometry, h: float = PIECE_M, cap: int = MAX_PIECES) -> Em
 
 def pieces_note(g: Geometry) -> str | None:
     """One line for ``probesim plan``: how emissive geometry is sampled (None: nothing emits)."""
-    split, orig = split_emitters(g)
-    pieces = emitter_pieces(split, cap=MAX_PIECES)
+    split, orig = split_emitters(g, SPLIT_M)
+    pieces = emitter_pieces(split, PIECE_M, MAX_PIECES)
     if pieces is None:
         return None
     n_prims = len(np.unique(split.prim[pieces.tris])) if len(split.prim) == split.n_triangles else 1
