@@ -89,6 +89,7 @@ def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = Non
             method, samples=sim.samples, seed=sim.seed, rel_error=sim.rel_error, abs_error=sim.abs_error,
             max_samples=sim.sample_cap, time_limit_s=sim.time_limit_s, max_depth=sim.max_depth,
             component=sim.component, progress=progress, sensor_ids=ids, confidence=sim.confidence, stop=stop,
+            choose_first_batch=sim.choose_first_batch,
         )  # fmt: skip
         out.unfinished[ids] = False if r.unfinished is None else r.unfinished[ids]
         out.mean[ids], out.stderr[ids], out.samples[ids] = r.mean[ids], r.stderr[ids], r.samples[ids]
@@ -170,6 +171,11 @@ def _roulette_record(found: dict) -> dict:
     return {"threshold": found["threshold"], "rule": found["rule"], "seconds": found["seconds"],
             "tried": [{"threshold": t, "relvar_mean": a, "relvar_max": b, "rays_per_sample": r}
                       for t, a, b, r in found["tried"]]}
+
+
+def _batch_record(plan: dict) -> dict:
+    """How an adaptive run's batches were sized (Engine.batch_plans) for the run record."""
+    return {k: v for k, v in plan.items() if v is not None}
 
 
 def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
@@ -381,6 +387,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
             "max_samples": sim.sample_cap,
             "time_limit_s": sim.time_limit_s,
             "sensors_met": int(res.target_met.sum()) if not interrupted else sum(1 for r in rows if r.target_met),
+            "batches": {m: _batch_record(p) for m, p in getattr(engine, "batch_plans", {}).items()},
         },
     }
     record_path = write_outputs(cfg.output.csv, rows, record, extra)

@@ -646,12 +646,21 @@ def test_cylinder_light_sampler_matches_pdf_light():
     _check_light(eng, 0, p, np.array([0.0, 0.0, 1.0]), param, 8, 24, "cylinder", emission=1.0, integral=facing, pdf_rtol=pdf_rtol)
 
 
-def test_emissive_triangles_sampler_matches_pdf_light():
+@pytest.mark.parametrize("piece_m", [10.0, 0.5])
+def test_emissive_triangles_sampler_matches_pdf_light(monkeypatch, piece_m):
     """Emissive geometry: a triangle picked ∝ its power (radiance × area ×
     sides), then a uniform point on it; pdf P(tri)·d²/(A·|cosθ_l|). Three
     triangles of different size and radiance, one of them two-sided. Each
     triangle is binned in the sampler's own square-to-triangle map
-    (b1, b2) = (u1·√u0, 1 − √u0), which is area-preserving (dA = A du0 du1)."""
+    (b1, b2) = (u1·√u0, 1 − √u0), which is area-preserving (dA = A du0 du1).
+    With pieces of at most 0.5 m each triangle is a piece of its own, picked
+    with P(k | x) from its estimate (simulator.scene.emitters): the pdf is then
+    P(k | x)·d²/(A·|cosθ_l|). Emitters are not cut here (the triangles keep
+    their indices)."""
+    from simulator.scene import emitters
+
+    monkeypatch.setattr(emitters, "SPLIT_M", 10.0)
+    monkeypatch.setattr(emitters, "PIECE_M", piece_m)
     pts = np.array([
         [0.0, 0.0, 2.0], [1.0, 0.0, 2.0], [0.0, 0.8, 2.0],      # faces down (wound clockwise from above)
         [-1.0, 0.5, 1.5], [-1.0, -0.5, 1.5], [-0.4, 0.0, 2.5],  # tilted
@@ -690,7 +699,9 @@ def test_emissive_triangles_sampler_matches_pdf_light():
         return u, v, tri
 
     param = _surface_param(p, point, lambda u, v, part: ng[part], lambda u, v, part: area[part], inverse, tri_of_part=lambda part: part)
-    _check_light(eng, li, p, np.array([0.0, 0.0, 1.0]), param, 8, 8, "emissive triangles", n_parts=3)
+    assert eng._dev.pieces.n == (1 if piece_m > 1 else 3)
+    _check_light(eng, li, p, np.array([0.0, 0.0, 1.0]), param, 8, 8, f"emissive triangles, pieces of {piece_m} m",
+                 n_parts=3)
 
 
 # --------------------------------------------------------------------------- Lambertian reflection

@@ -316,7 +316,8 @@ def _adaptive_times(engine, scene, sensors, sim, methods: list[str], log) -> dic
 
     plan = make_plan(scene, sensors, "auto", sim.component)
     engine.set_light_mask(plan.light_mask([l.name for l in scene.lights]))
-    base = replace(sim, rel_error=ADAPTIVE_REL_ERROR, samples=ADAPTIVE_PILOT, confidence=0.95, time_limit_s=None)
+    base = replace(sim, rel_error=ADAPTIVE_REL_ERROR, samples=ADAPTIVE_PILOT, samples_set=True, confidence=0.95,
+                   time_limit_s=None)
 
     def once(m: str, seed: int) -> tuple[float, bool]:
         s = replace(base, seed=seed)

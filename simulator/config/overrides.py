@@ -133,7 +133,8 @@ def apply_overrides(
         else:
             chosen.setdefault(path, {})[name] = choice
 
-    table = {"stage": str(cfg.stage), "variants": chosen, "simulation": {**asdict(cfg.simulation), **flags}}
+    kept = {k: v for k, v in asdict(cfg.simulation).items() if k != "samples_set"}
+    table = {"stage": str(cfg.stage), "variants": chosen, "simulation": {**kept, **flags}}
     if time is not None:
         table["time"] = time
     elif cfg.time is not None:
@@ -150,7 +151,7 @@ def apply_overrides(
     except ValidationError as exc:
         raise translate(exc, table, None, rename) from None
 
-    simulation = doc.simulation.to_record()
+    simulation = replace(doc.simulation.to_record(), samples_set=cfg.simulation.samples_set or samples is not None)
     given = {key: getattr(simulation, key) for key in flags}
     if variants:
         given["variants"] = list(variants)

@@ -49,8 +49,10 @@ class SimulationConfig:
     Attributes
     ----------
     samples : int
-        Samples per sensor (the fixed budget), or the first-batch size of an
-        adaptive run. > 0.
+        Samples per sensor (the fixed budget). In an adaptive run: where the
+        config (or ``--samples``) gives it, the first batch, a floor every
+        sensor draws; where it is left out, the upper bound of a first batch
+        the engine sizes from a short pilot (see :attr:`samples_set`). > 0.
     seed : int
         Random seed, ``0 <= seed < 2**31``.
     method : str
@@ -80,6 +82,9 @@ class SimulationConfig:
         default) stops when 1.96·stderr ≤ the target, so about 1 sensor in 20
         ends beyond it; 0.999 uses 3.29·stderr, for a guarantee across many
         sensors.
+    samples_set : bool
+        False only where a config file and its flags leave ``samples`` out
+        (records built in code keep ``samples`` as their first batch).
     """
 
     samples: int = 1024
@@ -94,6 +99,7 @@ class SimulationConfig:
     threads: int = 0
     component: str = "total"
     confidence: float = 0.95
+    samples_set: bool = True
 
     @property
     def adaptive(self) -> bool:
@@ -104,6 +110,12 @@ class SimulationConfig:
     def sample_cap(self) -> int:
         """``max_samples``, or :data:`DEFAULT_MAX_SAMPLES` when absent."""
         return DEFAULT_MAX_SAMPLES if self.max_samples is None else self.max_samples
+
+    @property
+    def choose_first_batch(self) -> bool:
+        """True when an adaptive run's first batch is the engine's to size
+        (``samples`` left out: it is then the batch's upper bound)."""
+        return self.adaptive and not self.samples_set
 
 
 @dataclass(frozen=True)

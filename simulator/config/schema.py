@@ -19,7 +19,8 @@ flags are checked by these same models (:mod:`simulator.config.overrides`).
                                           # (default: its earliest time sample)
 
     [simulation]
-    samples = 1024        # int > 0 (first-batch size when adaptive)
+    samples = 1024        # int > 0; adaptive: the first batch (a floor), or left
+                          # out: the engine sizes it from a pilot, at most 1024
     seed = 1              # 0 <= int < 2**31
     method = "auto"       # auto | analytic | light | bsdf | mis | path
     device = "cpu"        # cpu | cuda | auto
@@ -107,7 +108,7 @@ class Simulation(Table):
     confidence: Annotated[Number, interval(0.5, 1.0)] = _D.confidence
 
     def to_record(self) -> SimulationConfig:
-        return SimulationConfig(**dict(self))
+        return SimulationConfig(**dict(self), samples_set="samples" in self.model_fields_set)
 
 
 class Grid(Table):

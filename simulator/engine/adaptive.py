@@ -13,6 +13,13 @@ unit stops at ``time_limit_s``. The next batch is what would reach the
 target if the variance holds (stderr² ∝ 1/n), with 10% to spare, at least
 one block and at most doubling the samples so far.
 
+The first batch is the caller's: a config's ``samples`` where it sets one
+(a floor every sensor draws), else what :func:`first_batch_from_pilot`
+makes of a short pilot's variances (at most the default ``samples``). A
+unit that reads exactly zero in every channel is not taken as converged
+before ``dark_floor`` samples (a first batch the engine chose small must
+not end a reading that only a rare path lights).
+
 A stop request (Ctrl-C, see :mod:`simulator.interrupts`) ends the loop
 between batches: SIGINT is deferred while a batch is drawn and merged, so
 the statistics always hold whole batches; ``KeyboardInterrupt`` raised by
@@ -30,7 +37,47 @@ import numpy as np
 from simulator.engine.stats import z_for_confidence
 from simulator.interrupts import StopFlag, sigint_deferred
 
-__all__ = ["StoppingRule", "run_batches"]
+__all__ = ["StoppingRule", "run_batches", "first_batch_from_pilot", "PILOT_MIN_BATCH"]
+
+#: fewest samples per sensor in a first batch the engine chooses (a variance
+#: from fewer is too rough for the rule to size the next batch by)
+PILOT_MIN_BATCH = 8
+#: the chosen first batch is this share of the pilot's median need: most
+#: sensors then take a second batch sized by their own variance (×1.1), and
+#: few overshoot their need by much in the first
+PILOT_NEED_SHARE = 0.5
+
+
+def first_batch_from_pilot(relvar: np.ndarray, z: float, rel_error: float, upper: int,
+                           lower: int = PILOT_MIN_BATCH) -> int:
+    """An adaptive run's first batch per sensor from a pilot's variances.
+
+    Parameters
+    ----------
+    relvar : ndarray, shape (P,)
+        Relative variance per sample (variance/mean²) of each pilot sensor,
+        the largest over its channels; NaN where it read zero.
+    z : float
+        Half-width of the confidence interval, in standard errors.
+    rel_error : float
+        The relative half-width target.
+    upper, lower : int
+        Bounds of the batch (``upper``: the config's default ``samples``).
+
+    Returns
+    -------
+    int
+        ``clip(⌈PILOT_NEED_SHARE·median(z²·relvar/rel_error²)⌉, lower,
+        upper)``; ``upper`` where no pilot sensor read anything (nothing to
+        size a batch by).
+    """
+    rv = np.asarray(relvar, np.float64)
+    rv = rv[np.isfinite(rv)]
+    upper = max(1, int(upper))
+    if rv.size == 0:
+        return upper
+    need = z * z * float(np.median(rv)) / rel_error**2
+    return int(min(upper, max(min(lower, upper), int(np.ceil(PILOT_NEED_SHARE * need)))))
 
 
 class StoppingRule:
@@ -79,6 +126,7 @@ def run_batches(
     t_start: float | None = None,
     report: Callable[[np.ndarray, np.ndarray, float], None] | None = None,
     stop: StopFlag | None = None,
+    dark_floor: int = 0,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Draw batches until every unit has stopped.
 
@@ -111,6 +159,9 @@ def run_batches(
         ``active`` True for the units it did not finish. SIGINT during a
         batch, or ``KeyboardInterrupt`` from ``report``, requests it.
         Without it, SIGINT raises ``KeyboardInterrupt`` once the batch is done.
+    dark_floor : int
+        With a rule: a unit reading 0 in every channel counts as meeting the
+        target only once it has this many samples (0: at once).
 
     Returns
     -------
@@ -135,9 +186,14 @@ def run_batches(
             if rule is not None:
                 value, se = measure()
                 ok, target = rule.check(value, se)
+                dark = np.all(value == 0, axis=1) & (count < dark_floor) if dark_floor else None
+                if dark is not None:
+                    ok &= ~dark
                 met |= ok & active
                 done |= ok
                 want = rule.next_batch(count, se, target, block)
+                if dark is not None:  # nothing to size it by: double toward the floor
+                    want = np.where(dark, np.maximum(want, np.minimum(count, dark_floor - count)), want)
             active &= ~done
             elapsed = time.perf_counter() - t0
             if time_limit_s is not None and elapsed >= time_limit_s:

@@ -9,10 +9,13 @@ from __future__ import annotations
 import contextlib
 import os
 import sys
+from dataclasses import replace as dc_replace
 
 import numpy as np
 
 from simulator.errors import UserError
+from simulator.scene import emitters
+from simulator.scene.emitters import emitter_pieces, split_emitters
 from simulator.scene.model import Scene, Sensor
 from simulator.scene.patches import patch_layout, source_rows
 
@@ -126,6 +129,12 @@ class DeviceScene:
 
         self.device = device
         self._n_sensors = len(sensors)
+        # large emitting triangles cut for the emitter pieces (coplanar: the same surface and emission);
+        # every per-triangle array on the device follows ``tri_orig`` (the scene's triangle of each)
+        split, self.tri_orig = split_emitters(scene.geometry, emitters.SPLIT_M)
+        self._n_scene_tris = scene.geometry.n_triangles
+        if split is not scene.geometry:
+            scene = dc_replace(scene, geometry=split)
         self.layout = patch_layout(scene.geometry.points, scene.geometry.triangles)
         g = scene.geometry
         self._prim = g.prim if len(g.prim) == g.n_triangles else np.zeros(g.n_triangles, np.int32)
@@ -174,28 +183,31 @@ class DeviceScene:
         rec.two_sided = arr(two_sided, wp.int32)
         self._upload_surfaces(wp, K, rec, g)
 
-        # Emissive triangles: picked with probability ∝ emitted power
-        # (radiance × area × sides), the best choice when all are visible.
-        emit_ids = np.flatnonzero(np.any(emission > 0, axis=1)) if n_tri else np.zeros(0, np.int64)
+        # Emissive triangles in pieces (simulator.scene.emitters): a piece is
+        # picked by its estimate × learned factor, a triangle of it ∝ its
+        # emitted power (radiance × area × sides), the best choice when all are visible.
         prob = np.zeros(max(n_tri, 1), np.float64)
         lights = [L.light_record(l, self._keep) for l in scene.lights]
         self.emissive_light = -1
-        if len(emit_ids):
-            p = g.points[g.triangles[emit_ids]]
-            area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
-            power = area * g.emission[emit_ids, 0] * np.where(g.two_sided[emit_ids], 2.0, 1.0)
-            if power.sum() <= 0:
-                power = area * g.emission[emit_ids, 1]
-            prob[emit_ids] = power / power.sum()
-            cdf = np.cumsum(prob[emit_ids])
-            cdf /= cdf[-1]
-            rec.emit_tris = wp.array(emit_ids.astype(np.int32), dtype=wp.int32)
+        pieces = emitter_pieces(g, emitters.PIECE_M, emitters.MAX_PIECES) if n_tri else None
+        self.pieces = pieces
+        piece_of = np.full(max(n_tri, 1), -1, np.int32)
+        if pieces is not None:
+            prob[pieces.tris] = pieces.prob
+            cdf = np.zeros(len(pieces.tris))
+            for k in range(pieces.n):
+                sl = slice(int(pieces.first[k]), int(pieces.first[k] + pieces.count[k]))
+                c = np.cumsum(pieces.prob[sl])
+                cdf[sl] = c / c[-1]
+                piece_of[pieces.tris[sl]] = k
+            rec.emit_tris = wp.array(pieces.tris.astype(np.int32), dtype=wp.int32)
             rec.emit_cdf = wp.array(cdf.astype(np.float32), dtype=float)
             lights.append(L.emissive_record())
             self.emissive_light = len(lights) - 1
         else:
             rec.emit_tris = wp.zeros(0, dtype=wp.int32)
             rec.emit_cdf = wp.zeros(1, dtype=float)
+        self._upload_pieces(wp, rec, pieces, piece_of)
         rec.emit_prob = wp.array(prob.astype(np.float32), dtype=float)
         rec.lights = wp.array(lights, dtype=K.LightRec) if lights else wp.zeros(1, dtype=K.LightRec)
         rec.n_lights = len(lights)
@@ -244,6 +256,36 @@ class DeviceScene:
         rec.face_mirror = wp.array(face_plane.astype(np.int32), dtype=wp.int32)
         self._keep += [rec.surf_id, rec.surf_side, rec.surf, rec.mirror_planes, rec.face_mirror]
 
+    def _upload_pieces(self, wp, rec, pieces, piece_of: np.ndarray) -> None:
+        """The emitter pieces' records (one placeholder piece where none emit)."""
+        k = 0 if pieces is None else pieces.n
+        rec.n_pieces = k
+        rec.emit_piece = wp.array(piece_of, dtype=wp.int32)
+        if k:
+            shape = np.stack([pieces.area, pieces.radiance, pieces.reach, pieces.two_sided.astype(np.float64)], axis=1)
+            rec.piece_first = wp.array(pieces.first.astype(np.int32), dtype=wp.int32)
+            rec.piece_count = wp.array(pieces.count.astype(np.int32), dtype=wp.int32)
+            rec.piece_centre = wp.array(pieces.centre.astype(np.float32), dtype=wp.vec3)
+            rec.piece_normal = wp.array(pieces.normal.astype(np.float32), dtype=wp.vec3)
+            rec.piece_shape = wp.array(shape.astype(np.float32), dtype=wp.vec4)
+        else:
+            rec.piece_first = wp.zeros(1, dtype=wp.int32)
+            rec.piece_count = wp.zeros(1, dtype=wp.int32)
+            rec.piece_centre = wp.zeros(1, dtype=wp.vec3)
+            rec.piece_normal = wp.zeros(1, dtype=wp.vec3)
+            rec.piece_shape = wp.zeros(1, dtype=wp.vec4)
+        rec.piece_factor = wp.ones(max(k, 1), dtype=float)
+        rec.piece_tally = wp.zeros(1, dtype=wp.vec2)
+        self._keep += [rec.emit_piece, rec.piece_first, rec.piece_count, rec.piece_centre, rec.piece_normal,
+                       rec.piece_shape]  # fmt: skip
+
+    def set_piece_factors(self, factors: np.ndarray) -> None:
+        """The emitter pieces' learned factors, (K,) (see kernels/lights/emissive.py)."""
+        wp = warp()
+        with wp.ScopedDevice(self.device):
+            self.rec.piece_factor = wp.array(np.ascontiguousarray(factors, np.float32), dtype=float)
+        self._piece_factor = self.rec.piece_factor  # the record holds only its pointer
+
     def _upload_hero(self, wp, rec, tables) -> None:
         """The hero-wavelength tables (:class:`simulator.spectra.hero.HeroTables`) on ``rec``; placeholders
         (1 × 1) when None, for grey transport, which never reads them."""
@@ -260,6 +302,8 @@ class DeviceScene:
             face_em = np.ascontiguousarray(getattr(tables, "face_emission", np.zeros(0)), np.int32)
             if len(face_em) != len(face):  # none coloured (or no triangles): every face its record's row
                 face_em = np.full(len(face), -1, np.int32)
+            if len(self.tri_orig) != self._n_scene_tris and len(face) == self._n_scene_tris:
+                face, face_em = face[self.tri_orig], face_em[self.tri_orig]  # the cut emitters' triangles
         rec.spectral_reflectance = wp.array2d(refl, dtype=float)
         rec.spectral_face = wp.array(face, dtype=wp.int32)
         rec.spectral_emission = wp.array2d(emis, dtype=float)

@@ -22,7 +22,7 @@ from typing import Callable
 import numpy as np
 
 from simulator.engine import probes as P
-from simulator.engine.adaptive import StoppingRule, run_batches
+from simulator.engine.adaptive import PILOT_MIN_BATCH, StoppingRule, first_batch_from_pilot, run_batches
 from simulator.engine.device import DeviceScene, cuda_available, resolve_device, warp, warp_version
 from simulator.engine.fanout import fan_out
 from simulator.engine.methods import (
@@ -229,6 +229,9 @@ class Engine:
         #: {"threshold", "rule", "tried": [(t, relvar_mean, relvar_max, rays)], "seconds"}
         self._rr_found: dict[tuple, dict] = {}
         self.rr_pilot: dict | None = None  #: the roulette pilot's finding for the latest path run (None: none ran)
+        #: per method, how the latest adaptive run sized its batches (see :meth:`run`, ``choose_first_batch``)
+        self.batch_plans: dict[str, dict] = {}
+        self.piece_factors: np.ndarray | None = None  #: the emitter pieces' learned factors (None: not learnt)
         self._mask_version = 0
 
     def _upload(self) -> DeviceScene:
@@ -397,6 +400,14 @@ class Engine:
         est = first[..., 0] + prior
         got = first[..., 1] + prior * overall
         factors[1:] = np.where(est > 0, got / np.where(est > 0, est, 1.0), overall)
+        pieces = getattr(self, "_piece_tally", None)
+        if pieces is not None:
+            # emitter pieces learn their own factors (one row: the piece's pdf is read at any vertex
+            # without its depth); the emissive record's estimate is their sum, so its own factor stays 1
+            pf = ratio(pieces, 1.0)
+            dev.set_piece_factors(pf)
+            self.piece_factors = pf
+            factors[:, self.emissive_light] = 1.0
         dev.set_pick_factors(factors)
         self._pick_key = key
         # what each light gave per row, for a pass serving several scenarios (scenario_pick)
@@ -450,31 +461,74 @@ class Engine:
         key = (method, max_depth, component, ids.tobytes(), first_batch, rel_error)
         if key not in self._rr_found:
             tb = time.perf_counter()
-            spread = np.linspace(0, len(ids) - 1, min(len(ids), RR_PILOT_SENSORS)).round().astype(np.int64)
-            pick = ids[np.unique(spread)]
-            count = np.full(len(pick), max(RR_PILOT_SAMPLES, -(-RR_PILOT_TOTAL // len(pick))), np.int64)
+            pick, count = self._pilot_pick(ids)
             kept = (params.seed, params.count_rays, params.rr_threshold)  # the run's, restored below
             params.seed = (int(params.seed) + 0x5851F42D) & 0x7FFFFFFF
             params.count_rays = 1
 
+            per_sensor = {}  # t -> each pilot sensor's relative variance per sample (NaN: read 0)
+
             def measure(t: float) -> tuple[float, float, float]:
                 params.rr_threshold = float(t)
                 self.rays_traced = 0
-                _, cnt, mean, m2 = self._launch(params, pick, np.zeros(len(pick), np.int64), count)[:4]
-                n = cnt[:, None].astype(np.float64)
-                with np.errstate(divide="ignore", invalid="ignore"):
-                    rv = np.where(np.abs(mean) > 0, m2 / np.maximum(n - 1, 1) / mean**2, np.nan)
-                rv = np.nanmax(np.where(np.isnan(rv).all(axis=1, keepdims=True), 0.0, rv), axis=1)
-                return float(rv.mean()), float(rv.max()), self.rays_traced / max(1, int(cnt.sum()))
+                rv, n_drawn = self._pilot_relvar(params, pick, count)
+                per_sensor[float(t)] = rv
+                rv = np.where(np.isnan(rv), 0.0, rv)
+                return float(rv.mean()), float(rv.max()), self.rays_traced / max(1, n_drawn)
 
             try:
                 t, tried = rr_pilot_choice(t_rule, measure, first_batch, z, rel_error)
             finally:
                 params.seed, params.count_rays, params.rr_threshold = kept
             self.rays_traced = 0
-            self._rr_found[key] = {"threshold": t, "rule": t_rule, "tried": tried, "seconds": time.perf_counter() - tb}
+            self._rr_found[key] = {"threshold": t, "rule": t_rule, "tried": tried, "seconds": time.perf_counter() - tb,
+                                   "relvar": per_sensor[float(t)]}
         self.rr_pilot = self._rr_found[key]
         return self.rr_pilot["threshold"]
+
+    def _pilot_relvar(self, params, pick: np.ndarray, count: np.ndarray) -> tuple[np.ndarray, int]:
+        """Each of ``pick``'s relative variance per sample (m2/(n − 1)/mean²,
+        the largest over the channels that read anything; NaN where none
+        did) from ``count`` samples drawn with ``params``; and the samples drawn."""
+        _, cnt, mean, m2 = self._launch(params, pick, np.zeros(len(pick), np.int64), count)[:4]
+        n = cnt[:, None].astype(np.float64)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            rv = np.where(np.abs(mean) > 0, m2 / np.maximum(n - 1, 1) / mean**2, np.nan)
+        dark = np.isnan(rv).all(axis=1)
+        rv = np.nanmax(np.where(dark[:, None], 0.0, rv), axis=1)
+        return np.where(dark, np.nan, rv), int(cnt.sum())
+
+    def _pilot_pick(self, ids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The pilots' sensors (up to RR_PILOT_SENSORS, evenly spread over
+        ``ids``) and their samples each (at least RR_PILOT_TOTAL in all)."""
+        spread = np.linspace(0, len(ids) - 1, min(len(ids), RR_PILOT_SENSORS)).round().astype(np.int64)
+        pick = ids[np.unique(spread)]
+        return pick, np.full(len(pick), max(RR_PILOT_SAMPLES, -(-RR_PILOT_TOTAL // len(pick))), np.int64)
+
+    def _first_batch(self, params, method: str, ids: np.ndarray, upper: int, z: float, rel_error: float,
+                     rr_ran: bool) -> dict:
+        """An adaptive run's first batch, chosen from a pilot (see
+        ``adaptive.first_batch_from_pilot``): the roulette pilot's variances
+        at the threshold it chose where it ran, else a pilot of its own (the
+        roulette pilot's size, the run's settings, streams of its own,
+        discarded). Returns the plan for the run record."""
+        tb = time.perf_counter()
+        if rr_ran:
+            rv = self.rr_pilot["relvar"]
+        else:
+            pick, count = self._pilot_pick(ids)
+            kept = params.seed
+            params.seed = (int(params.seed) + 0x1B873593) & 0x7FFFFFFF
+            try:
+                rv, _ = self._pilot_relvar(params, pick, count)
+            finally:
+                params.seed = kept
+        first = first_batch_from_pilot(rv, z, rel_error, upper)
+        finite = rv[np.isfinite(rv)]
+        return {"first_batch": first, "chosen_by": "pilot", "upper": int(upper),
+                "pilot_relvar_median": float(np.median(finite)) if finite.size else None,
+                "pilot_relvar_max": float(finite.max()) if finite.size else None,
+                "seconds": time.perf_counter() - tb}
 
     # ------------------------------------------------------------ sensors
 
@@ -503,8 +557,11 @@ class Engine:
             a_count = wp.array(t_count, dtype=wp.int32)
             if params.count_rays:
                 rec.ray_counts = wp.zeros(n, dtype=wp.int32)
+            n_pc = int(rec.n_pieces)
             if tally:
                 rec.pick_tally = wp.zeros(n * 2 * int(rec.n_lights), dtype=wp.vec2)
+                if n_pc > 1:
+                    rec.piece_tally = wp.zeros(n * n_pc, dtype=wp.vec2)
             shift = wp.empty(n, dtype=wp.vec2d)
             s1 = wp.empty(n, dtype=wp.vec2d)
             s2 = wp.empty(n, dtype=wp.vec2d)
@@ -533,6 +590,10 @@ class Engine:
             if tally:
                 counts = rec.pick_tally.numpy()
                 rec.pick_tally = wp.zeros(1, dtype=wp.vec2)
+                self._piece_tally = None
+                if n_pc > 1:
+                    self._piece_tally = rec.piece_tally.numpy().reshape(n, n_pc, 2).astype(np.float64).sum(axis=0)
+                    rec.piece_tally = wp.zeros(1, dtype=wp.vec2)
                 return t_sensor, counts
             out = RunningStats.reduce_blocks(t_sensor, t_count, shift.numpy(), s1.numpy(), s2.numpy())
             if params.count_rays:
@@ -620,6 +681,7 @@ class Engine:
         confidence: float = 0.95,
         stop: StopFlag | None = None,
         groups: LightGroups | None = None,
+        choose_first_batch: bool = False,
     ) -> EngineResult:
         """Estimate every sensor with ``method`` (analytic, exact, light, bsdf, mis, path or guided).
 
@@ -628,7 +690,13 @@ class Engine:
         not part of ``wall_s``) and reuses it afterwards.
 
         Fixed budget (``rel_error`` None): ``samples`` per sensor. Adaptive:
-        ``samples`` is the first batch; a sensor stops when
+        ``samples`` is the first batch (with ``choose_first_batch``, its
+        upper bound: the batch is sized from a short pilot,
+        ``adaptive.first_batch_from_pilot``, and the roulette pilot tuned
+        to the target with :data:`adaptive.PILOT_MIN_BATCH` as the floor
+        instead of ``samples``; ``batch_plans[method]`` says what it chose
+        and, after the run, the samples the slowest sensor needed and
+        spent); a sensor stops when
         z·stderr ≤ max(rel_error·|mean|, abs_error) in both channels (z for
         ``confidence``, see :mod:`.adaptive`) and, when tracing spectrally, in
         every response of the hero tables (so each reported response column
@@ -671,13 +739,24 @@ class Engine:
         params = self.trace_params(method, seed, max_depth, component)
         params.count_rays = 1 if count_rays else 0
         params.pick_light = LIGHT_PICK_MODES[self.light_pick_mode(method)]
-        if params.pick_light:
-            self._prepare_pick(method, seed, max_depth, component, ids_all)
+        if params.pick_light or (params.nee and int(self._dev.rec.n_pieces) > 1):
+            self._prepare_pick(method, seed, max_depth, component, ids_all)  # and the emitter pieces' factors
             params.pick_light = self._scenario_pick(groups, params.pick_light)
+        adaptive = rel_error is not None
+        choose = adaptive and choose_first_batch
+        z = z_for_confidence(confidence)
+        first_batch = min(samples, max_samples) if adaptive else samples
+        floor = min(PILOT_MIN_BATCH, first_batch) if choose else first_batch
+        rr_ran = False
         if METHOD_FLAGS[method][3] and params.bounces != 0 and self.rr_threshold is None:
-            params.rr_threshold = self._prepare_rr(params, method, max_depth, component, ids_all,
-                                                   min(samples, max_samples) if rel_error is not None else samples,
-                                                   z_for_confidence(confidence), rel_error)
+            params.rr_threshold = self._prepare_rr(params, method, max_depth, component, ids_all, floor, z, rel_error)
+            rr_ran = True
+        plan = None
+        if choose:
+            plan = self._first_batch(params, method, ids_all, first_batch, z, rel_error, rr_ran)
+            first_batch = plan["first_batch"]
+        elif adaptive:
+            plan = {"first_batch": int(first_batch), "chosen_by": "samples"}
         self.rays_traced = 0  # shadow and path rays, counted when count_rays
         stats = RunningStats(n_s)
         n_resp = self._dev.n_responses if params.spectral else 0
@@ -688,12 +767,11 @@ class Engine:
             self._set_groups(params, groups)
         seconds = np.zeros(n_s)
         nonfinite = np.zeros(n_s, np.int64)
-        adaptive = rel_error is not None
         cap = max_samples if adaptive else samples
         active = np.zeros(n_s, bool)
         active[ids_all] = True
         n_run = len(ids_all)
-        want = np.full(n_s, min(samples, cap), np.int64)  # next batch per sensor
+        want = np.full(n_s, min(first_batch, cap), np.int64)  # next batch per sensor
         if not adaptive:
             per = max(BLOCK, SAMPLES_PER_LAUNCH // max(n_run, 1))
             want = np.minimum(want, per)
@@ -740,9 +818,12 @@ class Engine:
             step, active, want, cap, block=BLOCK,
             rule=StoppingRule(rel_error, abs_error, confidence) if adaptive else None,
             measure=measure, time_limit_s=time_limit_s, t_start=t0, report=report,
-            stop=stop,
+            stop=stop, dark_floor=min(samples, cap) if choose else 0,
         )  # fmt: skip
         wall = time.perf_counter() - t0
+        if plan is not None:
+            plan.update(_economy(stats, measure, ids_all, met, rel_error, abs_error, z))
+            self.batch_plans[method] = plan
         warnings = list(self.warnings)
         if method == "bsdf" and any(l.is_delta for l in self.scene.lights):
             names = ", ".join(l.name for l in self.scene.lights if l.is_delta)
@@ -994,6 +1075,26 @@ class Engine:
                                       target_met))  # fmt: skip
             out[-1].interrupted = bool(active[0])
         return out
+
+
+def _economy(stats: RunningStats, measure, ids: np.ndarray, met: np.ndarray, rel_error: float,
+             abs_error: float, z: float) -> dict:
+    """What an adaptive run spent against what its sensors needed: a
+    sensor's need is z²·stderr²·n/target² (the samples that meet the target
+    at its measured variance), the largest over its channels. Over the
+    sensors that met the target: the largest need and the samples the
+    sensor with it drew, and all samples drawn over all needs."""
+    value, se = measure()
+    n = stats.count[ids].astype(np.float64)
+    target = np.maximum(rel_error * np.abs(value[ids]), abs_error)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        need = np.nan_to_num(np.max((z * se[ids]) ** 2 * n[:, None] / target**2, axis=1), nan=0.0, posinf=0.0)
+    ok = met[ids]
+    if not ok.any():
+        return {"needed_max": None, "spent_at_needed_max": None, "spent_over_needed": None}
+    k = int(np.argmax(np.where(ok, need, -1.0)))
+    return {"needed_max": float(need[k]), "spent_at_needed_max": int(n[k]), "spent_max": int(n[ok].max()),
+            "spent_over_needed": float(n[ok].sum() / max(need[ok].sum(), 1e-300))}
 
 
 def _recombined(mean: np.ndarray, cov: np.ndarray, levels: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -141,6 +141,9 @@ RR_PILOT_STEP = 4.0
 RR_PILOT_STEPS = 3
 #: a lower threshold is taken only when it divides variance × rays per sample by this much
 RR_PILOT_GAIN = 2.0
+#: … or, in an adaptive run, the rays its noisiest sensor spends to the target by this much (a
+#: step costs at most its longer paths, ≤ 1.3× the rays, where the pilot's noise misleads it)
+RR_PILOT_TARGET_GAIN = 1.2
 
 
 def rr_pilot_choice(t_rule: float, measure, first_batch: int | None = None, z: float = 1.96,
@@ -157,7 +160,8 @@ def rr_pilot_choice(t_rule: float, measure, first_batch: int | None = None, z: f
         (stderr²·n/mean²), and rays traced per sample, at threshold ``t``.
     first_batch : int, optional
         With ``rel_error``: the samples every sensor draws anyway (an adaptive
-        run's first batch).
+        run's floor: its first batch where the config sets ``samples``, else
+        the fewest the engine's own first batch draws).
     z, rel_error : float, optional
         An adaptive run's target z·stderr ≤ rel_error·|mean|.
 
@@ -170,28 +174,35 @@ def rr_pilot_choice(t_rule: float, measure, first_batch: int | None = None, z: f
 
     Notes
     -----
-    The cost of a reading at equal error is relvar × rays per sample. The
-    threshold is lowered by :data:`RR_PILOT_STEP` while that divides the
-    cost by at least :data:`RR_PILOT_GAIN` (a margin over the pilot's own
+    The threshold is lowered by :data:`RR_PILOT_STEP` while that divides the
+    cost by at least :data:`RR_PILOT_GAIN` (:data:`RR_PILOT_TARGET_GAIN` in
+    an adaptive run; a margin over the pilot's own
     noise: lowering t only lengthens the paths where the roulette is not
-    most of the noise), at most :data:`RR_PILOT_STEPS` times. In an
-    adaptive run it stops as soon as the pilot's noisiest sensor would meet
-    the target within ``first_batch`` samples, z²·relvar_max/rel_error² ≤
-    first_batch: a lower t could then save no samples, only lengthen them.
+    most of the noise), at most :data:`RR_PILOT_STEPS` times. A fixed-budget
+    run's cost at equal error is relvar × rays per sample. An adaptive run's
+    is tuned to its target: the rays its noisiest sensor spends,
+    rays × max(first_batch, z²·relvar_max/rel_error²), so the search stops
+    as soon as that sensor would meet the target within ``first_batch``
+    samples (a lower t could then save no samples, only lengthen them).
     """
-    def enough(rv_max: float) -> bool:
-        return rel_error is not None and first_batch is not None and z * z * rv_max / rel_error**2 <= first_batch
+    adaptive = rel_error is not None and first_batch is not None
+
+    def need(rv_max: float) -> float:
+        return z * z * rv_max / rel_error**2
+
+    def cost(rv: float, rv_max: float, rays: float) -> float:
+        return rays * max(first_batch, need(rv_max)) if adaptive else rv * rays
 
     t = t_rule
     rv, rv_max, rays = measure(t)
     tried = [(t, rv, rv_max, rays)]
     for _ in range(RR_PILOT_STEPS):
-        if enough(rv_max) or not rv > 0:
+        if (adaptive and need(rv_max) <= first_batch) or not rv > 0:
             break
         t_next = t / RR_PILOT_STEP
         rv_n, rv_max_n, rays_n = measure(t_next)
         tried.append((t_next, rv_n, rv_max_n, rays_n))
-        if not rv_n * rays_n * RR_PILOT_GAIN <= rv * rays:
+        if not cost(rv_n, rv_max_n, rays_n) * (RR_PILOT_TARGET_GAIN if adaptive else RR_PILOT_GAIN) <= cost(rv, rv_max, rays):
             break
         t, rv, rv_max, rays = t_next, rv_n, rv_max_n, rays_n
     return t, tried

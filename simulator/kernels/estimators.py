@@ -335,7 +335,7 @@ def vertex_estimate(
                             if params.tally != 0 and depth > 0:
                                 tally_patch(scene, params, prev_row, cur_face, p, c_light)
                 if params.tally_pick != 0:
-                    tally_pick(scene, params, li, p, n, depth, weight, got)
+                    tally_pick(scene, params, li, p, n, depth, weight, got, ls.tri)
         # -- delta lights seen in flat mirrors: their image sources (kernels.mirrors); light reflected
         #    on the way, so indirect (counted at a sensor's vertex even without its direct light)
         if params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes > 0:

@@ -48,6 +48,7 @@ import warp as wp
 from simulator.scene.model import LightKind
 
 from .lights import LightRec, SceneRec
+from .lights.emissive import piece_estimate, piece_probability, piece_totals
 from .records import TraceParams
 from .sampling import PI
 
@@ -67,6 +68,7 @@ _DISK = wp.constant(int(LightKind.DISK))
 _DISTANT = wp.constant(int(LightKind.DISTANT))
 _DOME = wp.constant(int(LightKind.DOME))
 _CYLINDER = wp.constant(int(LightKind.CYLINDER))
+_EMISSIVE = wp.constant(int(LightKind.EMISSIVE))
 
 
 @wp.func
@@ -119,8 +121,9 @@ def light_estimate(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3) -> wp.vec2:
     of its centre, 0, and its reading 19× the variance): rect and disk L·A·cosθl·cosθ/d²; sphere πL·(r/d)²·cosθ;
     cylinder L·2rℓ·sinγ·cosθ/d² (γ between its axis and the view); distant
     cone πL·sin²σ·cosθ; dome πL (a textured dome's map scale is left to the
-    learned factor); emissive triangles 1 W/m², scaled by the learned
-    factor. The closed forms would be better guesses near a large light,
+    learned factor); emissive triangles in pieces (lights/emissive.py) the
+    sum of the pieces' own estimates × their learned factors (the record's
+    factor then stays 1), a lone piece 1 W/m² scaled by the learned factor. The closed forms would be better guesses near a large light,
     but cost more than they save on the CPU (measured on the quickstart:
     Lambert's formula for its two rect lights at every vertex made a sample
     ~40% slower for the same variance).
@@ -139,6 +142,9 @@ def light_estimate(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3) -> wp.vec2:
         if below_horizon(cos_r, sin_s, 1.0):
             return wp.vec2(0.0, 0.0)
         return wp.vec2(cap * s2 * cos_above(cos_r, sin_s, 1.0), 1.0)
+    if l.kind == _EMISSIVE and scene.n_pieces > 1:
+        tot = piece_totals(scene, p, n)
+        return wp.vec2(tot[0], wp.where(tot[1] > 0.0, 1.0, 0.0))
     if l.kind != _RECT and l.kind != _DISK and l.kind != _SPHERE and l.kind != _CYLINDER:
         return wp.vec2(1.0, 1.0)  # emissive triangles
     d = l.position - p
@@ -305,13 +311,23 @@ def pick_scale(
 
 @wp.func
 def tally_pick(
-    scene: SceneRec, params: TraceParams, li: int, p: wp.vec3, n: wp.vec3, depth: int, weight: float, got: wp.vec2
+    scene: SceneRec, params: TraceParams, li: int, p: wp.vec3, n: wp.vec3, depth: int, weight: float, got: wp.vec2,
+    tri: int,
 ):
     """A pilot's sums for light ``li``'s pick factor (light_pick.py): the
     path weight × its estimate ê, and × the value its shadowed sample gave;
-    slot 0 for a sensor's first vertex, 1 for the rest."""
+    slot 0 for a sensor's first vertex, 1 for the rest. A sample of emissive
+    triangle ``tri`` (≥ 0) from piece k also adds to k's sums (one row for
+    all vertices): weight × ê_k and weight × value × P(k | x), the piece's
+    shadowed irradiance (the value was divided by P(k | x))."""
     if is_delta(scene.lights[li]):
         return
+    if scene.lights[li].kind == _EMISSIVE and tri >= 0 and scene.n_pieces > 1:
+        pc = scene.emit_piece[tri]
+        pr = piece_probability(scene, pc, p, n, piece_totals(scene, p, n))
+        j = params.thread * scene.n_pieces + pc
+        ek = piece_estimate(scene, pc, p, n)
+        scene.piece_tally[j] = scene.piece_tally[j] + weight * wp.vec2(ek[0], importance(got) * pr)
     slot = wp.where(depth == 0 and params.mask_row >= 0, 0, 1)
     k = (params.thread * 2 + slot) * scene.n_lights + li
     e = light_estimate(scene, li, p, n)

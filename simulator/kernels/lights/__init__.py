@@ -32,7 +32,7 @@ DOME           cosine lobe about the receiver normal                  cosθ/π
 DOME (map)     texel ∝ value·sinθ, uniform in (u, v) inside it        pdf_uv/(2π² sinθ)
 DOME (portal)  portal ∝ projected solid angle Π, then uniform in it   Σ_k (Π_k/ΣΠ)/Ω_k through portals, 0 elsewhere
 CYLINDER       uniform in area on the side, front-facing points       d²/(A·cosθl)
-EMISSIVE       triangle ∝ its power, then uniform in area             P(tri)·d²/(A·|cosθl|)
+EMISSIVE       piece by estimate × visibility, triangle ∝ power, area  P(k|x)·P(tri|k)·d²/(A·|cosθl|)
 =============  =====================================================  ==================
 """
 

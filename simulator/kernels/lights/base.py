@@ -126,8 +126,18 @@ class SceneRec:
     mirror_planes: wp.array(dtype=wp.vec4)  # (n, d): n·x = d
     face_mirror: wp.array(dtype=wp.int32)  # per triangle: its mirror plane, −1 for none
     emit_tris: wp.array(dtype=wp.int32)  # emissive triangle ids
-    emit_cdf: wp.array(dtype=float)  # inclusive CDF over emit_tris, last = 1
-    emit_prob: wp.array(dtype=float)  # per triangle: probability of being picked (0 if not emissive)
+    emit_cdf: wp.array(dtype=float)  # per piece, the inclusive CDF over its emit_tris (last = 1), concatenated
+    emit_prob: wp.array(dtype=float)  # per triangle: its share of its piece's power (0 if not emissive)
+    # emitter pieces (simulator.scene.emitters; lights/emissive.py picks one per sample)
+    n_pieces: int
+    emit_piece: wp.array(dtype=wp.int32)  # per triangle: its piece, −1 when it does not emit
+    piece_first: wp.array(dtype=wp.int32)  # per piece: its first entry of emit_tris
+    piece_count: wp.array(dtype=wp.int32)  # per piece: its number of triangles
+    piece_centre: wp.array(dtype=wp.vec3)  # area-weighted centroid (m)
+    piece_normal: wp.array(dtype=wp.vec3)  # area-weighted mean front normal (length 1 when flat)
+    piece_shape: wp.array(dtype=wp.vec4)  # (area m², radiance W + lm/683, reach m, two-sided 0/1)
+    piece_factor: wp.array(dtype=float)  # per piece: the learned factor of its pick (a pilot's, 1 before)
+    piece_tally: wp.array(dtype=wp.vec2)  # (threads × n_pieces): a pilot's Σ(ê, shadowed value), TraceParams.tally_pick
     lights: wp.array(dtype=LightRec)
     n_lights: int
     eps: float  # ray-origin offset relative to max(1 m, |p|∞)

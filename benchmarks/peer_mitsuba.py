@@ -1,0 +1,206 @@
+"""probesim and Mitsuba 3 side by side on the same stage, to the same RMS error.
+
+Converts a probesim run config's scene to Mitsuba 3 (triangles with their
+Lambertian albedo, both faces reflecting; RectLights as area-emitting
+rectangles; a uniform DomeLight as a constant emitter; a DistantLight as a
+directional emitter of its normal illuminance; emissive triangles as area
+emitters) and each irradiance sensor to a small white Lambertian disk proxy
+(radius ``--proxy-m``) seen by a ``radiancemeter`` 1 mm above it (E = π·L),
+all meters in one ``batch`` sensor, so one render reads every sensor. Both are read at a ladder of
+budgets against the config's stored reference (configs/references/NAME.csv,
+in lx); the RMS relative error has the reference's own variance subtracted,
+as ``probesim bench`` does. Prints the wall time each takes to reach each
+``--rms`` target (interpolated on the 1/√t line between the two budgets
+that bracket it), with the machine and its load.
+
+Needs the optional extra ``peer`` (``pip install mitsuba``; its LLVM
+backend, variant ``llvm_ad_mono``, needs a libLLVM recent enough for Dr.Jit:
+LLVM 14 and 15 fail to select ``fmaximum``, 19 works; point Dr.Jit at it
+with ``DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM.so.19.1``).
+
+    PYTHONPATH=. python benchmarks/peer_mitsuba.py configs/office_bench.toml --rms 0.01 0.003
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import os
+import platform
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _write_ply(path: Path, points: np.ndarray, tris: np.ndarray) -> None:
+    """A binary little-endian PLY of one triangle mesh."""
+    head = (f"ply\nformat binary_little_endian 1.0\nelement vertex {len(points)}\nproperty float x\n"
+            f"property float y\nproperty float z\nelement face {len(tris)}\n"
+            "property list uchar int vertex_indices\nend_header\n")  # fmt: skip
+    faces = np.zeros(len(tris), dtype=[("n", "u1"), ("v", "<i4", 3)])
+    faces["n"], faces["v"] = 3, tris
+    with open(path, "wb") as f:
+        f.write(head.encode())
+        f.write(points.astype("<f4").tobytes())
+        f.write(faces.tobytes())
+
+
+def mitsuba_scene(scene, sensors, spp: int, proxy_m: float, tmp: Path):
+    """The Mitsuba scene dict (photometric channel: radiance in cd/m², readings in lx)."""
+    import mitsuba as mi
+
+    T = mi.ScalarTransform4f
+    g = scene.geometry
+    d = {"type": "scene", "integrator": {"type": "path", "max_depth": -1}}
+    emits = np.any(g.emission > 0, axis=1)
+    keys = np.round(g.albedo, 6) + 10.0 * emits  # one mesh per albedo (and per emitter)
+    for k, key in enumerate(np.unique(keys)):
+        sel = np.flatnonzero(keys == key)
+        used, inv = np.unique(g.triangles[sel].ravel(), return_inverse=True)
+        ply = tmp / f"mesh_{k}.ply"
+        _write_ply(ply, g.points[used], inv.reshape(-1, 3))
+        shape = {"type": "ply", "filename": str(ply), "face_normals": True,
+                 "bsdf": {"type": "twosided", "bsdf": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": float(g.albedo[sel[0]])}}}}  # fmt: skip
+        if emits[sel[0]]:
+            shape["emitter"] = {"type": "area", "radiance": {"type": "spectrum", "value": float(g.emission[sel[0], 1])}}
+        d[f"mesh_{k}"] = shape
+    for j, l in enumerate(scene.lights):
+        kind = int(l.kind)
+        if kind == 2:  # rect: emits toward its −Z; Mitsuba's rectangle emits toward +Z over [-1, 1]²
+            m = np.eye(4)
+            m[:3, 0], m[:3, 1], m[:3, 2] = l.frame[:, 0] * l.width / 2, -l.frame[:, 1] * l.height / 2, -l.frame[:, 2]
+            m[:3, 3] = l.position
+            # a null BSDF: paths pass through it as through a RectLight, which is not geometry
+            # (shadow rays still stop on it: Mitsuba's path integrator tests every shape)
+            d[f"light_{j}"] = {"type": "rectangle", "to_world": T(m.tolist()), "bsdf": {"type": "null"},
+                               "emitter": {"type": "area", "radiance": {"type": "spectrum", "value": float(l.emission[1])}}}  # fmt: skip
+        elif kind == 5 and not l.texture:  # uniform dome
+            d[f"light_{j}"] = {"type": "constant", "radiance": {"type": "spectrum", "value": float(l.emission[1])}}
+        elif kind == 4 and l.half_angle <= 0:  # delta distant: its normal illuminance, toward −ez
+            d[f"light_{j}"] = {"type": "directional", "direction": (-l.frame[:, 2]).tolist(),
+                               "irradiance": {"type": "spectrum", "value": float(l.emission[1])}}  # fmt: skip
+        elif kind == 4:  # a sun's disc: an emitting disk 1 km off toward +ez subtending its angle (its penumbrae)
+            far = 1000.0
+            centre = g.points.mean(axis=0) + far * l.frame[:, 2]
+            disc = T().look_at(origin=centre.tolist(), target=(centre - l.frame[:, 2]).tolist(),
+                               up=[0, 0, 1] if abs(l.frame[2, 2]) < 0.9 else [0, 1, 0]) @ T().scale(float(far * np.tan(l.half_angle)))
+            d[f"light_{j}"] = {"type": "disk", "to_world": disc, "bsdf": {"type": "null"},
+                               "emitter": {"type": "area", "radiance": {"type": "spectrum", "value": float(l.emission[1])}}}  # fmt: skip
+        else:
+            raise SystemExit(f"{l.name}: light kind {l.kind.name} is not converted")
+    # each sensor: a white Lambertian proxy disk (reflectance 1) facing along its normal and a
+    # radiance meter 1 mm above its centre looking at it: L = E/π, E the irradiance there with every
+    # light by next-event estimation (an irradiance meter's own rays can never meet a delta sun)
+    meters = {"type": "batch", "film": {"type": "hdrfilm", "width": len(sensors), "height": 1,
+                                        "pixel_format": "luminance", "rfilter": {"type": "box"}},
+              "sampler": {"type": "independent", "sample_count": spp}}  # fmt: skip
+    for i, s in enumerate(sensors):
+        up = [0, 0, 1] if abs(s.normal[2]) < 0.9 else [0, 1, 0]
+        to_world = T().look_at(origin=s.position.tolist(), target=(s.position + s.normal).tolist(), up=up) @ T().scale(float(proxy_m))
+        d[f"proxy_{i:05d}"] = {"type": "disk", "to_world": to_world,
+                               "bsdf": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": 1.0}}}  # fmt: skip
+        meters[f"meter_{i:05d}"] = {
+            "type": "radiancemeter", "origin": (s.position + 1e-3 * s.normal).tolist(), "direction": (-s.normal).tolist(),
+            "film": {"type": "hdrfilm", "width": 1, "height": 1, "pixel_format": "luminance", "rfilter": {"type": "box"}},
+        }  # fmt: skip
+    d["meters"] = meters
+    return d
+
+
+def run_mitsuba(scene, sensors, spp: int, proxy_m: float, seed: int) -> tuple[np.ndarray, float]:
+    """(readings in lx, wall seconds of the renders) at ``spp`` samples per sensor."""
+    import mitsuba as mi
+
+    with tempfile.TemporaryDirectory() as tmp:
+        ms = mi.load_dict(mitsuba_scene(scene, sensors, spp, proxy_m, Path(tmp)))
+        t0 = time.perf_counter()
+        img = np.asarray(mi.render(ms, spp=spp, seed=seed)).reshape(-1)  # every meter in one pass
+        wall = time.perf_counter() - t0
+    return np.pi * img[: len(sensors)].astype(np.float64), wall
+
+
+def run_probesim(cfg, scene, sensors, samples: int, seed: int, engine) -> tuple[np.ndarray, float]:
+    """(readings in lx, wall seconds) of the config's plan at ``samples`` per sensor, warm."""
+    from dataclasses import replace
+
+    from simulator.pipeline import run_plan
+    from simulator.plan.planner import make_plan
+
+    sim = replace(cfg.simulation, samples=samples, seed=seed, rel_error=None)
+    plan = make_plan(scene, sensors, sim.method, sim.component)
+    t0 = time.perf_counter()
+    res = run_plan(engine, plan, sim)
+    return res.mean[:, 1], time.perf_counter() - t0
+
+
+def rms(values: np.ndarray, ref: np.ndarray, ref_se: np.ndarray) -> float:
+    """Relative RMS error over the sensors, the reference's own variance subtracted."""
+    r2 = np.mean(((values - ref) / ref) ** 2) - np.mean((ref_se / ref) ** 2)
+    return float(np.sqrt(max(r2, 0.0)))
+
+
+def time_to(points: list[tuple[float, float]], target: float) -> tuple[float, bool]:
+    """Seconds to reach ``target`` RMS from (seconds, rms) budgets, and whether a budget reached
+    it: on the line (log-log) through the first budget at or under it and the one before; if none
+    did, extrapolated from the last budget on the 1/√t line of an unbiased estimator."""
+    for k, (t, e) in enumerate(points):
+        if e <= target:
+            if k == 0:
+                return t * (e / target) ** 2, True
+            t0, e0 = points[k - 1]
+            slope = np.log(e / e0) / np.log(t / t0) if t > t0 and e0 > 0 and e > 0 else -0.5
+            return (float(t0 * (target / e0) ** (1.0 / slope)) if slope < 0 else t), True
+    t, e = points[-1]
+    return t * (e / target) ** 2, False
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("config", nargs="?", default=str(ROOT / "configs" / "office_bench.toml"))
+    ap.add_argument("--rms", type=float, nargs="+", default=[0.01])
+    ap.add_argument("--probesim-samples", type=int, nargs="+", default=[256, 1024, 4096])
+    ap.add_argument("--mitsuba-spp", type=int, nargs="+", default=[1024, 4096, 16384])
+    ap.add_argument("--proxy-m", type=float, default=0.005)
+    a = ap.parse_args()
+
+    import mitsuba as mi
+
+    from simulator.config import load_config
+    from simulator.engine.driver import Engine, load_kernels
+    from simulator.pipeline import load_scene
+
+    mi.set_variant("llvm_ad_mono")
+    cfg = load_config(a.config)
+    scene = load_scene(cfg)
+    sensors = list(cfg.sensors)
+    ref_rows = {r["sensor"]: r for r in csv.DictReader((ROOT / "configs" / "references" / f"{Path(a.config).stem}.csv").open())}
+    ref = np.array([float(ref_rows[s.name]["illuminance_lx"]) for s in sensors])
+    ref_se = np.array([float(ref_rows[s.name]["illuminance_stderr_lx"]) for s in sensors])
+    print(f"{platform.processor() or platform.machine()}, {os.cpu_count()} CPUs, load {os.getloadavg()[0]:.2f} at start; "
+          f"{len(sensors)} sensors, {scene.geometry.n_triangles} triangles; reference RMS stderr "
+          f"{np.sqrt(np.mean((ref_se / ref) ** 2)):.2%}")  # fmt: skip
+    load_kernels(cfg.simulation.device)
+    engine = Engine(scene, sensors, device=cfg.simulation.device)
+    run_probesim(cfg, scene, sensors, 8, 7, engine)  # pilots and guide, once per engine (kept out of the times)
+    rows = {"probesim": [], "mitsuba": []}
+    for n in a.probesim_samples:
+        v, t = run_probesim(cfg, scene, sensors, n, 11, engine)
+        rows["probesim"].append((t, rms(v, ref, ref_se)))
+        print(f"probesim {n:6d} samples/sensor: {t:8.2f} s  RMS {rows['probesim'][-1][1]:.3%}", flush=True)
+    run_mitsuba(scene, sensors[:2], 4, a.proxy_m, 1)  # compile the kernels once (kept out of the times)
+    for spp in a.mitsuba_spp:
+        v, t = run_mitsuba(scene, sensors, spp, a.proxy_m, 11)
+        rows["mitsuba"].append((t, rms(v, ref, ref_se)))
+        print(f"mitsuba  {spp:6d} spp:            {t:8.2f} s  RMS {rows['mitsuba'][-1][1]:.3%}", flush=True)
+    for target in a.rms:
+        (tp, rp), (tm, rm) = time_to(rows["probesim"], target), time_to(rows["mitsuba"], target)
+        print(f"to {target:.2%} RMS: probesim {tp:.1f} s{'' if rp else ' (extrapolated)'}, mitsuba {tm:.1f} s"
+              f"{'' if rm else ' (extrapolated)'}, probesim/mitsuba {tp / tm:.2f}x; load {os.getloadavg()[0]:.2f} at end")  # fmt: skip
+
+
+if __name__ == "__main__":
+    main()
