@@ -49,22 +49,32 @@ def _write_ply(path: Path, points: np.ndarray, tris: np.ndarray) -> None:
         f.write(faces.tobytes())
 
 
-def mitsuba_scene(scene, sensors, spp: int, proxy_m: float, tmp: Path):
-    """The Mitsuba scene dict (photometric channel: radiance in cd/m², readings in lx)."""
+def mitsuba_scene(scene, sensors, spp: int, proxy_m: float, tmp: Path, bsdf_of=None):
+    """The Mitsuba scene dict (photometric channel: radiance in cd/m², readings in lx).
+
+    ``bsdf_of(surface, albedo)``, given a face group's ``Surface`` row (None
+    for a matte face) and its albedo (diffuseColor's grey), returns the Mitsuba BSDF dict to use for it, or None for
+    the Lambertian conversion; radiance sensors become bare radiance meters
+    along their direction (cd/m²)."""
     import mitsuba as mi
+
+    from simulator.scene.model import SensorKind
 
     T = mi.ScalarTransform4f
     g = scene.geometry
     d = {"type": "scene", "integrator": {"type": "path", "max_depth": -1}}
     emits = np.any(g.emission > 0, axis=1)
-    keys = np.round(g.albedo, 6) + 10.0 * emits  # one mesh per albedo (and per emitter)
+    sid = g.surface_id if g.surface_id is not None else np.full(g.n_triangles, -1)
+    keys = np.round(g.albedo, 6) + 10.0 * emits + 100.0 * (sid + 1)  # one mesh per albedo, emitter, surface row
     for k, key in enumerate(np.unique(keys)):
         sel = np.flatnonzero(keys == key)
         used, inv = np.unique(g.triangles[sel].ravel(), return_inverse=True)
         ply = tmp / f"mesh_{k}.ply"
         _write_ply(ply, g.points[used], inv.reshape(-1, 3))
+        row = g.surfaces[sid[sel[0]]] if sid[sel[0]] >= 0 else None
+        bsdf = bsdf_of(row, float(g.albedo[sel[0]])) if bsdf_of else None
         shape = {"type": "ply", "filename": str(ply), "face_normals": True,
-                 "bsdf": {"type": "twosided", "bsdf": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": float(g.albedo[sel[0]])}}}}  # fmt: skip
+                 "bsdf": bsdf or {"type": "twosided", "bsdf": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": float(g.albedo[sel[0]])}}}}  # fmt: skip
         if emits[sel[0]]:
             shape["emitter"] = {"type": "area", "radiance": {"type": "spectrum", "value": float(g.emission[sel[0], 1])}}
         d[f"mesh_{k}"] = shape
@@ -99,6 +109,12 @@ def mitsuba_scene(scene, sensors, spp: int, proxy_m: float, tmp: Path):
                                         "pixel_format": "luminance", "rfilter": {"type": "box"}},
               "sampler": {"type": "independent", "sample_count": spp}}  # fmt: skip
     for i, s in enumerate(sensors):
+        if s.kind == SensorKind.RADIANCE:
+            meters[f"meter_{i:05d}"] = {
+                "type": "radiancemeter", "origin": s.position.tolist(), "direction": s.normal.tolist(),
+                "film": {"type": "hdrfilm", "width": 1, "height": 1, "pixel_format": "luminance", "rfilter": {"type": "box"}},
+            }  # fmt: skip
+            continue
         up = [0, 0, 1] if abs(s.normal[2]) < 0.9 else [0, 1, 0]
         to_world = T().look_at(origin=s.position.tolist(), target=(s.position + s.normal).tolist(), up=up) @ T().scale(float(proxy_m))
         d[f"proxy_{i:05d}"] = {"type": "disk", "to_world": to_world,
@@ -111,16 +127,19 @@ def mitsuba_scene(scene, sensors, spp: int, proxy_m: float, tmp: Path):
     return d
 
 
-def run_mitsuba(scene, sensors, spp: int, proxy_m: float, seed: int) -> tuple[np.ndarray, float]:
-    """(readings in lx, wall seconds of the renders) at ``spp`` samples per sensor."""
+def run_mitsuba(scene, sensors, spp: int, proxy_m: float, seed: int, bsdf_of=None) -> tuple[np.ndarray, float]:
+    """(readings in lx, cd/m² for radiance sensors; wall seconds of the renders) at ``spp`` samples per sensor."""
     import mitsuba as mi
 
+    from simulator.scene.model import SensorKind
+
     with tempfile.TemporaryDirectory() as tmp:
-        ms = mi.load_dict(mitsuba_scene(scene, sensors, spp, proxy_m, Path(tmp)))
+        ms = mi.load_dict(mitsuba_scene(scene, sensors, spp, proxy_m, Path(tmp), bsdf_of))
         t0 = time.perf_counter()
         img = np.asarray(mi.render(ms, spp=spp, seed=seed)).reshape(-1)  # every meter in one pass
         wall = time.perf_counter() - t0
-    return np.pi * img[: len(sensors)].astype(np.float64), wall
+    scale = np.array([1.0 if s.kind == SensorKind.RADIANCE else np.pi for s in sensors])  # E = π·L off the proxy
+    return scale * img[: len(sensors)].astype(np.float64), wall
 
 
 def run_probesim(cfg, scene, sensors, samples: int, seed: int, engine) -> tuple[np.ndarray, float]:
