@@ -215,6 +215,7 @@ def load_case(case: Case, tmp: Path):
 
 
 def probesim_value(scene, sensors, samples: int, seed: int = 7) -> tuple[float, float]:
+    """probesim's (reading, standard error) of the one sensor, photometric (lx or cd/m²), plain paths."""
     from simulator.engine.driver import Engine
 
     res = Engine(scene, sensors).run("path", samples=samples, seed=seed)
@@ -222,11 +223,15 @@ def probesim_value(scene, sensors, samples: int, seed: int = 7) -> tuple[float, 
 
 
 def mitsuba_value(scene, sensors, spp: int, passes: int, seed: int = 11) -> tuple[float, float]:
+    """Mitsuba's (reading, standard error): the mean of ``passes`` renders at distinct seeds and the
+    standard error of that mean from their spread."""
     v = np.array([run_mitsuba(scene, sensors, spp, 0.002, seed + k, mitsuba_bsdf)[0][0] for k in range(passes)])
     return float(v.mean()), float(v.std(ddof=1) / math.sqrt(passes))
 
 
 def compare(case: Case, tmp: Path, passes: int) -> dict:
+    """Both readings of a case, their relative difference, the residual beyond the model gap in
+    combined standard errors, the verdict, and each renderer's CPU seconds."""
     scene, sensors = load_case(case, tmp)
     t0 = time.process_time()
     p, pse = probesim_value(scene, sensors, case.samples)
@@ -254,15 +259,18 @@ def main() -> None:
     print("| scene | sensor | probesim | Mitsuba 3 | Mitsuba/probesim − 1 | model gap | (diff − gap)/σ | verdict "
           "| closed form (probesim model) | Mitsuba model |")
     print("|---|---|---|---|---|---|---|---|---|---|")
+    cpu = [0.0, 0.0]
     with tempfile.TemporaryDirectory() as tmp:
         for case in cases(a.scale):
             r = compare(case, Path(tmp), a.passes)
+            cpu[0], cpu[1] = cpu[0] + r["cpu_p"], cpu[1] + r["cpu_m"]
             unit = "cd/m²" if case.kind == "radiance" else "lx"
             print(f"| {case.name} | {case.kind} | {r['p']:.4g} ± {r['pse']:.2g} {unit} | {r['m']:.4g} ± {r['mse']:.2g} | "
                   f"{r['rel']:+.3%} | {case.gap:+.3%} | {r['nsig']:.1f} | {'ok' if r['ok'] else 'DIFFERS'} | "
                   f"{'—' if case.exact is None else f'{case.exact:.4g}'} | {case.note} |",
                   flush=True)  # fmt: skip
-    print(f"load {os.getloadavg()[0]:.2f} at end")
+    print(f"CPU seconds: probesim {cpu[0]:.1f}, Mitsuba {cpu[1]:.1f} (kernel compilation included); "
+          f"load {os.getloadavg()[0]:.2f} at end")
 
 
 if __name__ == "__main__":
