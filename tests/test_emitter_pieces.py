@@ -192,3 +192,30 @@ def test_plan_names_the_pieces(tmp_path):
     plan = make_plan(scene, [s], "mis", "total")
     line = plan.light_sampling["mis"]
     assert "emissive geometry" in line and "pieces" in line and "visibility a pilot learns" in line
+
+
+def test_split_emitters_keeps_every_per_triangle_array_aligned():
+    """Every per-triangle array of the geometry follows the cut: an array of length T before the split
+    has the split's length after it, holding the value of the triangle each piece came from (a surface
+    row or solid side left at the old length sent the kernels past the end of the array)."""
+    from dataclasses import fields
+
+    from simulator.scene.emitters import split_emitters
+    from simulator.scene.model import Geometry
+
+    pts = np.array([[0, 0, 0], [4, 0, 0], [0, 3, 0], [0, 0, 1], [1, 0, 1], [0, 1, 1]], float)
+    tris = np.array([[0, 1, 2], [3, 4, 5]], np.int32)
+    g = Geometry(points=pts, triangles=tris, albedo=np.array([0.5, 0.3]), emission=np.array([[1.0, 1.0], [0.0, 0.0]]),
+                 two_sided=np.array([False, True]), prim=np.array([0, 1], np.int32), prim_names=["a", "b"],
+                 albedo_rgb=np.array([[0.5] * 3, [0.3] * 3]), reflectance_id=np.array([-1, -1], np.int32),
+                 emission_rgb=np.ones((2, 3)), surface_id=np.array([0, -1], np.int32),
+                 solid_side=np.array([1, 0], np.int8))
+    split, orig = split_emitters(g, 1.0)
+    assert split.n_triangles > g.n_triangles
+    for f in fields(Geometry):
+        a = getattr(g, f.name)
+        if f.name in ("points", "triangles") or not isinstance(a, np.ndarray) or len(a) != g.n_triangles:
+            continue
+        b = getattr(split, f.name)
+        assert b is not None and len(b) == split.n_triangles, f.name
+        np.testing.assert_array_equal(b, a[orig], err_msg=f.name)

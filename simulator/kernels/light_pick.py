@@ -322,8 +322,10 @@ def tally_pick(
     shadowed irradiance (the value was divided by P(k | x))."""
     if is_delta(scene.lights[li]):
         return
+    pc = int(-1)
     if scene.lights[li].kind == _EMISSIVE and tri >= 0 and scene.n_pieces > 1:
         pc = scene.emit_piece[tri]
+    if pc >= 0:
         pr = piece_probability(scene, pc, p, n, piece_totals(scene, p, n))
         j = params.thread * scene.n_pieces + pc
         ek = piece_estimate(scene, pc, p, n)

@@ -134,6 +134,7 @@ def split_emitters(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> t
         emission=g.emission[orig], two_sided=g.two_sided[orig],
         prim=g.prim[orig] if len(g.prim) == n_tri else g.prim, albedo_rgb=take(g.albedo_rgb),
         reflectance_id=take(g.reflectance_id), emission_rgb=take(g.emission_rgb),
+        surface_id=take(g.surface_id), solid_side=take(g.solid_side),
     )  # fmt: skip
     return out, orig
 

@@ -188,7 +188,10 @@ def pdf(scene: SceneRec, l: LightRec, p: wp.vec3, n: wp.vec3, wi: wp.vec3, t: fl
         return 0.0
     prob = float(1.0)
     if scene.n_pieces > 1:
-        prob = piece_probability(scene, scene.emit_piece[tri], p, n, piece_totals(scene, p, n))
+        pc = scene.emit_piece[tri]
+        if pc < 0:  # a triangle that emits nothing: no piece, and emit_prob 0 besides
+            return 0.0
+        prob = piece_probability(scene, pc, p, n, piece_totals(scene, p, n))
     return prob * scene.emit_prob[tri] * t * t / (area * cos_l)
 
 
