@@ -34,6 +34,7 @@ from pxr import Sdf, Usd, UsdGeom, UsdShade
 from simulator.errors import UserError
 from simulator.units import luminance_grey
 from simulator.scene.usd.context import _Context, _get, _layer_relative, _name_list, _not_uniform
+from simulator.scene.usd.surface_mapping import IGNORED_PREVIEW_DEFAULTS
 from simulator.scene.usd.textures import _texture_mean
 
 #: UsdPreviewSurface's fallback diffuseColor (0.18, 0.18, 0.18), used when nothing is authored
@@ -70,12 +71,9 @@ _PREVIEW_DEFAULTS = {
 _UNMODELLED = ("roughness", "metallic", "specularColor", "useSpecularWorkflow", "clearcoat", "clearcoatRoughness")
 
 # UsdPreviewSurface inputs probesim does not read, with their fallbacks: an
-# input authored (or connected) away from its fallback is counted as ignored.
-_IGNORED_DEFAULTS = {
-    "normal": (0.0, 0.0, 1.0),
-    "displacement": 0.0,
-    "occlusion": 1.0,
-}
+# input authored (or connected) away from its fallback is counted as ignored
+# (declared beside the MaterialX/MDL mappings, which count them the same way).
+_IGNORED_DEFAULTS = IGNORED_PREVIEW_DEFAULTS
 
 
 def _surface(ctx: _Context, prim: Usd.Prim,

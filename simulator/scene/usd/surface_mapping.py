@@ -20,6 +20,14 @@ from simulator.units import luminance_grey
 from simulator.scene.usd.context import _Context
 from simulator.scene.usd.shading_graph import Node, NotUniform, Port, Value, as_array, port_value
 
+#: UsdPreviewSurface inputs probesim does not model, with their fallbacks: an input authored (or
+#: connected, or mapped from a MaterialX/MDL surface) away from its fallback is counted as ignored
+IGNORED_PREVIEW_DEFAULTS = {
+    "normal": (0.0, 0.0, 1.0),
+    "displacement": 0.0,
+    "occlusion": 1.0,
+}
+
 class SurfaceInputs:
     """A surface node's inputs, evaluated to uniform values, with the model's defaults.
 
@@ -225,12 +233,10 @@ def complete(ctx: _Context, inputs: dict, where: str) -> dict:
 
 def count_carried(ctx: _Context, inputs: dict) -> None:
     """Count, as "ignored", the mapped inputs the surfaces do not model (those UsdPreviewSurface's own
-    reader counts: :data:`simulator.scene.usd.materials._IGNORED_DEFAULTS`), where they differ from the
+    reader counts: :data:`IGNORED_PREVIEW_DEFAULTS`), where they differ from the
     value that changes nothing. The cut-out and glazing inputs are modelled (:mod:`simulator.scene.surfaces`)."""
-    from simulator.scene.usd.materials import _IGNORED_DEFAULTS
-
     for name, (value, _) in inputs.items():
-        if name in _IGNORED_DEFAULTS:
-            default = _IGNORED_DEFAULTS[name]
+        if name in IGNORED_PREVIEW_DEFAULTS:
+            default = IGNORED_PREVIEW_DEFAULTS[name]
             if not np.allclose(np.asarray(value, float), np.asarray(default, float), rtol=0, atol=1e-6):
                 ctx.ignored[f"inputs:{name}"] += 1
