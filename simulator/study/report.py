@@ -233,6 +233,19 @@ def dropped_in_zone(res, zone: str) -> np.ndarray:
     return np.array(pts).reshape(-1, 3)
 
 
+def draw_plan(ax, plan) -> None:
+    """The room's walls (dark grey), openings (blue) and furniture (brown) of a :class:`~simulator.study.outline.Plan`
+    on a plan axis (x, y in metres); nothing when ``plan`` is None."""
+    if plan is None:
+        return
+    for seg in plan.walls:
+        ax.plot(seg[:, 0], seg[:, 1], color="0.25", lw=1.6, solid_capstyle="butt")
+    for line in plan.openings:
+        ax.plot(line[:, 0], line[:, 1], color="tab:blue", lw=2.2)
+    for line in plan.furniture:
+        ax.plot(line[:, 0], line[:, 1], color="saddlebrown", lw=0.8)
+
+
 def heat_map_png(res, zone: str) -> bytes:
     """PNG of one zone's readings, a panel per scenario (up to :data:`MAX_PANELS`).
 
@@ -284,13 +297,7 @@ def heat_map_png(res, zone: str) -> bytes:
                            cmap="viridis", norm=norm, interpolation="nearest")  # fmt: skip
         else:
             im = ax.scatter(xy[:, 0], xy[:, 1], c=v, cmap="viridis", norm=norm, marker="s", s=30, linewidths=0)
-        if plan is not None:
-            for seg in plan.walls:
-                ax.plot(seg[:, 0], seg[:, 1], color="0.25", lw=1.6, solid_capstyle="butt")
-            for line in plan.openings:
-                ax.plot(line[:, 0], line[:, 1], color="tab:blue", lw=2.2)
-            for line in plan.furniture:
-                ax.plot(line[:, 0], line[:, 1], color="saddlebrown", lw=0.8)
+        draw_plan(ax, plan)
         if len(dropped):
             ax.plot(dropped[:, 0], dropped[:, 1], "+", color="0.5", markersize=5, mew=1)
         for name in chosen:
@@ -391,6 +398,7 @@ def cost(res) -> dict:
 
 def write_outputs(res, versions: dict) -> list[Path]:
     """Write the CSVs, heat maps, report page and record into ``res.out_dir``; returns the paths."""
+    import simulator.study.annual_report  # noqa: F401  (registers the annual section; shown when res.annual is set)
     from simulator.study.html_report import report_html
 
     d = res.out_dir
