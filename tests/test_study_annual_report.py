@@ -160,7 +160,7 @@ def test_an_annual_only_study_gets_a_report_of_its_own(both):
 
     d, _, _ = both
     p = d / "annual_only.toml"
-    p.write_text(_text(d, ""))
+    p.write_text(_text(d, ""))  # the same [annual]: its chunks come from the store, its files are the same bytes
     assert main_study(str(p), None, None) == 0
     page = (d / "out" / "report.html").read_text()
     assert 'id="annual"' in page and 'id="zones"' not in page and "<script" not in page.lower()
@@ -190,3 +190,18 @@ def test_the_annual_report_renders_in_headless_chromium_without_console_errors(b
     assert shot.is_file() and shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 10_000
     console = [ln for ln in r.stderr.splitlines() if "CONSOLE" in ln]
     assert not [ln for ln in console if "ERROR" in ln or "Uncaught" in ln], console
+
+
+def test_the_report_is_the_same_bytes_on_a_scheduler(both, tmp_path):
+    """Both parts' chunks on a dask scheduler (a threaded LocalCluster): report.html and the annual CSVs
+    are the in-process run's bytes."""
+    distributed = pytest.importorskip("distributed")
+    from simulator.commands.cli import main
+
+    d, p, raw = both
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None,
+                                  silence_logs=40) as cluster:  # fmt: skip
+        assert main(["study", str(p), "--out", str(tmp_path / "sched"), "--scheduler", cluster.scheduler_address]) == 0
+    assert (tmp_path / "sched" / "report.html").read_bytes() == raw
+    for name in ("annual_hourly.csv", "annual_hourly_stderr.csv", "annual_metrics.csv", "annual_control.csv"):
+        assert (tmp_path / "sched" / name).read_bytes() == (d / "out" / name).read_bytes(), name

@@ -105,12 +105,16 @@ def _da_map_png(ares, zone: str, da_lx: float, chosen: list[str]) -> bytes:
     return _png(fig)
 
 
-def _temporal_png(grid: np.ndarray, days: np.ndarray, title: str, label: str, vmax: float | None = None) -> bytes:
+def _temporal_png(grid: np.ndarray, days: np.ndarray, title: str, label: str, vmax: float | None = None,
+                  grey: str = "hours not analysed") -> bytes:
     from matplotlib.figure import Figure
 
+    from matplotlib import colormaps
+
+    cmap = colormaps["magma"].with_extremes(bad="0.85")  # hours not analysed (or not occupied): light grey
     fig = Figure(figsize=(6.0, 2.6), dpi=80)
     ax = fig.subplots()
-    im = ax.imshow(grid, origin="lower", aspect="auto", interpolation="nearest", cmap="magma", vmin=0.0,
+    im = ax.imshow(grid, origin="lower", aspect="auto", interpolation="nearest", cmap=cmap, vmin=0.0,
                    vmax=vmax, extent=(-0.5, len(days) - 0.5, -0.5, 23.5))  # fmt: skip
     step = max(1, len(days) // 12)
     ax.set_xticks(range(0, len(days), step))
@@ -119,7 +123,7 @@ def _temporal_png(grid: np.ndarray, days: np.ndarray, title: str, label: str, vm
     ax.tick_params(labelsize=6)
     ax.set_xlabel("day of year (days analysed)", fontsize=6)
     ax.set_ylabel("hour of day (LST)", fontsize=6)
-    ax.set_title(title, fontsize=7)
+    ax.set_title(f"{title}\n(grey: {grey})", fontsize=7)
     fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02).set_label(label, fontsize=6)
     fig.tight_layout()
     return _png(fig)
@@ -154,7 +158,8 @@ def _zone_part(ares, zone: str) -> str:
                  f"temporal map of the mean daylight illuminance, zone {zone}"))  # fmt: skip
     for c in ctls:
         g, days = temporal_grid(ares, np.asarray(c["level"], float), ares.occupied)
-        figs.append((_temporal_png(g, days, f"zone {zone}: lamp level, {c['model']} on {c['chosen']}", "level u (0-1)", 1.0),
+        figs.append((_temporal_png(g, days, f"zone {zone}: lamp level, {c['model']} on {c['chosen']}", "level u (0-1)", 1.0,
+                                   "hours not occupied or not analysed"),
                      f"controlled lighting level over the year, zone {zone}, photosensor {c['chosen']}"))  # fmt: skip
     parts += [f"<figure>{png_img(png, alt)}<figcaption>{esc(alt)}</figcaption></figure>" for png, alt in figs]
     return "".join(parts)
