@@ -76,7 +76,7 @@ def _plan(ares, ids):
 def _da_map_png(ares, zone: str, da_lx: float, chosen: list[str]) -> bytes:
     from matplotlib.figure import Figure
 
-    from simulator.study.report import _raster, draw_plan
+    from simulator.study.heat_maps import _raster, draw_plan
 
     ids = ares.zones[zone]
     xy = np.array([ares.sensors[i].position[:2] for i in ids])
