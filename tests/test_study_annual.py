@@ -333,7 +333,9 @@ def test_recombined_hours_agree_with_single_instant_runs(office):
 
 def test_a_traced_sun_agrees_with_single_instant_runs_every_sunny_hour(tmp_path):
     """``sun_indirect = "traced"``: the sun traced at binned positions (6 degrees), its exact direct part
-    per hour: 16 sunny hours, low sun included, all within 4 standard errors."""
+    per hour: 24 hours with the sun's direct beam over four days, low sun included (0.1 and 1.1 degrees at
+    the hour's centre, three more at 12-13 degrees, up to 77), all 168 readings (seven sensors) within 4
+    standard errors."""
     text = OFFICE.format(stage=ROOT / "stages" / "office.usda", weather=_days(tmp_path)).replace(
         "replicates = 16", 'replicates = 16\nsun_indirect = "traced"\nsun_group = "sun"').replace(
         "[[zone]]", '[[group]]\nname = "sun"\nlights = ["/Office/Sun"]\n[[zone]]', 1)  # fmt: skip
@@ -341,9 +343,9 @@ def test_a_traced_sun_agrees_with_single_instant_runs_every_sunny_hour(tmp_path)
     res = run_annual(study, p, tmp_path / "out", log=lambda m: None)
     assert any("traced at" in n for n in res.notes)
     el = res.weather.sun_elevation_deg[res.rows]
-    sunny = np.nonzero(res.skies.dni_lx > 1000)[0]
-    hours = list(sunny[:: max(1, len(sunny) // 16)][:16])
-    assert len(hours) >= 12 and any(el[k] < 15 for k in hours)
+    sunny = np.nonzero(res.skies.dni_lx > 0)[0]
+    hours = list(sunny[:: max(1, len(sunny) // 24)][:24])
+    assert len(hours) >= 20 and sum(0 < el[k] < 10 for k in hours) >= 2 and any(el[k] > 60 for k in hours)
     z_all, _ = _agreement(res, hours)
     assert np.all(z_all <= 4.0), np.sort(z_all)[-5:]
 

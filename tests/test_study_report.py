@@ -140,12 +140,12 @@ def test_a_registered_section_joins_the_page(study_out):
     res, _ = study_out
     saved = list(hr.SECTIONS)
     try:
-        hr.register_section("annual", lambda r: hr.Section("annual", "Annual <daylight>", "<p>here</p>"), after="zones")
+        hr.register_section("extra", lambda r: hr.Section("extra", "Extra <daylight>", "<p>here</p>"), after="zones")
         page = hr.report_html(res)
     finally:
         hr.SECTIONS[:] = saved
-    assert page.index('id="zones"') < page.index('id="annual"') < page.index('id="placement"')
-    assert "Annual &lt;daylight&gt;" in page
+    assert page.index('id="zones"') < page.index('id="extra"') < page.index('id="placement"')
+    assert "Extra &lt;daylight&gt;" in page
 
 
 def _browser() -> str | None:

@@ -113,6 +113,7 @@ def compute_overrides(scheduler: str | None, workers: int | None, local: bool) -
 
 def main_study(path: str, out: str | None, scheduler: str | None, workers: int | None = None, local: bool = False) -> int:
     from simulator.pipeline import _versions
+    from simulator.study.annual_outputs import annual_note, write_annual_outputs
     from simulator.study.report import write_outputs
     from simulator.study.runner import run_study
     from simulator.study.schema import load_study
@@ -136,25 +137,27 @@ def main_study(path: str, out: str | None, scheduler: str | None, workers: int |
         for w in res.warnings:
             print(f"warning: {w}", file=sys.stderr)
         res.timings_s["total"] = time.perf_counter() - t0
+    # the year runs before any file is written, so that report.html holds the annual section too
+    ares = _annual(study, p, out_dir, scheduler) if study.annual is not None else None
+    if study.scenario:
+        res.annual = ares
         files = write_outputs(res, _versions())
         for line in closing_note(res):
             print(line)
-    if study.annual is not None:
-        files += _annual(study, p, out_dir, scheduler)
+    if ares is not None:
+        for line in annual_note(ares):
+            print(line)
+        files += write_annual_outputs(ares, study, out_dir, None if study.scenario else p)
     print(f"wrote {', '.join(f.name for f in files)} in {out_dir} ({time.perf_counter() - t0:.1f} s in all)")
     return 0
 
 
-def _annual(study, p: Path, out_dir: Path, scheduler: str | None) -> list:
-    """The study's ``[annual]`` part: run (or resume) it, write its files, print its closing lines."""
+def _annual(study, p: Path, out_dir: Path, scheduler: str | None):
+    """The study's ``[annual]`` part: run (or resume) it; its files are written by the caller."""
     from simulator.study.annual import run_annual
-    from simulator.study.annual_outputs import annual_note, write_annual_outputs
 
     try:
-        res = run_annual(study, p, out_dir, scheduler=scheduler, log=lambda m: print(m, file=sys.stderr))
+        return run_annual(study, p, out_dir, scheduler=scheduler, log=lambda m: print(m, file=sys.stderr))
     except KeyboardInterrupt:
         print(f"probesim: interrupted; finished chunks are kept in {out_dir}: run the same command again to resume", file=sys.stderr)
         raise SystemExit(130) from None
-    for line in annual_note(res):
-        print(line)
-    return write_annual_outputs(res, study, out_dir)

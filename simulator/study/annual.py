@@ -203,6 +203,8 @@ class AnnualResult:
     coefficients: Coefficients | None = None
     sky_levels: np.ndarray | None = None  #: (H, 146) d_h
     zones: dict = field(default_factory=dict)  #: zone -> candidate indices
+    scene: object | None = None  #: the stage as read (the report's plans); not in any output file
+    annual_spec: object | None = None  #: the study's [annual] table
 
 
 def _coefficients(specs_dir, specs_ind, specs_lamp, results, n_s: int, lamp_names: list) -> Coefficients:
@@ -429,5 +431,5 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
                                    "metrics_and_control": t_end - t_hourly, "total": t_end - t0},
                         cpu_s={"total": time.process_time() - c0, "trace_in_chunks": trace_cpu, "sun_shadow_rays": c_sun},
                         notes=notes, chunks_total=len(specs), chunks_computed=computed, coefficients=co, sky_levels=d,
-                        zones=zones)  # fmt: skip
+                        zones=zones, scene=base, annual_spec=a)  # fmt: skip
 

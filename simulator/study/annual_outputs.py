@@ -89,8 +89,9 @@ def record(res, study) -> dict:
     }  # fmt: skip
 
 
-def write_annual_outputs(res, study, out_dir: Path) -> list[Path]:
-    """Write the annual CSVs and ``annual.json`` into ``out_dir``; returns the paths."""
+def write_annual_outputs(res, study, out_dir: Path, path: Path | None = None) -> list[Path]:
+    """Write the annual CSVs and ``annual.json`` into ``out_dir``; returns the paths. With ``path`` (the
+    study file of a study with no scenarios) also ``report.html``, the annual section alone."""
     files = {
         out_dir / "annual_hourly.csv": hourly_csv(res, res.mean).encode(),
         out_dir / "annual_hourly_stderr.csv": hourly_csv(res, res.stderr).encode(),
@@ -98,6 +99,10 @@ def write_annual_outputs(res, study, out_dir: Path) -> list[Path]:
     }
     if res.controls:
         files[out_dir / "annual_control.csv"] = control_csv(res).encode()
+    if path is not None:
+        from simulator.study.annual_report import annual_page
+
+        files[out_dir / "report.html"] = annual_page(res, path).encode()
     files[out_dir / "annual.json"] = (json.dumps(record(res, study), indent=1, default=json_default) + "\n").encode()
     for p, data in files.items():
         atomic_write(p, data)

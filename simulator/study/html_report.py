@@ -23,7 +23,7 @@ from typing import Callable
 
 import numpy as np
 
-__all__ = ["Section", "SECTIONS", "register_section", "report_html", "png_img", "table_html"]
+__all__ = ["Section", "SECTIONS", "register_section", "report_html", "page_html", "png_img", "table_html"]
 
 
 @dataclass(frozen=True)
@@ -72,7 +72,7 @@ def _overview(res) -> Section:
 
 
 def _zones(res) -> Section:
-    from simulator.study.report import target_keys
+    from simulator.study.scores import target_keys
 
     unit = "lx" if res.study.light_units == "photometric" else "W/m²"
     keys = target_keys(res)
@@ -106,7 +106,7 @@ def _areas(res) -> Section | None:
 def _gain_curve_png(res) -> bytes:
     from matplotlib.figure import Figure
 
-    from simulator.study.report import placement_unit, score_value
+    from simulator.study.scores import placement_unit, score_value
 
     pl = res.placement
     fig = Figure(figsize=(5.0, 3.0), dpi=80)
@@ -128,7 +128,7 @@ def _gain_curve_png(res) -> bytes:
 
 
 def _placement(res) -> Section | None:
-    from simulator.study.report import score_text
+    from simulator.study.scores import score_text
 
     pl = res.placement
     if pl is None:
@@ -146,7 +146,7 @@ def _placement(res) -> Section | None:
 
 
 def _heat_maps(res) -> Section:
-    from simulator.study.report import heat_map_png
+    from simulator.study.heat_maps import heat_map_png
 
     parts = []
     for z in res.study.zone:
@@ -185,7 +185,7 @@ def register_section(name: str, builder: Callable, *, after: str | None = None, 
 
 _STYLE = """
 body{font-family:system-ui,sans-serif;margin:1.5em;color:#222;max-width:80em}
-h1{font-size:1.4em}h2{font-size:1.15em;margin-top:1.6em;border-bottom:1px solid #ccc}
+h1{font-size:1.4em}h2{font-size:1.15em;margin-top:1.6em;border-bottom:1px solid #ccc}h3{font-size:1em;margin-top:1.2em}
 table{border-collapse:collapse;font-size:.85em;margin:.5em 0}
 th,td{border:1px solid #ccc;padding:.2em .5em;text-align:left}
 table.num td{text-align:right}table.num td:nth-child(-n+2){text-align:left}
@@ -196,10 +196,13 @@ nav a{margin-right:1em}
 
 def report_html(res) -> str:
     """The whole page (UTF-8 text)."""
-    secs = [s for s in (b(res) for _, b in SECTIONS) if s is not None]
+    return page_html(f"probesim study: {res.path.name}", [s for s in (b(res) for _, b in SECTIONS) if s is not None])
+
+
+def page_html(title: str, secs: list[Section]) -> str:
+    """A page of ``secs`` under ``title`` (both escaped here), with their index."""
     nav = "".join(f'<a href="#{esc(s.id)}">{esc(s.title)}</a>' for s in secs)
     body = "".join(f'<section id="{esc(s.id)}"><h2>{esc(s.title)}</h2>{s.body}</section>' for s in secs)
-    title = f"probesim study: {res.path.name}"
     return ("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
             f"<title>{esc(title)}</title><style>{_STYLE}</style></head>"
             f"<body><h1>{esc(title)}</h1><nav>{nav}</nav>{body}</body></html>\n")  # fmt: skip
