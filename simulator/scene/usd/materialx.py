@@ -357,59 +357,65 @@ def _map_preview(ctx: _Context, ins: SurfaceInputs) -> dict:
     return out
 
 
+#: the input names of the two layered models mapped by :func:`_map_layered` (OpenPBR renames Standard
+#: Surface's inputs; its emission is a luminance in cd/m², Standard Surface's is in the stage's light units)
+_STANDARD_NAMES = {
+    "model": "standard_surface", "base": "base", "base_color": "base_color", "subsurface": "subsurface",
+    "subsurface_color": "subsurface_color", "coat": "coat", "coat_color": "coat_color",
+    "coat_roughness": "coat_roughness", "coat_extra": ("coat_IOR",), "metalness": "metalness",
+    "roughness": "specular_roughness", "ior": "specular_IOR", "specular": "specular",
+    "specular_color": "specular_color", "transmission": "transmission", "transmission_color": "transmission_color",
+    "emission": "emission", "emission_color": "emission_color", "opacity": "opacity", "thin": "thin_walled",
+}
+_OPEN_PBR_NAMES = {
+    "model": "open_pbr_surface", "base": "base_weight", "base_color": "base_color", "subsurface": "subsurface_weight",
+    "subsurface_color": "subsurface_color", "coat": "coat_weight", "coat_color": "coat_color",
+    "coat_roughness": "coat_roughness", "coat_extra": ("coat_ior", "coat_darkening"), "metalness": "base_metalness",
+    "roughness": "specular_roughness", "ior": "specular_ior", "specular": "specular_weight",
+    "specular_color": "specular_color", "transmission": "transmission_weight",
+    "transmission_color": "transmission_color", "emission": "emission_luminance", "emission_color": "emission_color",
+    "opacity": "geometry_opacity", "thin": "geometry_thin_walled",
+}
+
+
 def _map_standard(ctx: _Context, ins: SurfaceInputs) -> dict:
     """ND_standard_surface_surfaceshader, after MaterialX's standard_surface_to_UsdPreviewSurface (module doc)."""
-    w = ins.where
-    coat = ins.get("coat")
-    coat_att = coat * ins.get("coat_color") + (1.0 - coat)
-    base = ins.get("base") * ins.get("base_color")
-    ss = ins.get("subsurface")
-    dielectric = ss * ins.get("subsurface_color") + (1.0 - ss) * base
-    metal, ior = ins.scalar("metalness"), ins.scalar("specular_IOR")
-    out = {
-        "diffuseColor": (colour(dielectric * coat_att), f"standard_surface {w('base')} x {w('base_color')}"),
-        "metallic": (metal, w("metalness")),
-        "roughness": (ins.scalar("specular_roughness"), w("specular_roughness")),
-        "ior": (ior, w("specular_IOR")),
-        "emissiveColor": (colour(ins.get("emission") * ins.get("emission_color") * coat_att),
-                          f"standard_surface {w('emission')} x {w('emission_color')}"),
-    }
-    ins.products(("base", "base_color"), ("subsurface", "subsurface_color"), ("subsurface", "base_color"),
-                 ("coat", "coat_color"), ("emission", "emission_color"))
-    _coat(out, ins, "coat", "coat_color", "coat_roughness", ("coat_IOR",))
-    _specular(out, ins, "specular", "specular_color", metal, ior)
-    transmission(out, ins, "transmission", "transmission_color", ior)
-    _cutout(out, ins, "opacity")
-    ins.flag("thin_walled")  # one sheet or a solid is read from the mesh, not this flag
-    return out
+    return _map_layered(ctx, ins, _STANDARD_NAMES, nits=False)
 
 
 def _map_open_pbr(ctx: _Context, ins: SurfaceInputs) -> dict:
     """ND_open_pbr_surface_surfaceshader: as standard_surface with OpenPBR's names; emission in cd/m²."""
+    return _map_layered(ctx, ins, _OPEN_PBR_NAMES, nits=True)
+
+
+def _map_layered(ctx: _Context, ins: SurfaceInputs, k: dict, nits: bool) -> dict:
+    """Standard Surface or OpenPBR (input names ``k``) onto UsdPreviewSurface's inputs: the coat
+    attenuates what lies under it (coat·coat_color + 1 − coat), subsurface blends into the diffuse
+    colour, emission is ``emission · emission_color`` (a luminance where ``nits``)."""
     w = ins.where
-    coat = ins.get("coat_weight")
-    coat_att = coat * ins.get("coat_color") + (1.0 - coat)
-    base = ins.get("base_weight") * ins.get("base_color")
-    ss = ins.get("subsurface_weight")
-    dielectric = ss * ins.get("subsurface_color") + (1.0 - ss) * base
-    metal, ior = ins.scalar("base_metalness"), ins.scalar("specular_ior")
-    nits = ins.get("emission_luminance") * ins.get("emission_color") * coat_att
+    coat = ins.get(k["coat"])
+    coat_att = coat * ins.get(k["coat_color"]) + (1.0 - coat)
+    base = ins.get(k["base"]) * ins.get(k["base_color"])
+    ss = ins.get(k["subsurface"])
+    dielectric = ss * ins.get(k["subsurface_color"]) + (1.0 - ss) * base
+    metal, ior = ins.scalar(k["metalness"]), ins.scalar(k["ior"])
+    emitted = ins.get(k["emission"]) * ins.get(k["emission_color"]) * coat_att
+    unit = " (cd/m^2)" if nits else ""
     out = {
-        "diffuseColor": (colour(dielectric * coat_att), f"open_pbr_surface {w('base_weight')} x {w('base_color')}"),
-        "metallic": (metal, w("base_metalness")),
-        "roughness": (ins.scalar("specular_roughness"), w("specular_roughness")),
-        "ior": (ior, w("specular_ior")),
-        "emissiveColor": (colour(nits_in_light_units(ctx, nits)),
-                          f"open_pbr_surface {w('emission_luminance')} (cd/m^2) x {w('emission_color')}"),
+        "diffuseColor": (colour(dielectric * coat_att), f"{k['model']} {w(k['base'])} x {w(k['base_color'])}"),
+        "metallic": (metal, w(k["metalness"])),
+        "roughness": (ins.scalar(k["roughness"]), w(k["roughness"])),
+        "ior": (ior, w(k["ior"])),
+        "emissiveColor": (colour(nits_in_light_units(ctx, emitted) if nits else emitted),
+                          f"{k['model']} {w(k['emission'])}{unit} x {w(k['emission_color'])}"),
     }
-    ins.products(("base_weight", "base_color"), ("subsurface_weight", "subsurface_color"),
-                 ("subsurface_weight", "base_color"), ("coat_weight", "coat_color"),
-                 ("emission_luminance", "emission_color"))
-    _coat(out, ins, "coat_weight", "coat_color", "coat_roughness", ("coat_ior", "coat_darkening"))
-    _specular(out, ins, "specular_weight", "specular_color", metal, ior)
-    transmission(out, ins, "transmission_weight", "transmission_color", ior)
-    _cutout(out, ins, "geometry_opacity")
-    ins.flag("geometry_thin_walled")
+    ins.products((k["base"], k["base_color"]), (k["subsurface"], k["subsurface_color"]),
+                 (k["subsurface"], k["base_color"]), (k["coat"], k["coat_color"]), (k["emission"], k["emission_color"]))
+    _coat(out, ins, k["coat"], k["coat_color"], k["coat_roughness"], k["coat_extra"])
+    _specular(out, ins, k["specular"], k["specular_color"], metal, ior)
+    transmission(out, ins, k["transmission"], k["transmission_color"], ior)
+    _cutout(out, ins, k["opacity"])
+    ins.flag(k["thin"])  # one sheet or a solid is read from the mesh, not this flag
     return out
 
 
