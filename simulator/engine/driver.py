@@ -232,6 +232,10 @@ class Engine:
         #: per method, how the latest adaptive run sized its batches (see :meth:`run`, ``choose_first_batch``)
         self.batch_plans: dict[str, dict] = {}
         self.piece_factors: np.ndarray | None = None  #: the emitter pieces' learned factors (None: not learnt)
+        self.pick_spread: float | None = None  #: a group pass's pick spread (scenario_pick), None before one
+        self._piece_tally: np.ndarray | None = None  # the latest pick pilot's per-piece sums, (K, 2)
+        self._pick_learnt: tuple | None = None  # (factors, per-row gains) of the latest pick pilot
+        self._pick_scaled = False  # the device's pick factors are steered by a group pass's scenarios
         self._mask_version = 0
 
     def _upload(self) -> DeviceScene:
@@ -400,7 +404,7 @@ class Engine:
         est = first[..., 0] + prior
         got = first[..., 1] + prior * overall
         factors[1:] = np.where(est > 0, got / np.where(est > 0, est, 1.0), overall)
-        pieces = getattr(self, "_piece_tally", None)
+        pieces = self._piece_tally
         if pieces is not None:
             # emitter pieces learn their own factors (one row: the piece's pdf is read at any vertex
             # without its depth); the emissive record's estimate is their sum, so its own factor stays 1
@@ -418,7 +422,7 @@ class Engine:
         """Steer the learnt pick toward the scenarios a group pass serves (``groups.pick_levels``,
         :mod:`simulator.engine.scenario_pick`), or back to the learnt factors. Returns the pick mode
         to use: ``mode``, or 0 (every light sampled) where no one pick serves all the scenarios."""
-        learnt = getattr(self, "_pick_learnt", None)
+        learnt = self._pick_learnt
         if learnt is None or self._pick_key == "fixed":
             return mode
         factors, got = learnt

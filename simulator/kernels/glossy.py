@@ -13,7 +13,7 @@ vertex (no light sample can find it).
 
 import warp as wp
 
-from .bsdf import Bsdf, is_delta_specular, mirror_reflectance, preview_bsdf, schlick
+from .bsdf import COAT_F0, Bsdf, is_delta_specular, mirror_reflectance, preview_bsdf, schlick
 from .lights import SceneRec
 
 
@@ -44,7 +44,7 @@ def mirror_share(b: Bsdf, co: float) -> float:
     if not is_delta_specular(b):
         return 0.0
     wm = mirror_reflectance(b, co)
-    rest = b.coat * schlick(0.04, 1.0, co) + (1.0 - schlick(b.f0, b.f90, co)) * b.diffuse
+    rest = b.coat * schlick(COAT_F0, 1.0, co) + (1.0 - schlick(b.f0, b.f90, co)) * b.diffuse
     if wm + rest <= 0.0:
         return 0.0
     return wm / (wm + rest)

@@ -84,7 +84,8 @@ class EmitterPieces:
 
 
 def _importance(emission: np.ndarray) -> np.ndarray:
-    """W + lm/683 per row of (W, lm), the light pick's one number per light."""
+    """W + lm/683 per row of (W, lm), the light pick's one number per light (a sampling weight, as in
+    kernels/light_pick.py: any fixed scale between the channels serves, so it is not K_m's conversion)."""
     return np.maximum(emission[:, 0], 0.0) + np.maximum(emission[:, 1], 0.0) / 683.0
 
 
