@@ -91,7 +91,7 @@ def test_placement_scores_are_percent(study_out):
 
 
 def test_heat_map_has_the_room_plan_and_dropped_points(study_out):
-    from simulator.study.report import dropped_in_zone, zone_plan
+    from simulator.study.heat_maps import dropped_in_zone, zone_plan
 
     res, out = study_out
     plan = zone_plan(res, EVIL)
@@ -110,7 +110,7 @@ def test_heat_map_has_the_room_plan_and_dropped_points(study_out):
 
 
 def test_per_scenario_scale_and_log_scale_differ_and_are_valid(study_out):
-    from simulator.study.report import heat_map_png
+    from simulator.study.heat_maps import heat_map_png
 
     res, _ = study_out
     import copy

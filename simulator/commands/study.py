@@ -70,7 +70,7 @@ def closing_note(res) -> list[str]:
     lines.append(f"wall time {t['total']:.1f} s (setup {t['setup']:.1f} s, chunks {t['chunks']:.1f} s); {cost}")
     pl = res.placement
     if pl is not None:
-        from simulator.study.report import score_text
+        from simulator.study.scores import score_text
 
         st = lambda v, e: score_text(pl.objective, v, e)  # noqa: E731  (relative errors in percent)
         what = "mean correlation" if pl.objective == "correlation" else "relative error"

@@ -20,11 +20,11 @@ import numpy as np
 from simulator.io.results import json_default, readings_from
 from simulator.scene.model import SENSOR_SPECS
 from simulator.study.chunks import atomic_write
-from simulator.study.heat_maps import MAX_PANELS, _raster, draw_plan, dropped_in_zone, heat_map_png, zone_plan  # noqa: F401
-from simulator.study.scores import placement_unit, score_text, score_value, target_keys  # noqa: F401
+from simulator.study.heat_maps import heat_map_png
+from simulator.study.scores import placement_unit, score_value, target_keys
 from simulator.study.objectives import calibrated_errors
 
-__all__ = ["write_outputs", "long_columns", "summary_columns", "value_columns", "score_text", "MAX_PANELS"]
+__all__ = ["write_outputs", "long_columns", "summary_columns", "value_columns"]
 
 #: columns every readings row starts with; the value columns are ``run``'s
 #: (:data:`simulator.io.results.COLUMNS`) for the kinds the study holds, then
