@@ -107,6 +107,7 @@ def split_emitters(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> t
     points = [g.points]
     tris = [g.triangles[keep].astype(np.int64)]
     orig = [np.flatnonzero(keep)]
+    bary = [np.broadcast_to(np.eye(3)[:, :2], (int(keep.sum()), 3, 2))]  # (b, c) weights of each new corner
     base = len(g.points)
     for t in np.flatnonzero(~keep):  # the split ones go after the rest, in order
         k = int(m[t])
@@ -125,6 +126,8 @@ def split_emitters(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> t
                     sub.append((index[(i + 1, j + 1)], index[(i, j + 1)], index[(i + 1, j)]))
         tris.append(np.array(sub, np.int64))
         orig.append(np.full(len(sub), t))
+        node_bc = np.array(ij, float) / k
+        bary.append(node_bc[np.array(sub, np.int64) - (base - len(ij))])
     orig = np.concatenate(orig)
 
     def take(a):
@@ -135,7 +138,8 @@ def split_emitters(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> t
         emission=g.emission[orig], two_sided=g.two_sided[orig],
         prim=g.prim[orig] if len(g.prim) == n_tri else g.prim, albedo_rgb=take(g.albedo_rgb),
         reflectance_id=take(g.reflectance_id), emission_rgb=take(g.emission_rgb),
-        surface_id=take(g.surface_id), solid_side=take(g.solid_side),
+        surface_id=take(g.surface_id), solid_side=take(g.solid_side), texture_id=take(g.texture_id),
+        texture_uv=None if g.texture_uv is None else _corner_uv(g.texture_uv[orig], np.concatenate(bary)),
     )  # fmt: skip
     return out, orig
 
@@ -222,3 +226,11 @@ def pieces_note(g: Geometry) -> str | None:
         return f"emissive geometry: {how}, a triangle picked ∝ its power"
     return (f"emissive geometry: {how}, a piece picked by its estimated irradiance × a visibility a pilot "
             "learns, then a triangle ∝ its power")
+
+
+def _corner_uv(uv: np.ndarray, bc: np.ndarray) -> np.ndarray:
+    """Texture coordinates (T, 3, 2) of cut triangles: their original's corner ``uv`` (T, 3, 2) at the
+    barycentric weights ``bc`` (T, 3, 2) of b and c of each new corner (st is linear over the triangle)."""
+    b, c = bc[..., :1], bc[..., 1:]
+    a0, a1, a2 = uv[:, None, 0], uv[:, None, 1], uv[:, None, 2]
+    return a0 + b * (a1 - a0) + c * (a2 - a0)

@@ -14,6 +14,8 @@ warning):
   it untouched. With a threshold the coverage is 1 where ``opacity`` ≥ the
   threshold and 0 (the face is left out) below it (UsdPreviewSurface:
   "fragments with opacity < opacityThreshold are fully transparent").
+  Where a ``UsdUVTexture`` drives ``opacity`` the coverage is read per
+  texel at the hit (:class:`CoverageTexture`; ``Surface.opacity_texture``).
 - **panes** (``opacity`` < 1 in the default ``transparent`` mode, or a
   ``probesim:transmittance``): a dielectric of the material's ``ior``. An
   open surface is a *thin slab*: two parallel interfaces with no offset
@@ -49,11 +51,53 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Surface", "OPACITY_MODES", "fresnel_sp", "slab_rt", "internal_transmittance", "clear_slab_transmittance",
+__all__ = ["Surface", "CoverageTexture", "WRAP_MODES", "OPACITY_MODES", "fresnel_sp", "slab_rt", "internal_transmittance", "clear_slab_transmittance",
            "solid_sides"]
 
 #: UsdPreviewSurface ``opacityMode`` tokens
 OPACITY_MODES = ("transparent", "presence")
+
+#: UsdUVTexture ``wrapS`` / ``wrapT`` tokens probesim reads, in the order of their kernel codes
+#: (:func:`simulator.kernels.coverage.wrap_index`); ``useMetadata`` is read as ``black`` (below)
+WRAP_MODES = ("black", "clamp", "repeat", "mirror")
+
+
+@dataclass(frozen=True)
+class CoverageTexture:
+    """The per-texel opacity a ``UsdUVTexture`` feeds into ``inputs:opacity``, decoded.
+
+    Attributes
+    ----------
+    name : str
+        The UsdUVTexture prim and the file it reads, for messages and the plan.
+    opacity : ndarray, shape (H, W), float32
+        ``scale·decode(texel) + bias`` of the output's channel, clipped to
+        [0, 1]; row 0 at the top of the image (``t`` = 1).
+    wrap : tuple of (str, str)
+        ``wrapS``, ``wrapT``: one of :data:`WRAP_MODES`.
+    border : float
+        The value outside the image where a wrap is ``black``: ``bias``
+        clipped to [0, 1] (a black texel, scaled and biased).
+    primvar : str
+        The texture coordinate primvar a ``UsdPrimvarReader_float2`` reads
+        (``varname``), without the ``primvars:`` prefix.
+    st_affine : ndarray, shape (2, 3), float64
+        A ``UsdTransform2d`` between reader and texture as ``st' = A @ (s, t, 1)``:
+        ``in·scale``, rotated by ``rotation`` degrees, plus ``translation``;
+        the identity without one.
+    """
+
+    name: str
+    opacity: np.ndarray
+    wrap: tuple = ("black", "black")
+    border: float = 0.0
+    primvar: str = "st"
+    st_affine: np.ndarray = field(default_factory=lambda: np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]))
+
+    @property
+    def mean(self) -> float:
+        """The texture's mean opacity over its texels (the coverage of a face without texture coordinates)."""
+        return float(np.mean(self.opacity))
 
 
 @dataclass(frozen=True)
@@ -89,6 +133,11 @@ class Surface:
     unmodelled : tuple of str
         The inputs authored away from their fallback that no lobe models yet
         (for the summary warning and the plan).
+    opacity_texture : int
+        Index into ``Geometry.coverage_textures`` of the texture whose texels
+        give the coverage (presence: c = opacity(st); a threshold: c = 1 where
+        opacity(st) ≥ it, else 0), -1 for none; ``coverage`` is then what a
+        face without texture coordinates gets (from the texture's mean).
     """
 
     name: str
@@ -108,11 +157,12 @@ class Surface:
     opacity_mode: str = "transparent"
     unmodelled: tuple = field(default_factory=tuple)
     glossy: bool = False
+    opacity_texture: int = -1
 
     @property
     def modelled(self) -> bool:
         """Whether the kernels read anything of this row beyond the face's albedo."""
-        return self.pane or self.coverage < 1.0 or self.glossy
+        return self.pane or self.coverage < 1.0 or self.glossy or self.opacity_texture >= 0
 
     @property
     def specular_grey(self) -> float:
@@ -128,7 +178,10 @@ class Surface:
     def lobes(self) -> tuple[str, ...]:
         """What this surface needs beyond a matte face, in words, for the plan."""
         out = []
-        if self.coverage < 1.0:
+        if self.opacity_texture >= 0:
+            rule = f"opacity >= {self.opacity_threshold:g}" if self.opacity_threshold > 0 else "presence"
+            out.append(f"coverage per texel ({rule})")
+        elif self.coverage < 1.0:
             out.append(f"coverage {self.coverage:g}")
         if self.pane:
             what = f"T0 {self.transmittance:g}" if self.transmittance is not None else "clear"

@@ -433,4 +433,4 @@ def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light],
                 if light.kind == LightKind.DOME:
                     domes.append((light, prim))
     attach_portals(ctx, stage, domes, portals)
-    return geo.build(ctx.reflectances, ctx.emissive_spectra, ctx.surfaces), lights, sensors
+    return geo.build(ctx.reflectances, ctx.emissive_spectra, ctx.surfaces, ctx.coverage_textures), lights, sensors

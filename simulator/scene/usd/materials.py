@@ -182,6 +182,8 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
             tau = internal_transmittance(t0, ior)
         except ValueError as e:
             raise ctx.error(prim, f"{TRANSMITTANCE_ATTR} {t0:g} from {t0_src}: {e}") from None
+    tex, tex_why = inputs.get("_opacity_texture", (-1, ""))
+    per_texel = tex >= 0 and (threshold > 0.0 or mode == "presence") and t0 is None
     coverage, pane = 1.0, False
     if threshold > 0.0:  # a cut-out: opacity below the threshold is not there, at or above it is opaque
         coverage = 1.0 if opacity >= threshold else 0.0
@@ -195,7 +197,7 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
         pane = True
         if coverage <= 0.0 or (threshold == 0.0 and mode == "transparent"):
             coverage = 1.0  # a datasheet pane: its transmittance, not its opacity, lets light through
-    if coverage <= 0.0:
+    if coverage <= 0.0 and not per_texel:
         why = f"opacity {opacity:g} below opacityThreshold {threshold:g}" if threshold > 0 else "opacity 0"
         ctx.warn(f"{prim.GetPath()}: {why}; left out (it blocks no light)")
         ctx.surface_index[key] = why
@@ -214,13 +216,18 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
         c = np.atleast_1d(np.asarray(inputs.get("diffuseColor", ((0.0,),))[0], float))
         if c.size == 3 and _not_uniform(np.ptp(c), float(np.max(np.abs(c)))):
             ctx.ignored["diffuseColor's colour on glossy faces (their BSDF is traced grey, also in spectral runs)"] += 1
-    if coverage < 1.0 and inputs.get("opacity", (None, ""))[1].find("mean of the texture") >= 0:
-        ctx.ignored["inputs:opacity from a texture (coverage is its mean, not per texel)"] += 1
+    if per_texel:  # read per texel, not as the mean the summary's textured inputs count
+        ctx.textured["opacity"] -= 1
+        if ctx.textured["opacity"] <= 0:
+            del ctx.textured["opacity"]
+    if (coverage < 1.0 or threshold > 0.0) and not per_texel and "mean of the texture" in inputs.get("opacity", ("", ""))[1]:
+        how = f"{tex_why}: " if tex_why else ""
+        ctx.ignored[f"inputs:opacity from a texture ({how}coverage is its mean, not per texel)"] += 1
     row = Surface(name=str(prim.GetPath()), coverage=coverage, pane=pane, ior=ior, tau=tau, transmittance=t0,
                   roughness=values["roughness"], metallic=values["metallic"], clearcoat=values["clearcoat"],
                   clearcoat_roughness=values["clearcoatRoughness"], specular_color=spec,
                   use_specular_workflow=workflow, opacity=opacity, opacity_threshold=threshold, opacity_mode=mode,
-                  unmodelled=unmodelled, glossy=glossy)
+                  unmodelled=unmodelled, glossy=glossy, opacity_texture=tex if per_texel else -1)
     sid = -1
     if row.modelled:
         sid = len(ctx.surfaces)
@@ -401,6 +408,7 @@ def _preview_surface_inputs(ctx: _Context, material: UsdShade.Material) -> dict 
     inputs = {name: _input_value(ctx, shader, name, default) for name, default in _PREVIEW_DEFAULTS.items()
               if curve < 0 or name != "diffuseColor"}
     inputs["opacityMode"] = _opacity_mode(ctx, material, shader, inputs["opacityMode"])
+    inputs["_opacity_texture"] = _opacity_texture(ctx, shader)
     t0 = _authored_float(ctx, (shader.GetPrim(), material.GetPrim()), TRANSMITTANCE_ATTR)
     if t0 is not None:
         inputs[TRANSMITTANCE_ATTR] = t0
@@ -408,6 +416,21 @@ def _preview_surface_inputs(ctx: _Context, material: UsdShade.Material) -> dict 
         inputs["diffuseColor"] = ((ctx.reflectances[curve][2],) * 3, f"{REFLECTANCE_ATTR} {ctx.reflectances[curve][0]}")
         inputs["reflectance"] = (curve, inputs["diffuseColor"][1])
     return inputs
+
+
+def _opacity_texture(ctx: _Context, shader: UsdShade.Shader) -> tuple[int, str]:
+    """``(index into ctx.coverage_textures, "")`` of the texture ``inputs:opacity`` reads per texel, or
+    ``(-1, why not)`` (:func:`.textures._coverage_texture`; a file that cannot be read is an error)."""
+    from simulator.scene.usd.textures import _coverage_texture
+
+    where = f"{shader.GetPath()}.inputs:opacity"
+    inp = shader.GetInput("opacity")
+    if not inp or not inp.HasConnectedSource():
+        return -1, "not connected"
+    for attr in inp.GetValueProducingAttributes():
+        if UsdShade.Output.IsOutput(attr):
+            return _coverage_texture(ctx, attr, where)
+    return -1, "not connected"
 
 
 def _opacity_mode(ctx: _Context, material: UsdShade.Material, shader: UsdShade.Shader, read):
