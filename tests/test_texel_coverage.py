@@ -301,3 +301,13 @@ def test_untextured_coverage_keeps_its_reading(tmp_path):
     assert s.geometry.texture_id is None and s.geometry.surfaces[0].opacity_texture == -1
     v, se = run(stage(tmp_path, body + sheet() + SUN), [point(0.1, 0.2)], "light", 64)
     assert abs(v[0] - 0.7 * E_SUN) <= 2e-6 * E_SUN and se[0] == 0.0
+
+
+def test_plan_names_the_texture(tmp_path):
+    """probesim plan: the sheet's line says its coverage is read per texel, from which texture."""
+    from simulator.plan.planner import make_plan
+
+    png_grey(tmp_path / "c.png", checker())
+    plan = make_plan(load_stage(stage(tmp_path, material("c.png") + sheet() + SUN)), [point(0.0, 0.0)])
+    line = next(l for l in plan.surfaces if "/Sheet" in l or "/M" in l)
+    assert "coverage per texel (presence)" in line and "c.png" in line and "8 x 8 texels" in line, line

@@ -293,6 +293,11 @@ def surface_needs(scene: Scene) -> list[str]:
                    else f"opacity {s.opacity:g} in {s.opacity_mode} mode")
             if g.solid_side is not None and (closed := int(np.count_nonzero((g.surface_id == k) & (g.solid_side != 0)))):
                 why += f"; {closed} on closed meshes, read as slabs entered once"
+        elif s.opacity_texture >= 0:
+            tex = g.coverage_textures[s.opacity_texture]
+            read = int(np.count_nonzero((g.surface_id == k) & (g.texture_id >= 0))) if g.texture_id is not None else 0
+            why = (f"opacity from {tex.name}, {tex.opacity.shape[1]} x {tex.opacity.shape[0]} texels, "
+                   f"{read} triangle(s) with primvars:{tex.primvar}")
         elif s.coverage < 1.0:
             why = (f"opacity {s.opacity:g} in presence mode" if s.opacity_threshold == 0
                    else f"opacity {s.opacity:g} against opacityThreshold {s.opacity_threshold:g}")
