@@ -341,6 +341,11 @@ class DeviceScene:
         rec.response_weights = wp.array2d(weights, dtype=float)
         rec.response_lanes = wp.zeros(1, dtype=wp.vec4)
         rec.colour_weights = wp.array2d(colour, dtype=float)
+        rows = np.zeros((0, 3), np.int32) if tables is None else np.asarray(tables.surface_spectral, np.int32).reshape(-1, 3)
+        rec.spectral_panes = int(np.any(rows[:, 2] >= 0)) if len(rows) else 0
+        if not len(rows):
+            rows = np.array([[0, -1, -1]], np.int32)
+        rec.spectral_surface = wp.array(np.ascontiguousarray(rows), dtype=wp.vec3i)
         self.n_responses = 0 if tables is None else int(weights.shape[0])
 
     def set_hero_tables(self, tables) -> None:

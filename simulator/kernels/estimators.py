@@ -81,6 +81,9 @@ from .glossy import face_bsdf, is_glossy, mirror_share
 from .mirrors import image_source
 from .shaping import shaping_factor
 from .spectral import Reflection, hero_nodes, lane_response, spectral_contribution, spectral_row
+from .spectral_surfaces import (
+    bsdf_lanes, coloured_row, lane_ratio, mirror_lanes, pass_through_lanes, shadow_lanes, transmittance_lanes,
+)
 
 # Forward-only: no gradients are taken, and skipping the adjoint halves compile time.
 wp.set_module_options({"enable_backward": False})
@@ -263,9 +266,14 @@ def vertex_estimate(
     gl = int(0)
     bs = Bsdf()
     wo_g = wo_in
+    g_face = int(-1)  # the glossy vertex's triangle
+    g_lanes = int(0)  # 1: its BSDF is evaluated per hero lane (spectral mode, a coloured row)
     if scene.surfaces != 0 and is_glossy(scene, face_in):
         gl = 1
         bs = face_bsdf(scene, face_in)
+        g_face = face_in
+        if params.spectral != 0:
+            g_lanes = coloured_row(scene, face_in)[0]
     while depth < MAX_VERTICES:
         row = guide_row(scene, depth, cur_face)
         c_v = guide_fraction(scene, params, depth, row)
@@ -304,10 +312,14 @@ def vertex_estimate(
                 ls = sample_light(scene, li, p, n, u)  # geometry from the true point; only rays start at o
                 ls.value = ls.value * (shaping_factor(scene.lights[li], -ls.wi) / sel)
                 pdf_dir = float(0.0)
+                tint_l = tint  # this sample's lanes: × each lane's BSDF and visibility over the grey ones
                 if gl != 0:  # the BSDF's value and the density its direction samples give wi
                     wi_l = to_local(ls.wi, n)
-                    ls.value = ls.value * (PI * bsdf_f(bs, wi_l, wo_l))
+                    f_grey = bsdf_f(bs, wi_l, wo_l)
+                    ls.value = ls.value * (PI * f_grey)
                     pdf_dir = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
+                    if g_lanes != 0:
+                        tint_l = wp.cw_mul(tint_l, lane_ratio(bsdf_lanes(scene, g_face, params.hero, wi_l, wo_l), f_grey))
                 got = wp.vec2(0.0, 0.0)
                 if ls.value[0] > 0.0 or ls.value[1] > 0.0:
                     w = float(1.0)
@@ -320,6 +332,8 @@ def vertex_estimate(
                         clear = bool(True)
                         if scene.surfaces != 0:  # through panes and cut-outs, at their transmittance
                             vis = shadow_ray_pass(scene, o, p, li, ls)
+                            if params.spectral != 0 and scene.spectral_panes != 0 and vis > 0.0:
+                                tint_l = wp.cw_mul(tint_l, lane_ratio(shadow_lanes(scene, params.hero, o, p, li, ls), vis))
                             ls.value = ls.value * vis
                             clear = vis > 0.0
                         else:
@@ -328,9 +342,9 @@ def vertex_estimate(
                             got = ls.value
                             c_light = wp.vec2(0.0, 0.0)
                             if params.spectral != 0 and li == params.emissive_light:
-                                c_light = emissive_contribution(scene, params, ls.tri, (weight * w) * ls.value, tint)
+                                c_light = emissive_contribution(scene, params, ls.tri, (weight * w) * ls.value, tint_l)
                             else:
-                                c_light = light_contribution_dir(scene, params, li, (weight * w) * ls.value, tint, ls.wi)
+                                c_light = light_contribution_dir(scene, params, li, (weight * w) * ls.value, tint_l, ls.wi)
                             total += c_light
                             if params.tally != 0 and depth > 0:
                                 tally_patch(scene, params, prev_row, cur_face, p, c_light)
@@ -346,10 +360,22 @@ def vertex_estimate(
                     count_ray(scene, params)
                     im = image_source(scene, li, k, p, n, o)
                     v = im.value
+                    tint_m = tint
                     if gl != 0:
-                        v = v * (PI * bsdf_f(bs, to_local(im.wi, n), wo_l))
+                        f_grey = bsdf_f(bs, to_local(im.wi, n), wo_l)
+                        v = v * (PI * f_grey)
+                        if g_lanes != 0:
+                            f4 = bsdf_lanes(scene, g_face, params.hero, to_local(im.wi, n), wo_l)
+                            tint_m = wp.cw_mul(tint_m, lane_ratio(f4, f_grey))
+                    if params.spectral != 0 and (v[0] > 0.0 or v[1] > 0.0):  # the mirror's and the panes' lanes
+                        if coloured_row(scene, im.face)[0] != 0:
+                            tint_m = wp.cw_mul(tint_m, lane_ratio(mirror_lanes(scene, im.face, params.hero, im.cos_m),
+                                                                  im.refl))
+                        if scene.spectral_panes != 0:
+                            vis4 = transmittance_lanes(scene, params.hero, im.m_off, im.to_l, im.dist_l, -1)
+                            tint_m = wp.cw_mul(tint_m, lane_ratio(vis4, im.vis))
                     if v[0] > 0.0 or v[1] > 0.0:
-                        total += light_contribution_dir(scene, params, li, weight * v, tint, im.wi)
+                        total += light_contribution_dir(scene, params, li, weight * v, tint_m, im.wi)
         if params.bsdf == 0:
             break
         # -- Russian roulette (a weight window): below the threshold t the path
@@ -389,13 +415,17 @@ def vertex_estimate(
         local = wp.vec3(0.0, 0.0, 1.0)
         wi = spec_d
         g_dir = float(1.0)  # a glossy vertex's f·cosθ/pdf for this direction (β takes it at the hit)
+        tint_d = tint  # the lanes along this direction (a coloured glossy vertex's: see below)
         mirror_now = int(0)
         pdf_g = float(0.0)
         if delta == 0 and gl != 0:
             if pm > 0.0 and wp.randf(rng) < pm:  # the mirror part: reflectance F over its probability
                 wi = mirror(-wo_g, n)
-                g_dir = mirror_reflectance(bs, wo_l[2]) / pm
+                f_grey = mirror_reflectance(bs, wo_l[2])
+                g_dir = f_grey / pm
                 mirror_now = 1
+                if g_lanes != 0:
+                    tint_d = wp.cw_mul(tint, lane_ratio(mirror_lanes(scene, g_face, params.hero, wo_l[2]), f_grey))
             else:
                 wi_l = bsdf_sample(bs, wo_l, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
                 if wi_l[2] <= 0.0:
@@ -403,8 +433,16 @@ def vertex_estimate(
                 pdf_g = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
                 if pdf_g <= 0.0:
                     break
-                g_dir = bsdf_f(bs, wi_l, wo_l) * wi_l[2] / pdf_g
+                f_grey = bsdf_f(bs, wi_l, wo_l)
+                g_dir = f_grey * wi_l[2] / pdf_g
                 wi = to_world(wi_l, n)
+                if g_lanes != 0:
+                    tint_d = wp.cw_mul(tint, lane_ratio(bsdf_lanes(scene, g_face, params.hero, wi_l, wo_l), f_grey))
+            if g_lanes != 0:  # β takes the lanes' mean, the tint keeps mean 1 (as surface_albedo)
+                m = 0.25 * (tint_d[0] + tint_d[1] + tint_d[2] + tint_d[3])
+                if m > 0.0:
+                    g_dir = g_dir * m
+                    tint_d = tint_d / m
         elif delta == 0:
             local = sample_cosine_hemisphere(wp.vec2(wp.randf(rng), wp.randf(rng)))
             if local[2] <= 0.0:
@@ -419,10 +457,17 @@ def vertex_estimate(
         hit = first_hit(scene, o, wi, RAY_INF)
         event = int(0)
         if scene.surfaces != 0:  # through panes and cut-outs to where the ray stops (kernels.surfaces)
-            pas = pass_through(scene, o, wi, hit, rng)
-            rng = pas.rng
-            hit = pas.hit
-            event = pas.event
+            if params.spectral != 0 and scene.spectral_panes != 0:  # coloured panes: the same draws, per lane
+                lp = pass_through_lanes(scene, params.hero, o, wi, hit, rng)
+                rng = lp.rng
+                hit = lp.hit
+                event = lp.event
+                tint_d = wp.cw_mul(tint_d, lp.tint)
+            else:
+                pas = pass_through(scene, o, wi, hit, rng)
+                rng = pas.rng
+                hit = pas.hit
+                event = pas.event
         weigh = params.mis != 0 and params.nee != 0 and delta == 0 and mirror_now == 0  # MIS against p's light samples
         t_hit = hit.t
         face = hit.face
@@ -438,7 +483,7 @@ def vertex_estimate(
                 if weigh:
                     pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1)
                     w = power_heuristic(pdf_b, pdf_l)
-                total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission, tint)
+                total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission, tint_d)
         if face < 0:
             for li in range(scene.n_lights):
                 le = escaped_radiance(scene.lights[li], wi)
@@ -447,7 +492,7 @@ def vertex_estimate(
                     if weigh:
                         pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, RAY_INF, -1)
                         w = power_heuristic(pdf_b, pdf_l)
-                    total += light_contribution_dir(scene, params, li, (w_dir * w) * le, tint, wi)
+                    total += light_contribution_dir(scene, params, li, (w_dir * w) * le, tint_d, wi)
             break
         cos_view = -wp.dot(wi, ng)
         if event == ABSORB:
@@ -459,6 +504,7 @@ def vertex_estimate(
                 beta = beta * g_dir
                 weight = weight_in * beta
                 gl = 0
+            tint = tint_d
             p = o + t_hit * wi
             n = wp.where(cos_view > 0.0, ng, -ng)
             spec_d = mirror(wi, ng)
@@ -473,7 +519,7 @@ def vertex_estimate(
             if weigh and params.emissive_light >= 0:
                 w = power_heuristic(pdf_b, pick_scale(scene, params, pk, params.emissive_light, p, n, depth)
                                     * pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
-            total += emissive_contribution(scene, params, face, (w_dir * w) * le, tint)
+            total += emissive_contribution(scene, params, face, (w_dir * w) * le, tint_d)
         if params.bounces >= 0 and depth >= params.bounces:
             break
         # -- reflect: L_o = ρ/π·E, so the next vertex's weight is w_dir·ρ/π
@@ -482,11 +528,15 @@ def vertex_estimate(
         if gl != 0:
             beta = beta * g_dir
             gl = 0
+        tint = tint_d
         refl = surface_albedo(scene, params, face, tint)
         if scene.surfaces != 0 and is_glossy(scene, face):
             # the glossy vertex takes its f·cosθ/pdf when it draws the next direction (grey: tint kept)
             gl = 1
             bs = face_bsdf(scene, face)
+            g_face = face
+            if params.spectral != 0:
+                g_lanes = coloured_row(scene, face)[0]
             wo_g = -wi
         else:
             beta = beta * refl.rho
@@ -519,20 +569,30 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     direct = params.skip_direct == 0
     total = wp.vec2(0.0, 0.0)
     skip_next = params.skip_direct
+    tint_r = params.tint  # × the lanes of coloured panes passed or reflected off (spectral mode)
     if scene.surfaces != 0:
         # through panes and cut-outs; a mirror reflection off a pane sends the ray on (what it then
         # sees was reflected on the way: indirect), each segment's lights counted as it passes them
         for k in range(MAX_MIRRORS):
-            pas = pass_through(scene, o, d, hit, rng)
-            rng = pas.rng
-            hit = pas.hit
-            if pas.event != MIRROR and pas.event != ABSORB:
+            ev = int(0)
+            if params.spectral != 0 and scene.spectral_panes != 0:
+                lp = pass_through_lanes(scene, params.hero, o, d, hit, rng)
+                rng = lp.rng
+                hit = lp.hit
+                ev = lp.event
+                tint_r = wp.cw_mul(tint_r, lp.tint)
+            else:
+                pas = pass_through(scene, o, d, hit, rng)
+                rng = pas.rng
+                hit = pas.hit
+                ev = pas.event
+            if ev != MIRROR and ev != ABSORB:
                 break
             for li in range(scene.n_lights):
                 l = scene.lights[li]
                 if hit_light_before(l, o, d, hit.t) > 0.0 and direct:
-                    total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, params.tint)
-            if pas.event == ABSORB or k == MAX_MIRRORS - 1:
+                    total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, tint_r)
+            if ev == ABSORB or k == MAX_MIRRORS - 1:
                 return total
             q = o + hit.t * d
             side = wp.where(wp.dot(d, hit.ng) < 0.0, hit.ng, -hit.ng)
@@ -548,21 +608,23 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     for li in range(scene.n_lights):
         l = scene.lights[li]
         if hit_light_before(l, o, d, t_hit) > 0.0 and direct:
-            total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, params.tint)
+            total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, tint_r)
     if face < 0:
         if direct:
             for li in range(scene.n_lights):
-                total += light_contribution_dir(scene, params, li, escaped_radiance(scene.lights[li], d), params.tint, d)
+                total += light_contribution_dir(scene, params, li, escaped_radiance(scene.lights[li], d), tint_r, d)
         return total
     cos_view = -wp.dot(d, ng)
     if direct:
         le = tri_emitted(scene, face, cos_view)
         if le[0] > 0.0 or le[1] > 0.0:
-            total += emissive_contribution(scene, params, face, le, params.tint)
-    refl = surface_albedo(scene, params, face, params.tint)
+            total += emissive_contribution(scene, params, face, le, tint_r)
+    refl = surface_albedo(scene, params, face, tint_r)
     if scene.surfaces != 0 and is_glossy(scene, face):  # L = ∫ f L cos dω: the vertex weighs by π·f
         n = wp.where(cos_view > 0.0, ng, -ng)
-        total += vertex_estimate(scene, o + t_hit * d, n, INV_PI, params, skip_next, rng, face, -d)
+        prm = params
+        prm.tint = tint_r
+        total += vertex_estimate(scene, o + t_hit * d, n, INV_PI, prm, skip_next, rng, face, -d)
     elif refl.rho > 0.0:
         n = wp.where(cos_view > 0.0, ng, -ng)
         prm = params

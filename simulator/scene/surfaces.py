@@ -138,6 +138,9 @@ class Surface:
         give the coverage (presence: c = opacity(st); a threshold: c = 1 where
         opacity(st) ≥ it, else 0), -1 for none; ``coverage`` is then what a
         face without texture coordinates gets (from the texture's mean).
+    transmittance_spectrum : (str, ndarray (401,)) or None
+        A pane's measured normal-incidence transmittance T0(λ) (file name and
+        values on the grid; ``transmittance`` is its grey), for spectral runs.
     """
 
     name: str
@@ -158,6 +161,7 @@ class Surface:
     unmodelled: tuple = field(default_factory=tuple)
     glossy: bool = False
     opacity_texture: int = -1
+    transmittance_spectrum: tuple | None = field(default=None, compare=False)
 
     @property
     def modelled(self) -> bool:
@@ -185,6 +189,8 @@ class Surface:
             out.append(f"coverage {self.coverage:g}")
         if self.pane:
             what = f"T0 {self.transmittance:g}" if self.transmittance is not None else "clear"
+            if self.transmittance_spectrum is not None:
+                what += f" from {self.transmittance_spectrum[0]}"
             out.append(f"dielectric slab (ior {self.ior:g}, {what})")
         if self.glossy:
             spec = ("mirror (delta)" if self.delta else f"GGX specular (roughness {self.roughness:g})")

@@ -156,6 +156,9 @@ class SceneRec:
     response_weights: wp.array2d(dtype=float)  # (responses × 401): a lane's weight 400·q/w
     response_lanes: wp.array(dtype=wp.vec4)  # per kernel thread: this sample's spectral density per hero lane
     colour_weights: wp.array2d(dtype=float)  # (3 × 401): a lane's weight of linear sRGB (cd/m²), for probe maps
+    # per row of surf: (coloured, specular row, transmittance row) of spectral_reflectance (kernels.spectral_surfaces)
+    spectral_surface: wp.array(dtype=wp.vec3i)
+    spectral_panes: int  # 1: some pane has a measured T0(λ) (shadow and path rays then weigh it per lane)
     light_group: wp.array(dtype=wp.int32)  # per light record: its light group, −1 for none (TraceParams.group_tally)
     patch_base: wp.array(dtype=wp.int32)  # per light record: first group of its sky patches (a split dome), −1 when not split
     guide: GuideRec  # surface patches for guided paths
