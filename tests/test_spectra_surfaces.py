@@ -235,3 +235,27 @@ def test_grey_glass_and_a_grey_mirror_trace_grey(tmp_path):
     assert out.record["plan"]["transport"] == "grey"
     e, _ = lx(readings(out)["up"])
     assert abs(e - 700.0) <= 2e-6 * 700.0
+
+
+def test_a_rough_gold_floor_reflects_the_sky_in_its_colour(tmp_path):
+    """A rough gold metal floor (metallic 1, roughness 0.3: F0 = F90 = ρ(λ), so f = ρ(λ)·f₁ with f₁ the
+    white metal's BSDF) under a uniform 3000 K sky of luminance L; a radiance meter looking down at
+    it 60° from the normal reads L·A₁(cos 60°)·∫SρV/∫SV, A₁ the white metal's directional albedo (the
+    quadrature of simulator.reference.microfacet), within 4 standard errors: light samples and BSDF
+    directions at the glossy vertex, each weighed per wavelength."""
+    from simulator.reference.microfacet import directional_albedo, preview_lobes
+
+    body = material("F", "float inputs:roughness = 0.3\n        float inputs:metallic = 1", rho=1.0)
+    body = body.replace("color3f inputs:diffuseColor = (1.0, 1.0, 1.0)",
+                        f"color3f inputs:diffuseColor = ({GOLD[0]}, {GOLD[1]}, {GOLD[2]})")
+    body += quad("Floor", 0.0, "F", half=1e4) + 'def DomeLight "Sky"\n{\n    float inputs:intensity = 100\n}\n'
+    t = math.radians(60.0)
+    meter = ('[[sensor]]\nname = "m"\nkind = "radiance"\nposition = [0, 0, 1]\n'
+             f'direction = [0, {math.sin(t)!r}, {-math.cos(t)!r}]\n')
+    out = run(load_config(config(tmp_path, stage(tmp_path, body), meter, "path", 20000)), log=lambda *a: None)
+    assert out.record["plan"]["transport"] == "spectral"
+    row = readings(out)["m"]
+    v, se = float(row["luminance_cd_m2"]), float(row["luminance_stderr_cd_m2"])
+    truth = 100.0 * directional_albedo(preview_lobes(1.0, 0.3, 1.0, 1.5, None, 0.0, 0.2), math.cos(t))
+    truth *= v_weighted(uplift(np.array(GOLD)))
+    assert se > 0 and abs(v - truth) <= 4 * se, (v, se, truth)
