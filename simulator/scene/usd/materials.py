@@ -491,19 +491,6 @@ def _transmittance(ctx: _Context, prims):
     return None
 
 
-def _authored_float(ctx: _Context, prims, name: str):
-    """``(value, where)`` of the first prim's authored attribute ``name``, None if none authors it."""
-    for p in prims:
-        attr = p.GetAttribute(name)
-        if attr and attr.HasAuthoredValue():
-            value = _get(ctx, attr)
-            try:
-                return float(value), str(attr.GetPath())
-            except (TypeError, ValueError):
-                raise ctx.error(p, f"{name} must be a number, not a {attr.GetTypeName()}") from None
-    return None
-
-
 def _count_ignored_inputs(ctx: _Context, shader: UsdShade.Shader) -> None:
     """Count the UsdPreviewSurface inputs that would change the reading but are not modelled."""
     for name, default in _IGNORED_DEFAULTS.items():
