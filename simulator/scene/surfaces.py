@@ -321,3 +321,31 @@ def mirror_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndar
         planes[k] = [*nn, float(np.mean(p[mine][:, 0] @ nn))]
         face_plane[faces[mine]] = k
     return planes, face_plane, max(0, len(uniq) - len(order))
+
+
+def mirror_limits(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarray | None,
+                  surfaces: list, delta_lights: list[str]) -> list[str]:
+    """What the image-source connection of delta lights (:mod:`simulator.kernels.mirrors`) leaves out,
+    one note each: empty without delta lights or without mirror faces.
+
+    A point light or an angle-0 distant light reaches a receiver off a mirror
+    along one direction only; the kernels connect its image in each of the
+    :data:`MAX_MIRROR_PLANES` largest mirror planes, one reflection deep.
+    Light reflected by two mirrors in turn (a delta meets a delta: no
+    sampled direction finds it) and mirror planes past the largest are not
+    connected, so their share of a reading is missing: the summary says so.
+    Area, sphere and dome lights are found through any number of mirrors
+    by the paths' own reflections.
+    """
+    if not delta_lights:
+        return []
+    planes, _, left_out = mirror_planes(points, triangles, surface_id, surfaces)
+    notes = []
+    lights = ", ".join(delta_lights[:3]) + (" ..." if len(delta_lights) > 3 else "")
+    if len(planes) + left_out >= 2:
+        notes.append(f"light of point or angle-0 distant light(s) {lights} reflected by two mirrors in turn "
+                     f"is not read ({len(planes) + left_out} mirror planes; one reflection is read)")
+    if left_out:
+        notes.append(f"light of {lights} off the {left_out} mirror plane(s) past the {MAX_MIRROR_PLANES} "
+                     "largest is not read")
+    return notes

@@ -209,6 +209,7 @@ from pxr import Usd, UsdGeom, UsdLux
 
 from simulator.errors import UserError
 from simulator.scene.model import Geometry, Light, LightKind, Scene, Sensor
+from simulator.scene.surfaces import mirror_limits
 from simulator.scene.usd.collections import light_collections
 from simulator.scene.usd.context import _Context
 
@@ -362,6 +363,9 @@ def load_stage(
             closed = sorted({geometry.prim_names[i] for i in np.unique(geometry.prim[geometry.solid_side != 0])})
             ctx.ignored[f"refraction's bend in closed transparent mesh(es) {', '.join(closed[:3])}"
                         f"{' ...' if len(closed) > 3 else ''} (read as slabs entered once, no offset)"] += len(closed)
+        for note in mirror_limits(geometry.points, geometry.triangles, geometry.surface_id, geometry.surfaces,
+                                  [l.name for l in lights if l.is_delta]):
+            ctx.warn(f"{os.path.basename(str(path))}: {note}")
         ctx.pxr_messages += pxr_said.collect()
         _finish_warnings(ctx)
     return Scene(
