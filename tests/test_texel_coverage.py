@@ -311,3 +311,18 @@ def test_plan_names_the_texture(tmp_path):
     plan = make_plan(load_stage(stage(tmp_path, material("c.png") + sheet() + SUN)), [point(0.0, 0.0)])
     line = next(l for l in plan.surfaces if "/Sheet" in l or "/M" in l)
     assert "coverage per texel (presence)" in line and "c.png" in line and "8 x 8 texels" in line, line
+
+
+def test_cut_emitters_carry_their_st():
+    """An emitting triangle cut for the emitter pieces: each sub-triangle corner's st is the original's
+    st at that corner (linear over the triangle), here st = (x, y)/4 on a 4 m right triangle."""
+    from simulator.scene.emitters import split_emitters
+    from simulator.scene.model import Geometry
+
+    g = Geometry(points=np.array([[0, 0, 0], [4, 0, 0], [0, 4, 0.0]]), triangles=np.array([[0, 1, 2]], np.int32),
+                 albedo=np.zeros(1), emission=np.array([[1.0, 1.0]]), two_sided=np.zeros(1, bool),
+                 prim=np.zeros(1, np.int32), prim_names=["a"], texture_id=np.zeros(1, np.int32),
+                 texture_uv=np.array([[[0, 0], [1, 0], [0, 1.0]]]))
+    s, _ = split_emitters(g, 1.0)
+    assert s.n_triangles == 36 and s.texture_id.tolist() == [0] * 36  # m = ⌈4√2 m / 1 m⌉ = 6: 6² pieces
+    np.testing.assert_allclose(s.texture_uv, s.points[s.triangles][..., :2] / 4, atol=1e-12)
