@@ -326,3 +326,19 @@ def test_cut_emitters_carry_their_st():
     s, _ = split_emitters(g, 1.0)
     assert s.n_triangles == 36 and s.texture_id.tolist() == [0] * 36  # m = ⌈4√2 m / 1 m⌉ = 6: 6² pieces
     np.testing.assert_allclose(s.texture_uv, s.points[s.triangles][..., :2] / 4, atol=1e-12)
+
+
+@pytest.mark.parametrize("how", ["leftHanded", "mirrored"])
+def test_rewound_sheets_keep_their_texels_in_place(tmp_path, how):
+    """A leftHanded sheet (its triangles re-wound) reads the checker as before; the sheet mirrored in x by
+    its transform (scale (−1, 1, 1), re-wound too) shows texel column c at world column 7 − c, which on
+    an 8 × 8 checker swaps open and shut: E where the plain sheet reads 0 and back, exactly."""
+    png_grey(tmp_path / "c.png", checker())
+    extra = ('uniform token orientation = "leftHanded"' if how == "leftHanded" else
+             'float3 xformOp:scale = (-1, 1, 1)\n    uniform token[] xformOpOrder = ["xformOp:scale"]')
+    body = material("c.png") + sheet().replace("rel material:binding", f"{extra}\n    rel material:binding") + SUN
+    cells = [(0, 0), (1, 0), (3, 4), (6, 1)]
+    v, _ = run(stage(tmp_path, body), [point(*texel_centre(c, r, 8)) for c, r in cells], "light", 64)
+    open_ = [1 - checker()[r, c] / 255 for c, r in cells]
+    truth = [E_SUN * (o if how == "leftHanded" else 1 - o) for o in open_]
+    np.testing.assert_allclose(v, truth, atol=2e-6 * E_SUN)
