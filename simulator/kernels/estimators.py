@@ -456,6 +456,8 @@ def vertex_estimate(
         count_ray(scene, params)
         hit = first_hit(scene, o, wi, RAY_INF)
         event = int(0)
+        tint_before = tint_d  # the lanes of lights met before the first coloured pane on this ray
+        t_tint = float(RAY_INF)
         if scene.surfaces != 0:  # through panes and cut-outs to where the ray stops (kernels.surfaces)
             if params.spectral != 0 and scene.spectral_panes != 0:  # coloured panes: the same draws, per lane
                 lp = pass_through_lanes(scene, params.hero, o, wi, hit, rng)
@@ -463,6 +465,7 @@ def vertex_estimate(
                 hit = lp.hit
                 event = lp.event
                 tint_d = wp.cw_mul(tint_d, lp.tint)
+                t_tint = lp.t_tint
             else:
                 pas = pass_through(scene, o, wi, hit, rng)
                 rng = pas.rng
@@ -483,7 +486,8 @@ def vertex_estimate(
                 if weigh:
                     pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1)
                     w = power_heuristic(pdf_b, pdf_l)
-                total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission, tint_d)
+                total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission,
+                                            wp.where(t < t_tint, tint_before, tint_d))
         if face < 0:
             for li in range(scene.n_lights):
                 le = escaped_radiance(scene.lights[li], wi)
@@ -570,17 +574,22 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     total = wp.vec2(0.0, 0.0)
     skip_next = params.skip_direct
     tint_r = params.tint  # × the lanes of coloured panes passed or reflected off (spectral mode)
+    tint_before = tint_r  # the lanes before the first coloured pane of the last segment, at distance t_tint
+    t_tint = float(RAY_INF)
     if scene.surfaces != 0:
         # through panes and cut-outs; a mirror reflection off a pane sends the ray on (what it then
         # sees was reflected on the way: indirect), each segment's lights counted as it passes them
         for k in range(MAX_MIRRORS):
             ev = int(0)
+            tint_before = tint_r
+            t_tint = float(RAY_INF)
             if params.spectral != 0 and scene.spectral_panes != 0:
                 lp = pass_through_lanes(scene, params.hero, o, d, hit, rng)
                 rng = lp.rng
                 hit = lp.hit
                 ev = lp.event
                 tint_r = wp.cw_mul(tint_r, lp.tint)
+                t_tint = lp.t_tint
             else:
                 pas = pass_through(scene, o, d, hit, rng)
                 rng = pas.rng
@@ -590,8 +599,10 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
                 break
             for li in range(scene.n_lights):
                 l = scene.lights[li]
-                if hit_light_before(l, o, d, hit.t) > 0.0 and direct:
-                    total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, tint_r)
+                t_l = hit_light_before(l, o, d, hit.t)
+                if t_l > 0.0 and direct:
+                    total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission,
+                                                wp.where(t_l < t_tint, tint_before, tint_r))
             if ev == ABSORB or k == MAX_MIRRORS - 1:
                 return total
             q = o + hit.t * d
@@ -607,8 +618,10 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     ng = hit.ng
     for li in range(scene.n_lights):
         l = scene.lights[li]
-        if hit_light_before(l, o, d, t_hit) > 0.0 and direct:
-            total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, tint_r)
+        t_l = hit_light_before(l, o, d, t_hit)
+        if t_l > 0.0 and direct:
+            total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission,
+                                        wp.where(t_l < t_tint, tint_before, tint_r))
     if face < 0:
         if direct:
             for li in range(scene.n_lights):

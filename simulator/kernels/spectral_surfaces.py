@@ -30,7 +30,7 @@ import warp as wp
 
 from .bsdf import Bsdf, bsdf_f, mirror_reflectance, preview_bsdf
 from .coverage import coverage_at
-from .lights import LightSample, SceneRec
+from .lights import RAY_INF, LightSample, SceneRec
 from .rays import RayHit, first_hit, offset_length
 from .shadows import shadow_segment
 from .surfaces import ABSORB, MAX_PASSES, MIRROR, PASS, SCATTER, pane_rt, pass_factor, slab_rt, surface_event
@@ -178,6 +178,7 @@ class LanePassage:
     event: int
     rng: wp.uint32
     tint: wp.vec4  # per hero lane: each pass and reflection's lane value over the grey one it was drawn by
+    t_tint: float  # distance (from o) of the first coloured pane that set a lane factor; RAY_INF for none
 
 
 @wp.func
@@ -185,9 +186,12 @@ def pass_through_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, 
                        rng_in: wp.uint32) -> LanePassage:
     """:func:`.surfaces.pass_through` with the same draws (one uniform per face, :func:`.surfaces.
     surface_event`), which also returns the lane factor of the events drawn: 1 through a coverage gap,
-    T(λ_k)/T through a pane's slab, R(λ_k)/R off it (the pane's lanes, :func:`pane_lanes`)."""
+    T(λ_k)/T through a pane's slab, R(λ_k)/R off it (the pane's lanes, :func:`pane_lanes`), and where
+    along the ray the first such factor applies (a light met before it is seen with the lanes as they
+    were; one met between two coloured panes takes both)."""
     out = LanePassage()
     out.tint = wp.vec4(1.0, 1.0, 1.0, 1.0)
+    out.t_tint = RAY_INF
     rng = rng_in
     h = first
     out.event = SCATTER
@@ -210,6 +214,7 @@ def pass_through_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, 
                     out.tint = wp.cw_mul(out.tint, lane_ratio(lanes.r, rt[0]))
                 else:
                     out.tint = wp.cw_mul(out.tint, lane_ratio(lanes.t, rt[1]))
+                out.t_tint = wp.min(out.t_tint, h.t)
         if ev != PASS:
             out.hit = h
             out.event = ev
