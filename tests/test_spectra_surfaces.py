@@ -259,3 +259,20 @@ def test_a_rough_gold_floor_reflects_the_sky_in_its_colour(tmp_path):
     truth = 100.0 * directional_albedo(preview_lobes(1.0, 0.3, 1.0, 1.5, None, 0.0, 0.2), math.cos(t))
     truth *= v_weighted(uplift(np.array(GOLD)))
     assert se > 0 and abs(v - truth) <= 4 * se, (v, se, truth)
+
+
+def test_a_lamp_below_the_tinted_pane_is_seen_untinted(tmp_path):
+    """The meter of the sky test with a rect light (50 cd/m², facing down at it) between it and the
+    pane: UsdLux lights do not block, so it reads the lamp whole plus the sky through the pane,
+    50 + L ∫S T0 V/∫S V, within 4 standard errors (the lamp is met before the pane on each ray)."""
+    body = tinted(tmp_path) + material("Black", rho=0.0) + quad("Pane", 1.0, "G", half=1e3)
+    body += quad("Floor", -1.0, "Black", half=1e3) + 'def DomeLight "Sky"\n{\n    float inputs:intensity = 100\n}\n'
+    body += ('def RectLight "Lamp"\n{\n    float inputs:intensity = 50\n    float inputs:width = 1\n'
+             '    float inputs:height = 1\n    float3 xformOp:translate = (0, 0, 0.5)\n'
+             '    uniform token[] xformOpOrder = ["xformOp:translate"]\n}\n')
+    meter = ('[[sensor]]\nname = "sky"\nkind = "radiance"\nposition = [0, 0, 0]\ndirection = [0, 0, 1]\n')
+    out = run(load_config(config(tmp_path, stage(tmp_path, body), meter, "bsdf", 20000)), log=lambda *a: None)
+    row = readings(out)["sky"]
+    v, se = float(row["luminance_cd_m2"]), float(row["luminance_stderr_cd_m2"])
+    truth = 50.0 + 100.0 * v_weighted(t0_curve())
+    assert se > 0 and abs(v - truth) <= 4 * se, (v, se, truth)

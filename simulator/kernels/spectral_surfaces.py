@@ -188,7 +188,7 @@ def pass_through_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, 
     surface_event`), which also returns the lane factor of the events drawn: 1 through a coverage gap,
     T(λ_k)/T through a pane's slab, R(λ_k)/R off it (the pane's lanes, :func:`pane_lanes`), and where
     along the ray the first such factor applies (a light met before it is seen with the lanes as they
-    were; one met between two coloured panes takes both)."""
+    were; one met between two coloured panes takes both panes' factors, not exact, left so as rare)."""
     out = LanePassage()
     out.tint = wp.vec4(1.0, 1.0, 1.0, 1.0)
     out.t_tint = RAY_INF
