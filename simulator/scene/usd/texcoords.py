@@ -117,7 +117,10 @@ def _corner_st(ctx: _Context, prim: Usd.Prim, primvar: str, face_of: np.ndarray,
     values = pv.ComputeFlattened(ctx.time)
     if values is None:
         return None
-    st = np.asarray(values, float).reshape(-1, 2) if len(values) else np.zeros((0, 2))
+    st = np.asarray(values, float) if len(values) else np.zeros((0, 2))
+    if st.ndim != 2 or st.shape[1] != 2:
+        ctx.ignored[f"primvars:{primvar} not two numbers per value (an opacity texture's mean used)"] += 1
+        return None
     interp = pv.GetInterpolation()
     if interp == UsdGeom.Tokens.faceVarying:
         at = corner_tris
