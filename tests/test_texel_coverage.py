@@ -264,8 +264,9 @@ def test_fine_presence_pattern_passes_its_mean_of_the_sky_to_direction_samples(t
     """A black presence sheet at 1 m whose checker repeats every 1 cm (st scaled by 10⁴ through a
     UsdTransform2d over a 100 m sheet), under a uniform sky: cosine directions pass with probability
     1 − o at the point they cross, drawn from each path's random stream: (1 − ½)πL within 4 standard
-    errors (the sky beyond the sheet's edge, cos²(atan 50) = 4e-4 of it, passes whole: 2e-4 πL, far
-    inside the bound)."""
+    errors (the sky beyond the sheet's edge passes whole: at most cos²(atan 50) = 4e-4 of it, the
+    share outside the inscribed circle of radius 50 m, taken as the truth's second term, within 2e-4 πL
+    of the square's and far inside the bound)."""
     png_grey(tmp_path / "c.png", checker())
     body = material("c.png", rho=0.0, transform="float2 inputs:scale = (10000, 10000)") + sheet(half=50.0) + DOME
     v, se = run(stage(tmp_path, body), [point(0.0, 0.0)], "bsdf", 20000)
