@@ -23,7 +23,10 @@ sensor, in order:
    reads them with ``guided`` paths (``path`` plus a surface guide learnt by
    a pilot, :mod:`simulator.engine.guide`) when :data:`AUTO_GUIDED` is set
    and the stage can be cut into patches within the cap
-   (:func:`simulator.scene.patches.patch_layout`); else ``path``.
+   (:func:`simulator.scene.patches.patch_layout`); else ``path``. Panes,
+   cut-outs and glossy faces keep the guide: its segments pass them at
+   their transmittance and glossy vertices mix it with their lobes, so a
+   glazed room is guided like an open one.
 
 Lights wholly behind a sensor's plane contribute nothing to it and are not
 sampled for it. The plan says which transport the scene needs and why
@@ -493,12 +496,13 @@ def _path_method(scene: Scene) -> tuple[str, str]:
 
     if not AUTO_GUIDED:
         return "path", ""
-    if scene.geometry.has_surfaces:
-        return "path", " (panes or cut-outs: plain paths, the surface guide assumes matte segments)"
     lay = patch_layout(scene.geometry.points, scene.geometry.triangles)
     if not lay.usable:
         return "path", f" ({lay.reason})"
-    return "guided", f", guided by a {lay.reason} (learnt by a pilot)"
+    surf = ""
+    if scene.geometry.has_surfaces:  # the guide's segments pass panes and cut-outs, glossy lobes join its mixture
+        surf = "; its segments cross panes and cut-outs at their transmittance, glossy vertices mix it with their lobes"
+    return "guided", f", guided by a {lay.reason} (learnt by a pilot{surf})"
 
 
 def _transport(scene: Scene) -> tuple[str, int, str]:
