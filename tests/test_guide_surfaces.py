@@ -244,7 +244,7 @@ def test_guided_glossy_room_agrees_with_path(tmp_path, forced_guide):
 
 def test_plan_guides_a_glazed_room_and_says_why():
     """``auto`` reads the glazed office's path sensors with ``guided`` and the reason says the
-    guide's segments cross panes (it used to fall back to plain paths)."""
+    guide's segments cross panes."""
     cfg = load_config(CONFIGS / "office_bench.toml")
     cfg = dataclasses.replace(cfg, variants={**cfg.variants, "window": "glazed"})
     scene = load_scene(cfg)
