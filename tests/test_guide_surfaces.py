@@ -163,7 +163,8 @@ def test_guided_mirror_reflector_agrees_with_path(forced_guide):
 
 
 # A closed 4 m × 4 m × 3 m room, matte walls and ceiling of albedo 0.6, a glossy floor (GGX
-# roughness 0.3 over a diffuse albedo 0.5, ior 1.5) and a small lamp under the ceiling
+# roughness 0.3 over a diffuse albedo 0.5, ior 1.5), a small lamp 0.5 m from a
+# perforated screen (presence cut-out of opacity 0.5, albedo 0.7) across the room at x = 0.3 m
 GLOSSY_ROOM = """#usda 1.0
 (
     metersPerUnit = 1
@@ -186,11 +187,19 @@ def Mesh "Floor"
     rel material:binding = </Gloss>
 }
 
+def Mesh "Screen"
+{
+    point3f[] points = [(0.3, -1.5, 0.3), (0.3, 1.5, 0.3), (0.3, 1.5, 2.2), (0.3, -1.5, 2.2)]
+    int[] faceVertexCounts = [4]
+    int[] faceVertexIndices = [0, 1, 2, 3]
+    rel material:binding = </Mesh>
+}
+
 def SphereLight "Lamp"
 {
     float inputs:intensity = 5000
     float inputs:radius = 0.05
-    float3 xformOp:translate = (1.2, 0.8, 2.7)
+    float3 xformOp:translate = (0.8, 0.2, 1.6)
     uniform token[] xformOpOrder = ["xformOp:translate"]
 }
 
@@ -201,6 +210,19 @@ def Material "Wall"
     {
         uniform token info:id = "UsdPreviewSurface"
         color3f inputs:diffuseColor = (0.6, 0.6, 0.6)
+        token outputs:surface
+    }
+}
+
+def Material "Mesh"
+{
+    token outputs:surface.connect = </Mesh/S.outputs:surface>
+    def Shader "S"
+    {
+        uniform token info:id = "UsdPreviewSurface"
+        color3f inputs:diffuseColor = (0.7, 0.7, 0.7)
+        float inputs:opacity = 0.5
+        token inputs:opacityMode = "presence"
         token outputs:surface
     }
 }
@@ -221,9 +243,11 @@ def Material "Gloss"
 
 
 def test_guided_glossy_room_agrees_with_path(tmp_path, forced_guide):
-    """A room with a GGX floor, sensors 0.5 m above it facing down (their first vertices lie on the
-    glossy floor, where the guide is drawn with c times the diffuse lobe's share and weighed against
-    the lobes' densities) and two facing up: guided and path (independent seeds) within 4 combined
+    """A room with a GGX floor and a perforated screen, sensors 0.5 m above the floor facing down
+    (their first vertices lie on the glossy floor, where the guide is drawn with c times the diffuse
+    lobe's share and weighed against the lobes' densities), two facing up and two facing the screen
+    (guided segments pass it at 1 − c and end on it with the share c): guided and path (independent
+    seeds) within 4 combined
     standard errors, 32768 samples (stderr 0.3–0.7% guided, 0.6–0.9% path), one by one and summed."""
     path = tmp_path / "glossy_room.usda"
     path.write_text(GLOSSY_ROOM)
@@ -231,7 +255,8 @@ def test_guided_glossy_room_agrees_with_path(tmp_path, forced_guide):
     assert scene.geometry.has_surfaces
     sensors = [_sensor(f"down_{i}", (x, y, 0.5), (0, 0, -1)) for i, (x, y) in
                enumerate([(-1.2, -1.0), (0.0, 0.0), (1.0, -1.4), (-0.5, 1.3)])]  # fmt: skip
-    sensors += [_sensor("up_0", (-1.0, -1.0, 0.8), (0, 0, 1)), _sensor("up_1", (0.5, 1.2, 0.8), (0, 0, 1))]
+    sensors += [_sensor("up_0", (-1.0, -1.0, 0.8), (0, 0, 1)), _sensor("up_1", (0.5, 1.2, 0.8), (0, 0, 1)),
+                _sensor("screen_w", (-0.8, 0.2, 1.2), (1, 0, 0)), _sensor("screen_e", (1.4, -0.3, 1.0), (-1, 0, 0))]
     engine = Engine(scene, sensors)
     g = engine.run("guided", samples=32768, seed=41)
     assert engine.guide.sampled > 0
