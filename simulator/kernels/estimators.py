@@ -242,7 +242,12 @@ def vertex_estimate(
     samples by π·f(wi, wo), draws the next direction by the BSDF (β takes
     f·cosθ/pdf) and weighs both by MIS with the BSDF's pdf; its mirror part
     is a direction chosen with probability :func:`mirror_share`, whose rays
-    no light sample weighs against."""
+    no light sample weighs against. With the guide, a glossy vertex draws
+    it with c·(1 − P_mirror)·w_diffuse (it stands in for the diffuse lobe)
+    and its lobes with the rest, every MIS weight over those real
+    densities; a delta vertex (a pane's or a mirror part's reflection)
+    never draws it, and the path it starts takes 1/(1 − c) instead of a
+    mixture factor (docs/DESIGN.md §Surface guide)."""
     rng = rng_in
     p = p_in
     n = n_in
