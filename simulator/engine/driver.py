@@ -332,9 +332,9 @@ class Engine:
         p.n_groups = 0
         p.group_batch = 0
         p.group_state = self._no_groups
-        # the surface guide's one-sample MIS assumes cosine-sampled segments, which a mirror reflection
-        # off a pane bends: stages with panes or cut-outs trace plain paths (docs/DESIGN.md §Surfaces)
-        guided = method in GUIDED_METHODS and not self.scene.geometry.has_surfaces
+        # panes and cut-outs on a guided segment pass light at their transmittance, glossy vertices mix the
+        # guide with their lobes, and mirror vertices never use it (docs/DESIGN.md §Surface guide)
+        guided = method in GUIDED_METHODS
         p.guide_c = G.GUIDE_C if guided else 0.0
         p.guide_first = G.GUIDE_FIRST
         p.guide_depth = G.GUIDE_DEPTH

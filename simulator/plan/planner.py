@@ -23,7 +23,10 @@ sensor, in order:
    reads them with ``guided`` paths (``path`` plus a surface guide learnt by
    a pilot, :mod:`simulator.engine.guide`) when :data:`AUTO_GUIDED` is set
    and the stage can be cut into patches within the cap
-   (:func:`simulator.scene.patches.patch_layout`); else ``path``.
+   (:func:`simulator.scene.patches.patch_layout`); else ``path``. Panes,
+   cut-outs and glossy faces keep the guide: its segments pass them at
+   their transmittance and glossy vertices mix it with their lobes, so a
+   glazed room is guided like an open one.
 
 Lights wholly behind a sensor's plane contribute nothing to it and are not
 sampled for it. The plan says which transport the scene needs and why
@@ -485,6 +488,18 @@ def _light_sampling(scene: Scene, plans: list[SensorPlan]) -> dict[str, str]:
     return out
 
 
+def _diffuse_faces(g) -> np.ndarray:
+    """Per triangle: whether it has a diffuse lobe the surface guide can stand in for, shape (T,):
+    albedo > 0 and neither a pane (which only reflects, passes or absorbs) nor a metal (metallic 1:
+    no diffuse lobe)."""
+    out = g.albedo > 0
+    if g.has_surfaces:
+        for k, s in enumerate(g.surfaces):
+            if s.pane or (s.glossy and s.metallic >= 1.0):
+                out &= g.surface_id != k
+    return out
+
+
 def _path_method(scene: Scene) -> tuple[str, str]:
     """``(method, note)`` for the sensors that need paths: ``guided`` when
     :data:`AUTO_GUIDED` and the stage has a patch layout, else ``path``; the
@@ -493,12 +508,15 @@ def _path_method(scene: Scene) -> tuple[str, str]:
 
     if not AUTO_GUIDED:
         return "path", ""
-    if scene.geometry.has_surfaces:
-        return "path", " (panes or cut-outs: plain paths, the surface guide assumes matte segments)"
     lay = patch_layout(scene.geometry.points, scene.geometry.triangles)
     if not lay.usable:
         return "path", f" ({lay.reason})"
-    return "guided", f", guided by a {lay.reason} (learnt by a pilot)"
+    surf = ""
+    if scene.geometry.has_surfaces:  # the guide's segments pass panes and cut-outs, glossy lobes join its mixture
+        if not np.any(_diffuse_faces(scene.geometry)):
+            return "path", " (no face reflects diffusely: the surface guide, a strategy for diffuse lobes, has nothing to do)"
+        surf = "; its segments cross panes and cut-outs at their transmittance, glossy vertices mix it with their lobes"
+    return "guided", f", guided by a {lay.reason} (learnt by a pilot{surf})"
 
 
 def _transport(scene: Scene) -> tuple[str, int, str]:
