@@ -387,9 +387,12 @@ def exact_direct(scene, sensors, sensor_ids: np.ndarray, light_mask: np.ndarray 
         return out
     P = np.array([sensors[i].position for i in ids], float)
     N = np.array([sensors[i].normal for i in ids], float)
+    from simulator.engine import exact_memo
+
     g = scene.geometry
     tris_all = g.points[g.triangles] if g.n_triangles else np.zeros((0, 3, 3))
     scale = max(1.0, float(np.abs(tris_all).max()) if len(tris_all) else 1.0)
+    scene_key = exact_memo.digest(tris_all, [scale])  # the factors below depend on the lights, receivers and this
     for j, light in enumerate(scene.lights):
         on = np.ones(len(ids), bool) if light_mask is None else light_mask[ids, j] != 0
         if not on.any():
@@ -405,6 +408,8 @@ def exact_direct(scene, sensors, sensor_ids: np.ndarray, light_mask: np.ndarray 
         step = max(1, _CHUNK_PAIRS // max(len(tris), 1))
         for a in range(0, len(k), step):
             sel = k[a : a + step]
-            e = visible_polygon_irradiance(1.0, V, tris, P[sel], N[sel], one_sided_normal=-ez, length_scale_m=scale)
+            key = scene_key + exact_memo.digest(V, ez, light.position, P[sel], N[sel])
+            e = exact_memo.factor(key, lambda: visible_polygon_irradiance(1.0, V, tris, P[sel], N[sel], one_sided_normal=-ez,
+                                                                          length_scale_m=scale))  # fmt: skip
             out[ids[sel]] += e[:, None] * np.asarray(light.emission, float)[None, :]
     return out
