@@ -145,7 +145,9 @@ def clip_polygons(V: np.ndarray, count: np.ndarray, s: np.ndarray) -> tuple[np.n
 
 
 def _rings_of(geoms: np.ndarray, owners: np.ndarray):
-    """Flatten polygons to rings: (list of (k, 2) coordinate arrays, owner per ring, sign per ring)."""
+    """Flatten polygons to rings: ``(xy, counts, owner, sign)``, the rings' vertices one after another
+    (each ring's closing point dropped; rings of fewer than 3 left out), shape (M, 2), the vertex
+    count, owner and sign (+1 exterior, −1 hole) of each ring."""
     import shapely
 
     parts, part_idx = shapely.get_parts(geoms, return_index=True)
@@ -165,12 +167,16 @@ def _rings_of(geoms: np.ndarray, owners: np.ndarray):
     owner = np.concatenate(owner)
     sign = np.concatenate(sign)
     xy, ring_id = shapely.get_coordinates(rings, return_index=True)
-    cuts = np.flatnonzero(np.diff(ring_id)) + 1
-    coords = [c[:-1] for c in np.split(xy, cuts)] if len(xy) else []  # drop each ring's closing point
-    ok = np.array([len(c) >= 3 for c in coords], bool) if coords else np.zeros(0, bool)
-    present = np.unique(ring_id) if len(xy) else np.zeros(0, np.int64)
-    owner, sign = owner[present][ok], sign[present][ok]
-    return [c for c, k in zip(coords, ok) if k], owner, sign
+    if not len(xy):
+        return np.zeros((0, 2)), np.zeros(0, np.int64), owner[:0], sign[:0]
+    present, counts = np.unique(ring_id, return_counts=True)  # ring_id is sorted: rings in order
+    counts = counts - 1  # the closing point
+    closing = np.cumsum(counts + 1) - 1
+    keep_pt = np.ones(len(xy), bool)
+    keep_pt[closing] = False
+    ok = counts >= 3
+    keep_pt &= np.repeat(ok, counts + 1)
+    return xy[keep_pt], counts[ok], owner[present][ok], sign[present][ok]
 
 
 def lambert_rings(rings: list[np.ndarray], receivers: np.ndarray, P: np.ndarray, N: np.ndarray) -> np.ndarray:
@@ -199,12 +205,17 @@ def lambert_rings(rings: list[np.ndarray], receivers: np.ndarray, P: np.ndarray,
     γ_i = ∠(u_i, u_{i+1}) and û_i = normalize(u_i × u_{i+1}), the integral is
     |Σ_i γ_i · n·û_i| / 2 (Lambert; Arvo 1995).
     """
-    R = len(rings)
+    if len(rings) == 0:
+        return np.zeros(0)
+    return _lambert_flat(np.concatenate(rings), np.array([len(r) for r in rings]), receivers, P, N)
+
+
+def _lambert_flat(V: np.ndarray, counts: np.ndarray, receivers: np.ndarray, P: np.ndarray, N: np.ndarray) -> np.ndarray:
+    """:func:`lambert_rings` of rings given one after another: ``V`` (M, 3), ``counts`` (R,) vertices each."""
+    R = len(counts)
     out = np.zeros(R)
     if R == 0:
         return out
-    counts = np.array([len(r) for r in rings])
-    V = np.concatenate(rings)
     ring_of = np.repeat(np.arange(R), counts)
     start = np.concatenate([[0], np.cumsum(counts)[:-1]])
     nxt = np.arange(len(V)) + 1
@@ -226,7 +237,7 @@ def lambert_rings(rings: list[np.ndarray], receivers: np.ndarray, P: np.ndarray,
     out = 0.5 * np.abs(np.add.reduceat(term, start))
     for i in np.nonzero(bad)[0]:  # crosses the horizon: clip to the hemisphere (rare for ceiling lights)
         k = receivers[i]
-        v = rings[i] - P[k]
+        v = V[start[i] : start[i] + counts[i]] - P[k]
         out[i] = _lambert_one(_clip_convex_or_not(v, v @ N[k]), N[k])
     return out
 
@@ -322,16 +333,35 @@ def visible_polygon_irradiance(radiance, light, tris, P, N, one_sided_normal=Non
     hit, si = hit[order], si[order]
     cuts = np.flatnonzero(np.diff(si)) + 1
     owners = si[np.r_[0, cuts]]
-    hidden = np.array([g[0] if len(g) == 1 else shapely.union_all(g) for g in np.split(hit, cuts)], dtype=object)
+    hidden = _union_per_receiver(hit, np.r_[0, cuts])
     visible = shapely.difference(luv, hidden)
-    rings, ring_owner, ring_sign = _rings_of(visible, owners)
+    xy, counts, ring_owner, ring_sign = _rings_of(visible, owners)
     rec = ids[owners]
     e[rec] = 0.0  # recomputed from the visible part: a wholly hidden lamp reads exactly 0
-    if rings:
-        r3 = [c + r[:, :1] * e1 + r[:, 1:] * e2 for r in rings]
-        vis = lambert_rings(r3, ids[ring_owner], P, N) * ring_sign
+    if len(counts):
+        r3 = c + xy[:, :1] * e1 + xy[:, 1:] * e2  # back to 3-D, on the light's plane
+        vis = _lambert_flat(r3, counts, ids[ring_owner], P, N) * ring_sign
         np.add.at(e, ids[ring_owner], vis)
     return _finish(e, radiance, single)
+
+
+def _union_per_receiver(shadows: np.ndarray, starts: np.ndarray) -> np.ndarray:
+    """The union of each receiver's shadows (``shadows[starts[k]:starts[k + 1]]``), one geometry per
+    receiver: a lone shadow as it is, several by one GEOS unary union per receiver, all in one call
+    (``union_all`` along the rows of a table padded with None, which it leaves out: the same
+    collection, hence the same union, as a call per receiver)."""
+    import shapely
+
+    sizes = np.diff(np.r_[starts, len(shadows)])
+    out = shadows[starts].copy()
+    many = np.flatnonzero(sizes > 1)
+    if len(many):
+        table = np.full((len(many), int(sizes[many].max())), None, dtype=object)
+        row = np.repeat(np.arange(len(many)), sizes[many])
+        col = np.arange(len(row)) - np.repeat(np.cumsum(sizes[many]) - sizes[many], sizes[many])
+        table[row, col] = shadows[np.repeat(sizes > 1, sizes)]
+        out[many] = shapely.union_all(table, axis=1)
+    return out
 
 
 def _finish(e: np.ndarray, radiance, single: bool):
