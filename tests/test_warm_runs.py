@@ -1,0 +1,243 @@
+"""Runs in one Python process: what is kept between ``simulator.run`` calls and when it is not.
+
+The stage reading (:mod:`simulator.scene.stage_cache`), the plan
+(:mod:`simulator.plan.cache`) and the exact estimator's geometric factors
+(:mod:`simulator.engine.exact_memo`) are kept for later runs; a changed
+file, variant, time, light or sensor must be read afresh. Every expected
+reading is the corner-rectangle closed form of the visible part of the lamp
+(``rect_irradiance_parallel``), independent of the contour code that reads it.
+
+The stage: a RectLight 1 m (x) × 2 m (y) at height 2 m facing down, luminance
+L (normalize off), and a black shade over x < 0 at z = 2 − 1e-4 m. A floor
+receiver at (px, py, 0) sees the lamp's part x > px·(1 − 2/z_shade), z_shade the
+float32 nearest 1.9999 (``point3f``).
+"""
+
+import csv
+import io
+import os
+
+import numpy as np
+import pytest
+
+import simulator
+from simulator.config.overrides import apply_overrides
+from simulator.engine import exact_memo
+from simulator.plan import cache as plan_cache
+from simulator.reference.closed_forms import rect_irradiance_parallel
+from simulator.scene import stage_cache
+
+H = 2.0
+Z_SHADE = float(np.float32(1.9999))  # the shade's height as its point3f stores it
+POINTS = ((0.0, 0.0), (0.3, -0.4), (-0.6, 0.5))
+TOL = 1e-9  # relative: float64 contour sums against the closed form
+
+STAGE = """#usda 1.0
+(
+    metersPerUnit = 1
+    upAxis = "Z"
+    defaultPrim = "World"
+)
+
+def Xform "World" (
+    variants = {{ string lamp = "bright" }}
+    prepend variantSets = "lamp"
+)
+{{
+    def RectLight "Lamp"
+    {{
+        float inputs:intensity = {intensity}
+        {samples}
+        bool inputs:normalize = 0
+        float inputs:width = 1
+        float inputs:height = 2
+        double3 xformOp:translate = (0, 0, 2)
+        uniform token[] xformOpOrder = ["xformOp:translate"]
+    }}
+
+    def Mesh "Shade"
+    {{
+        int[] faceVertexCounts = [4]
+        int[] faceVertexIndices = [0, 1, 2, 3]
+        point3f[] points = [(-2, -1.5, 1.9999), (0, -1.5, 1.9999), (0, 1.5, 1.9999), (-2, 1.5, 1.9999)]
+        uniform bool doubleSided = 1
+        color3f[] primvars:displayColor = [(0, 0, 0)]
+    }}
+    variantSet "lamp" = {{
+        "bright" {{ }}
+        "dim" {{
+            over "Lamp"
+            {{
+                float inputs:exposure = -1
+            }}
+        }}
+    }}
+}}
+"""
+
+
+OVER = '#usda 1.0\nover "World"\n{{\n    over "Lamp"\n    {{\n        {}\n    }}\n}}\n'
+
+
+def _expected_lx(px: float, py: float, luminance: float) -> float:
+    """E_v at (px, py, 0): the lamp's part x ∈ [x_e, 0.5], y ∈ [−1, 1], seen past the shade's edge."""
+    x_e = max(-0.5, px * (1.0 - H / Z_SHADE))
+    return float(rect_irradiance_parallel(luminance, x_e - px, 0.5 - px, -1.0 - py, 1.0 - py, H))
+
+
+def _write(folder, intensity=1000.0, samples="", points=POINTS, name="lamp.usda", sublayer=None):
+    stage = STAGE.format(intensity=intensity, samples=samples)
+    if sublayer is not None:
+        stage = stage.replace('defaultPrim = "World"', f'defaultPrim = "World"\n    subLayers = [@{sublayer}@]')
+    (folder / name).write_text(stage)
+    sensors = "\n".join(f'[[sensor]]\nname = "p{i}"\nkind = "irradiance"\nposition = [{x}, {y}, 0]\nnormal = [0, 0, 1]\n'
+                        for i, (x, y) in enumerate(points))
+    cfg = folder / f"{name}.toml"
+    cfg.write_text(f'stage = "{name}"\n\n[simulation]\nsamples = 16\nseed = 1\n\n{sensors}\n'
+                   f'[output]\ncsv = "out/{name}.csv"\n')
+    return cfg
+
+
+def _lx(out) -> list[float]:
+    return [r.values["illuminance_lx"] for r in out.rows]
+
+
+def _check(out, luminance, points=POINTS):
+    assert {r.method for r in out.rows} == {"exact"}
+    for got, (x, y) in zip(_lx(out), points):
+        want = _expected_lx(x, y, luminance)
+        assert abs(got - want) <= TOL * want, (x, y, got, want)
+
+
+@pytest.fixture(autouse=True)
+def _fresh():
+    stage_cache.clear()
+    plan_cache.clear()
+    exact_memo.clear()
+    yield
+
+
+def _run(cfg, **kw):
+    return simulator.run(cfg, log=lambda *a: None, **kw)
+
+
+def _csv_without_seconds(path) -> list[list[str]]:
+    rows = list(csv.reader(io.StringIO(path.read_text())))
+    k = rows[0].index("seconds")
+    return [r[:k] + r[k + 1 :] for r in rows]
+
+
+def test_a_warm_run_writes_the_cold_runs_bytes(tmp_path):
+    """Same config twice in one process: the second is served from the caches, and its CSV (less the
+    timing column) and run record's plan are the first's, byte for byte."""
+    cfg = simulator.load_config(_write(tmp_path))
+    cold = _run(apply_overrides(cfg, csv=str(tmp_path / "cold.csv")))
+    hits = stage_cache.stats()["hits"]
+    warm = _run(apply_overrides(cfg, csv=str(tmp_path / "warm.csv")))
+    assert stage_cache.stats()["hits"] == hits + 1
+    assert _csv_without_seconds(tmp_path / "cold.csv") == _csv_without_seconds(tmp_path / "warm.csv")
+    plan = lambda p: p.read_text().split('"plan": ', 1)[1].split('\n  "', 1)[0]  # noqa: E731
+    assert plan(tmp_path / "cold.run.json") == plan(tmp_path / "warm.run.json")
+    assert cold.record["plan"] == warm.record["plan"]
+    _check(warm, 1000.0)
+
+
+def test_editing_the_stage_between_runs_is_read(tmp_path):
+    """The lamp's intensity doubled in the file (same size, within the same second): the next run
+    reads it, and the exact factors (geometry unchanged) give exactly twice the light."""
+    path = _write(tmp_path, intensity=1000)
+    cfg = simulator.load_config(path)
+    first = _lx(_run(cfg))
+    _write(tmp_path, intensity=2000)  # same byte count
+    second = _run(cfg)
+    _check(second, 2000.0)
+    for a, b in zip(first, second.rows):
+        assert abs(b.values["illuminance_lx"] - 2 * a) <= 1e-12 * 2 * a
+
+
+def test_an_edit_that_keeps_size_and_mtime_is_read(tmp_path):
+    """An edit whose modification time is set back to the old one is still seen (change time, or the
+    content of a recently modified file)."""
+    path = _write(tmp_path, intensity=1000)
+    cfg = simulator.load_config(path)
+    _run(cfg)
+    stage = tmp_path / "lamp.usda"
+    st = os.stat(stage)
+    _write(tmp_path, intensity=3000)
+    os.utime(stage, ns=(st.st_atime_ns, st.st_mtime_ns))
+    _check(_run(cfg), 3000.0)
+
+
+def test_a_racy_entry_is_checked_by_content(tmp_path, monkeypatch):
+    """A file modified just before it was read is compared by content as well: with its stat made
+    blind to the edit, the content still tells."""
+    path = _write(tmp_path, intensity=1000)
+    cfg = simulator.load_config(path)
+    _run(cfg)
+    real = stage_cache.file_identity
+    frozen = {}
+    monkeypatch.setattr(stage_cache, "file_identity", lambda p: frozen.setdefault(p, real(p)))
+    stage_cache.clear()
+    _run(cfg)  # kept with the frozen identities, the stage just written: racy, so hashed
+    _write(tmp_path, intensity=1500)
+    _check(_run(cfg), 1500.0)
+
+
+def test_an_edited_sublayer_is_read(tmp_path):
+    """A layer the stage composes (a sublayer) is watched too: its stronger opinion is read after an edit."""
+    (tmp_path / "over.usda").write_text(OVER.format("float inputs:intensity = 1000"))
+    cfg = simulator.load_config(_write(tmp_path, intensity=500, sublayer="./over.usda"))
+    _check(_run(cfg), 500.0)  # the root layer is stronger than its sublayer
+    (tmp_path / "over.usda").write_text(OVER.format("float inputs:exposure = 1"))
+    _check(_run(cfg), 1000.0)  # exposure +1 from the sublayer: 2 × 500
+
+
+def test_a_changed_variant_is_read(tmp_path):
+    """Variant ``dim`` sets exposure −1 (half the light); the selection keys the kept reading."""
+    cfg = simulator.load_config(_write(tmp_path))
+    _check(_run(apply_overrides(cfg, variants=["lamp=dim"])), 500.0)
+    _check(_run(apply_overrides(cfg, variants=["lamp=bright"])), 1000.0)
+    _check(_run(apply_overrides(cfg, variants=["lamp=dim"])), 500.0)
+
+
+def test_a_changed_time_is_read(tmp_path):
+    """Intensity time samples 1: 1000, 2: 4000 (held, not interpolated, at the samples themselves)."""
+    samples = "float inputs:intensity.timeSamples = { 1: 1000, 2: 4000 }"
+    cfg = simulator.load_config(_write(tmp_path, samples=samples))
+    _check(_run(apply_overrides(cfg, time=1.0)), 1000.0)
+    _check(_run(apply_overrides(cfg, time=2.0)), 4000.0)
+
+
+def test_moved_sensors_are_planned_and_read_afresh(tmp_path):
+    """Same stage, other sensors: the plan and the exact factors are not the first config's."""
+    _check(_run(simulator.load_config(_write(tmp_path))), 1000.0)
+    moved = ((0.1, 0.2), (-0.3, -0.7), (0.45, 0.0))
+    out = _run(simulator.load_config(_write(tmp_path, points=moved)))
+    _check(out, 1000.0, moved)
+
+
+def test_write_false_writes_nothing_and_reads_the_same(tmp_path):
+    cfg = simulator.load_config(_write(tmp_path))
+    bare = _run(cfg, write=False)
+    assert not (tmp_path / "out").exists()
+    assert bare.csv_path is None and bare.record_path is None and bare.record["maps"] == []
+    written = _run(cfg)
+    assert written.csv_path.exists()
+    assert _lx(bare) == _lx(written)
+    _check(bare, 1000.0)
+
+
+def test_changing_the_scene_handed_out_does_not_change_the_next_run(tmp_path):
+    cfg = simulator.load_config(_write(tmp_path))
+    out = _run(cfg)
+    out.scene.geometry.points += 5.0  # a caller's changes to its own copy: the shade moved away ...
+    out.scene.lights.clear()  # ... and the lamp gone
+    _check(_run(cfg), 1000.0)
+
+
+def test_the_caches_are_bounded(tmp_path):
+    for k in range(stage_cache.MAX_ENTRIES + 3):
+        _run(simulator.load_config(_write(tmp_path, intensity=1000 + k, name=f"lamp{k}.usda")))
+    assert stage_cache.stats()["entries"] <= stage_cache.MAX_ENTRIES
+    assert len(plan_cache._entries) <= plan_cache.MAX_ENTRIES
+    assert len(exact_memo._entries) <= exact_memo.MAX_ENTRIES
