@@ -18,7 +18,8 @@ times changing; such a file's SHA-256 is kept too and compared on each use
 Each use hands out a deep copy, so a caller that changes the scene it was
 given cannot change what later runs read. The cache holds the
 :data:`MAX_ENTRIES` most recently used stages (at most :data:`MAX_BYTES` of
-arrays in all); :func:`clear` empties it.
+arrays in all; none bigger than :data:`MAX_ENTRY_BYTES`); :func:`clear`
+empties it.
 """
 
 from __future__ import annotations
@@ -36,12 +37,15 @@ from itertools import count
 
 import numpy as np
 
-__all__ = ["MAX_ENTRIES", "MAX_BYTES", "RACY_NS", "cached_stage", "clear", "stats", "file_identity"]
+__all__ = ["MAX_ENTRIES", "MAX_BYTES", "MAX_ENTRY_BYTES", "RACY_NS", "cached_stage", "clear", "stats", "file_identity"]
 
 #: stages kept (least recently used dropped first)
 MAX_ENTRIES = 4
-#: array bytes kept in all (geometry, texture maps); a bigger stage is read but not kept
-MAX_BYTES = 1 << 30
+#: array bytes kept in all (geometry, texture maps)
+MAX_BYTES = 1 << 29
+#: a stage with more array bytes than this is read but not kept (a one-off run of a big stage is
+#: not charged a second copy)
+MAX_ENTRY_BYTES = 1 << 28
 #: a file modified within this many nanoseconds of its stat is also checked by content
 RACY_NS = 2_000_000_000
 
@@ -168,7 +172,7 @@ def cached_stage(read, path, light_units: str, radiometric_spectrum, variants: d
         return scene, None
     racy = {p: _sha256(p) for p, v in identity.items() if stat_ns - v[2] < RACY_NS}
     nbytes = _array_bytes(scene)
-    if nbytes > MAX_BYTES:
+    if nbytes > MAX_ENTRY_BYTES:
         return scene, None
     e = _Entry(copy.deepcopy(scene), next(_serial), identity, racy, nbytes)
     with _lock:
