@@ -422,7 +422,7 @@ def exact_direct(scene, sensors, sensor_ids: np.ndarray, light_mask: np.ndarray 
     g = scene.geometry
     tris_all = g.points[g.triangles] if g.n_triangles else np.zeros((0, 3, 3))
     scale = max(1.0, float(np.abs(tris_all).max()) if len(tris_all) else 1.0)
-    scene_key = exact_memo.digest(tris_all, [scale])  # the factors below depend on the lights, receivers and this
+    scene_key = exact_memo.digest(tris_all, [scale, PLANE_SLACK])  # the factors below depend on the lights, receivers and this
     for j, light in enumerate(scene.lights):
         on = np.ones(len(ids), bool) if light_mask is None else light_mask[ids, j] != 0
         if not on.any():

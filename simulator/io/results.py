@@ -65,6 +65,9 @@ def readings_from(sensors: list[Sensor], mean: np.ndarray, stderr: np.ndarray, s
     ``method`` is one name for all, or one per sensor.
     """
     rows = []
+    if np.asarray(mean).dtype == np.float64 and np.asarray(stderr).dtype == np.float64:
+        # Python floats: the same doubles and the same products as float64 scalars, without indexing numpy per row
+        mean, stderr = np.asarray(mean).tolist(), np.asarray(stderr).tolist()
     for i, s in enumerate(sensors):
         m, e = mean[i], stderr[i]
         v: dict[str, float] = {}

@@ -8,7 +8,8 @@ sensors and the requested method and component only. It is kept under
   is a new reading, hence a new token),
 - a digest of every sensor's fields (name, kind, position, normal, up, size,
   half-angle, resolution, grid, source), and
-- the requested method and component.
+- the requested method and component, and the planner's tunable bounds
+  (``AUTO_GUIDED``, ``LARGE_SOURCE_SR``, the ``exact`` rule's bounds).
 
 A scene without a token (not kept by the stage cache) is planned afresh each
 time. The :data:`MAX_ENTRIES` most recently used plans are kept. Callers
@@ -46,11 +47,19 @@ def sensors_digest(sensors) -> bytes:
     return h.digest()
 
 
+def _rules() -> tuple:
+    """The planner's tunable rules at this moment (a changed bound is a different plan)."""
+    from simulator.plan import exact_rule, planner
+
+    return (planner.AUTO_GUIDED, planner.LARGE_SOURCE_SR, exact_rule.EXACT_MAX_OCCLUDERS,
+            exact_rule.EXACT_MAX_SCENE_TRIANGLES)
+
+
 def cached_plan(make, token: int | None, sensors, requested: str, component: str):
     """The plan ``make()`` returns, or the one kept for this scene token, sensors, method and component."""
     if token is None:
         return make()
-    key = (token, sensors_digest(sensors), requested, component)
+    key = (token, sensors_digest(sensors), requested, component, _rules())
     with _lock:
         plan = _entries.get(key)
         if plan is not None:
