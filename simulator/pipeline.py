@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import hashlib
 import platform
 import sys
 import time
@@ -136,7 +135,9 @@ def _merge_responses(out: EngineResult, r: EngineResult, ids, hero, engine, sim,
 
 
 def _sha256(path: Path) -> str:
-    return hashlib.sha256(path.read_bytes()).hexdigest()
+    from simulator.scene.stage_cache import file_sha256  # kept while the file is unchanged
+
+    return file_sha256(path)
 
 
 def _versions() -> dict:

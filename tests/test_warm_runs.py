@@ -241,3 +241,37 @@ def test_the_caches_are_bounded(tmp_path):
     assert stage_cache.stats()["entries"] <= stage_cache.MAX_ENTRIES
     assert len(plan_cache._entries) <= plan_cache.MAX_ENTRIES
     assert len(exact_memo._entries) <= exact_memo.MAX_ENTRIES
+
+
+def test_the_records_stage_digest_follows_an_edit(tmp_path):
+    """The run record's SHA-256 of the stage is the file's, before and after an edit between runs."""
+    import hashlib
+
+    cfg = simulator.load_config(_write(tmp_path, intensity=1000))
+    stage = tmp_path / "lamp.usda"
+    assert _run(cfg).record["stage"]["sha256"] == hashlib.sha256(stage.read_bytes()).hexdigest()
+    _write(tmp_path, intensity=2000)
+    assert _run(cfg).record["stage"]["sha256"] == hashlib.sha256(stage.read_bytes()).hexdigest()
+
+
+def test_an_edited_ies_file_is_read(tmp_path):
+    """The IES file a light's shaping names (read by Python, seen by the audit hook): its candela
+    multiplier (the third number of the line after TILT) 1 → 2 doubles every reading of the point
+    source's closed form (CIE 171:2006 case 5.2, I(θ) = 1000·cos θ cd, absolute)."""
+    from simulator.bundled import configs_dir, stages_dir
+
+    (tmp_path / "photometry").mkdir()
+    ies = tmp_path / "photometry" / "cie171_lambert_1000cd.ies"
+    text = (stages_dir() / "photometry" / "cie171_lambert_1000cd.ies").read_text()
+    ies.write_text(text)
+    (tmp_path / "cie171_5_2_ies.usda").write_text((stages_dir() / "cie171_5_2_ies.usda").read_text())
+    toml = (configs_dir() / "cie171_5_2_ies.toml").read_text().replace('"../stages/', '"')
+    (tmp_path / "case.toml").write_text(toml)
+    cfg = apply_overrides(simulator.load_config(tmp_path / "case.toml"), csv=str(tmp_path / "out.csv"))
+    first = _lx(_run(cfg))
+    assert "\n1 -1 1 91 " in text
+    ies.write_text(text.replace("\n1 -1 1 91 ", "\n1 -1 2 91 ", 1))
+    second = _lx(_run(cfg))
+    assert all(a > 0 for a in first)
+    for a, b in zip(first, second):
+        assert abs(b - 2 * a) <= 1e-12 * 2 * a

@@ -163,7 +163,11 @@ def _csv_text(rows: list[Reading]) -> str:
         "method": [r.method for r in rows], "target_met": [r.target_met for r in rows],
     }  # fmt: skip
     cells = []
+    present = set().union(*(r.values.keys() for r in rows)) if rows else set()
     for c in columns:
+        if c not in present and c not in fixed:  # a column no row fills (another kind's)
+            cells.append([""] * len(rows))
+            continue
         in_values = [r.values.get(c, _ABSENT) for r in rows]  # a reading's value wins over the fixed fields
         if c in fixed:
             in_values = [f if v is _ABSENT else v for v, f in zip(in_values, fixed[c])]

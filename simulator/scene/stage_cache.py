@@ -37,7 +37,8 @@ from itertools import count
 
 import numpy as np
 
-__all__ = ["MAX_ENTRIES", "MAX_BYTES", "MAX_ENTRY_BYTES", "RACY_NS", "cached_stage", "clear", "stats", "file_identity"]
+__all__ = ["MAX_ENTRIES", "MAX_BYTES", "MAX_ENTRY_BYTES", "RACY_NS", "cached_stage", "clear", "stats", "file_identity",
+           "file_sha256"]
 
 #: stages kept (least recently used dropped first)
 MAX_ENTRIES = 4
@@ -182,10 +183,35 @@ def cached_stage(read, path, light_units: str, radiometric_spectrum, variants: d
     return scene, e.token
 
 
+_digests: OrderedDict = OrderedDict()  # path -> (identity, SHA-256 hex)
+
+
+def file_sha256(path) -> str:
+    """SHA-256 (hex) of a file's bytes, kept while the file stats the same and was not modified within
+    :data:`RACY_NS` of being hashed (the run record's stage digest: a big stage is not hashed again by
+    every run)."""
+    path = os.path.abspath(os.fspath(path))
+    ident = file_identity(path)
+    with _lock:
+        kept = _digests.get(path)
+    if kept is not None and ident is not None and kept[0] == ident:
+        return kept[1]
+    stat_ns = time.time_ns()
+    with open(path, "rb") as f:
+        digest = hashlib.sha256(f.read()).hexdigest()
+    if ident is not None and ident == file_identity(path) and stat_ns - ident[2] >= RACY_NS:
+        with _lock:
+            _digests[path] = (ident, digest)
+            while len(_digests) > 4 * MAX_ENTRIES:
+                _digests.popitem(last=False)
+    return digest
+
+
 def clear() -> None:
-    """Forget every kept stage."""
+    """Forget every kept stage and file digest."""
     with _lock:
         _entries.clear()
+        _digests.clear()
 
 
 def stats() -> dict:
