@@ -108,3 +108,33 @@ def test_png_encoder_round_trips():
     img = Image.open(io.BytesIO(png_bytes(rgb)))
     assert img.mode == "RGB" and img.size == (53, 37)
     assert np.array_equal(np.asarray(img), rgb)
+
+
+def test_rings_clipped_to_the_horizon_together_equal_one_at_a_time():
+    """Star-shaped (non-convex) rings around receivers of random facing, some with vertices on the
+    horizon plane or at the receiver: the stacked clip and contour sum give the loop's bits."""
+    rng = np.random.default_rng(9)
+    rings = []
+    for i in range(600):
+        k = int(rng.integers(3, 30))
+        ang, rad = np.sort(rng.uniform(0, 2 * np.pi, k)), rng.uniform(0.3, 1.5, k)
+        e1 = rng.normal(size=3)
+        e1 /= np.linalg.norm(e1)
+        e2 = np.cross(e1, rng.normal(size=3))
+        e2 /= np.linalg.norm(e2)
+        pts = rng.normal(size=3) * 0.5 + (rad * np.cos(ang))[:, None] * e1 + (rad * np.sin(ang))[:, None] * e2
+        if i % 10 == 0:
+            pts[0] = 0.0
+        if i % 7 == 0:
+            pts = np.round(pts * 2) / 2
+        rings.append(pts)
+    P = np.zeros((20, 3))
+    N = rng.normal(size=(20, 3))
+    N[:5] = np.eye(3)[rng.integers(0, 3, 5)]
+    N /= np.linalg.norm(N, axis=1)[:, None]
+    rec = rng.integers(0, 20, len(rings))
+    counts = np.array([len(r) for r in rings])
+    loop = [X._lambert_one(X._clip_convex_or_not(r - P[k], (r - P[k]) @ N[k]), N[k]) for r, k in zip(rings, rec)]
+    many = X._lambert_clipped(np.concatenate(rings), np.r_[0, np.cumsum(counts)[:-1]], counts, rec,
+                              np.arange(len(rings)), P, N)  # fmt: skip
+    assert np.array_equal(np.array(loop), many)

@@ -183,7 +183,9 @@ def lambert_rings(rings: list[np.ndarray], receivers: np.ndarray, P: np.ndarray,
     """Cosine-weighted solid angle ∫ cos θ dω of each ring (a simple planar polygon).
 
     Vectorised Lambert contour sums; rings that dip below a receiver's horizon
-    are clipped to its hemisphere one by one.
+    are clipped to its hemisphere, all together (:func:`_lambert_clipped`,
+    the bits of :func:`_clip_convex_or_not` and :func:`_lambert_one` one ring
+    at a time).
 
     Parameters
     ----------
@@ -235,10 +237,75 @@ def _lambert_flat(V: np.ndarray, counts: np.ndarray, receivers: np.ndarray, P: n
     proj = np.einsum("ij,ij->i", c, N[rec]) / np.where(sin_g > 0.0, sin_g, 1.0)
     term = np.where((sin_g > 0.0) & (r > 0.0) & (r[nxt] > 0.0), gamma * proj, 0.0)
     out = 0.5 * np.abs(np.add.reduceat(term, start))
-    for i in np.nonzero(bad)[0]:  # crosses the horizon: clip to the hemisphere (rare for ceiling lights)
-        k = receivers[i]
-        v = V[start[i] : start[i] + counts[i]] - P[k]
-        out[i] = _lambert_one(_clip_convex_or_not(v, v @ N[k]), N[k])
+    crossing = np.flatnonzero(bad)  # crosses the horizon: clip to the hemisphere (rare for ceiling lights)
+    if len(crossing):
+        out[crossing] = _lambert_clipped(V, start, counts, receivers, crossing, P, N)
+    return out
+
+
+def _lambert_clipped(V, start, counts, receivers, which, P, N) -> np.ndarray:
+    """:func:`_lambert_one` of :func:`_clip_convex_or_not` of each ring in ``which`` (relative to its
+    receiver, clipped to its hemisphere), for all of them at once: the same operations on each ring,
+    stacked (row-wise norms, cross products and dot products, one stacked ``matmul`` per ring for
+    ``c @ n`` and each ring's sum by ``np.add.reduceat``), checked bit for bit against the loop."""
+    k = counts[which]
+    idx = np.repeat(start[which], k) + (np.arange(int(k.sum())) - np.repeat(np.cumsum(k) - k, k))
+    rec = np.repeat(receivers[which], k)
+    v = V[idx] - P[rec]
+    ring = np.repeat(np.arange(len(which)), k)
+    first = np.cumsum(k) - k
+    sv = _ring_dot(v, ring, first, k, N[receivers[which]])  # v @ n, as the loop's matrix-vector product
+    prev = np.arange(len(v)) - 1
+    prev[first] = first + k - 1
+    # Sutherland–Hodgman, keeping s ≥ 0: per edge (prev → this), its crossing, then its end if kept
+    a, sa, b, sb = v[prev], sv[prev], v, sv
+    cross = (sa >= 0.0) != (sb >= 0.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        q = a + (b - a) * np.where(cross, sa / (sa - sb), 0.0)[:, None]
+    pts = np.stack([q, b], axis=1).reshape(-1, 3)
+    keep = np.stack([cross, sb >= 0.0], axis=1).reshape(-1)
+    owner = np.repeat(ring, 2)[keep]
+    c_pts = pts[keep]
+    # _lambert_one: drop vertices at the receiver, then rings of fewer than 3
+    c_pts, owner = c_pts[np.linalg.norm(c_pts, axis=1) > 0.0], owner[np.linalg.norm(c_pts, axis=1) > 0.0]
+    n_of = np.bincount(owner, minlength=len(which))
+    live = n_of[owner] >= 3
+    c_pts, owner = c_pts[live], owner[live]
+    out = np.zeros(len(which))
+    if not len(c_pts):
+        return out
+    present, n_k = np.unique(owner, return_counts=True)
+    s0 = np.cumsum(n_k) - n_k
+    nxt = np.arange(len(c_pts)) + 1
+    nxt[s0 + n_k - 1] = s0
+    u = c_pts / np.linalg.norm(c_pts, axis=1)[:, None]
+    w = u[nxt]
+    c = np.cross(u, w)
+    sin_g = np.linalg.norm(c, axis=1)
+    gamma = np.arctan2(sin_g, np.sum(u * w, axis=1))
+    cn = _ring_dot(c, np.repeat(np.arange(len(present)), n_k), s0, n_k, N[receivers[which][present]])
+    proj = np.where(sin_g > 0.0, cn / np.where(sin_g > 0.0, sin_g, 1.0), 0.0)
+    out[present] = 0.5 * np.abs(_ring_sum(gamma * proj, s0, n_k))
+    return out
+
+
+def _ring_dot(x: np.ndarray, ring: np.ndarray, first: np.ndarray, k: np.ndarray, n: np.ndarray) -> np.ndarray:
+    """``x[ring r] @ n[r]`` for every ring at once, through a stacked ``matmul`` over rings padded
+    with zeros: per ring the bits of its own matrix-vector product (a product per row does not
+    always give them)."""
+    pad = np.zeros((len(k), int(k.max()), 3))
+    pos = np.arange(len(x)) - first[ring]
+    pad[ring, pos] = x
+    return (pad @ n[:, :, None])[ring, pos, 0]
+
+
+def _ring_sum(x: np.ndarray, first: np.ndarray, k: np.ndarray) -> np.ndarray:
+    """``np.sum`` of each ring's run of ``x``, rings of one length together (numpy sums a row of n
+    pairwise, as it does an array of n; ``np.add.reduceat`` sums in order, other bits)."""
+    out = np.zeros(len(k))
+    for n in np.unique(k):  # a few lengths, not one call per ring
+        rows = np.flatnonzero(k == n)
+        out[rows] = x[first[rows][:, None] + np.arange(n)].sum(axis=1)
     return out
 
 
