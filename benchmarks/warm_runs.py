@@ -6,7 +6,8 @@ exact grid) runs, in one process, one cold ``simulator.run(cfg)`` (imports, firs
 first plan), then N warm runs writing the outputs (CSV, run record, maps, into a temporary
 folder) and N warm runs with ``write=False``; and N warm runs of a light-intensity study (the
 config's ``--intensity-of`` light's ``inputs:intensity`` scaled in a copy of the stage between
-runs: a fresh stage read and plan each time, the exact estimator's geometric factors kept). It
+runs: a fresh stage read and plan each time, the exact estimator's geometric factors kept), and
+N warm runs with every sensor moved (a new plan and new exact geometry each run). It
 prints the median wall and CPU time (``time.process_time``: all threads, less disturbed by a
 loaded machine than wall time) per run, and the 1-minute load average. ``--profile K``: a
 cProfile of K warm writing runs, the top entries by cumulative time.
@@ -59,6 +60,7 @@ def main(argv=None) -> int:
         written = _timed(lambda: simulator.run(cfg, log=quiet), args.runs)
         bare = _timed(lambda: simulator.run(cfg, log=quiet, write=False), args.runs)
         study = _intensity_study(cfg, Path(tmp), args.intensity_of, args.runs, quiet)
+        moved = _moved_sensors(cfg, args.runs, quiet)
         if args.profile:
             import cProfile
             import pstats
@@ -77,7 +79,25 @@ def main(argv=None) -> int:
     if study is not None:
         print(f"intensity study, write=False:  median wall {study[0] * 1e3:.1f} ms, CPU {study[1] * 1e3:.1f} ms "
               "(stage edited between runs: read and planned afresh)")
+    print(f"sensors moved, write=False:    median wall {moved[0] * 1e3:.1f} ms, CPU {moved[1] * 1e3:.1f} ms "
+          "(every sensor 1 mm higher each run: planned and read afresh)")
     return 0
+
+
+def _moved_sensors(cfg, runs: int, quiet):
+    """Median (wall, CPU) of runs whose sensors all rise by 1 mm each run (a new plan and new exact geometry)."""
+    import dataclasses
+
+    import simulator
+
+    k = iter(range(1, 10**9))
+
+    def one():
+        dz = 1e-3 * next(k)
+        sensors = [dataclasses.replace(s, position=s.position + [0.0, 0.0, dz]) for s in cfg.sensors]
+        simulator.run(dataclasses.replace(cfg, sensors=sensors, grids=[]), log=quiet, write=False)
+
+    return _timed(one, runs)
 
 
 def _intensity_study(cfg, folder: Path, light: str, runs: int, quiet):
