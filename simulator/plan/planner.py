@@ -494,8 +494,10 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
     paths, paths_why = _path_method(scene)
     # the per-sensor tests, stacked over the sensors where they are numpy products
     culled_of = lights_behind_many(scene, sensors)
-    seen = [_reflecting_in_front(scene, s, bounds) for s in sensors]
-    refusals = [analytic_refusal(scene, s, bounds) for s in sensors] if requested == "auto" else [None] * len(sensors)
+    seen, refusals = [], []  # per sensor in turn: both ask for its plane's first triangle (kept once)
+    for s in sensors:
+        seen.append(_reflecting_in_front(scene, s, bounds))
+        refusals.append(analytic_refusal(scene, s, bounds) if requested == "auto" else None)
     direct_only = [not reflects or component == "direct" for _, reflects in seen]
     asks_exact = [requested == "exact" or (requested == "auto" and component != "indirect" and d
                                            and not (r is None and d)) for r, d in zip(refusals, direct_only)]  # fmt: skip
