@@ -163,7 +163,7 @@ def _csv_text(rows: list[Reading]) -> str:
         "method": [r.method for r in rows], "target_met": [r.target_met for r in rows],
     }  # fmt: skip
     cells = []
-    present = set().union(*(r.values.keys() for r in rows)) if rows else set()
+    present = {k for r in rows for k in r.values}
     for c in columns:
         if c not in present and c not in fixed:  # a column no row fills (another kind's)
             cells.append([""] * len(rows))
