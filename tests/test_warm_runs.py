@@ -51,7 +51,7 @@ def Xform "World" (
         bool inputs:normalize = 0
         float inputs:width = 1
         float inputs:height = 2
-        double3 xformOp:translate = (0, 0, 2)
+        double3 xformOp:translate = ({dx}, 0, 2)
         uniform token[] xformOpOrder = ["xformOp:translate"]
     }}
 
@@ -79,14 +79,15 @@ def Xform "World" (
 OVER = '#usda 1.0\nover "World"\n{{\n    over "Lamp"\n    {{\n        {}\n    }}\n}}\n'
 
 
-def _expected_lx(px: float, py: float, luminance: float) -> float:
-    """E_v at (px, py, 0): the lamp's part x ∈ [x_e, 0.5], y ∈ [−1, 1], seen past the shade's edge."""
-    x_e = max(-0.5, px * (1.0 - H / Z_SHADE))
-    return float(rect_irradiance_parallel(luminance, x_e - px, 0.5 - px, -1.0 - py, 1.0 - py, H))
+def _expected_lx(px: float, py: float, luminance: float, dx: float = 0.0) -> float:
+    """E_v at (px, py, 0): the part x ∈ [x_e, dx + 0.5], y ∈ [−1, 1] of the lamp (centred at x = dx)
+    seen past the shade's edge, x_e the edge x = 0 projected from the receiver onto the lamp's plane."""
+    x_e = max(dx - 0.5, px * (1.0 - H / Z_SHADE))
+    return float(rect_irradiance_parallel(luminance, x_e - px, dx + 0.5 - px, -1.0 - py, 1.0 - py, H))
 
 
-def _write(folder, intensity=1000.0, samples="", points=POINTS, name="lamp.usda", sublayer=None):
-    stage = STAGE.format(intensity=intensity, samples=samples)
+def _write(folder, intensity=1000.0, samples="", points=POINTS, name="lamp.usda", sublayer=None, dx=0.0):
+    stage = STAGE.format(intensity=intensity, samples=samples, dx=dx)
     if sublayer is not None:
         stage = stage.replace('defaultPrim = "World"', f'defaultPrim = "World"\n    subLayers = [@{sublayer}@]')
     (folder / name).write_text(stage)
@@ -102,10 +103,10 @@ def _lx(out) -> list[float]:
     return [r.values["illuminance_lx"] for r in out.rows]
 
 
-def _check(out, luminance, points=POINTS):
+def _check(out, luminance, points=POINTS, dx=0.0):
     assert {r.method for r in out.rows} == {"exact"}
     for got, (x, y) in zip(_lx(out), points):
-        want = _expected_lx(x, y, luminance)
+        want = _expected_lx(x, y, luminance, dx)
         assert abs(got - want) <= TOL * want, (x, y, got, want)
 
 
@@ -153,6 +154,15 @@ def test_editing_the_stage_between_runs_is_read(tmp_path):
     _check(second, 2000.0)
     for a, b in zip(first, second.rows):
         assert abs(b.values["illuminance_lx"] - 2 * a) <= 1e-12 * 2 * a
+
+
+def test_a_moved_lamp_is_read_afresh(tmp_path):
+    """The lamp moved 0.25 m along x in the file: its visible part is recomputed (the exact factors are
+    keyed by the lamp's corners), not scaled from the old one."""
+    cfg = simulator.load_config(_write(tmp_path))
+    _check(_run(cfg), 1000.0)
+    _write(tmp_path, dx=0.25)
+    _check(_run(cfg), 1000.0, dx=0.25)
 
 
 def test_an_edit_that_keeps_size_and_mtime_is_read(tmp_path):
