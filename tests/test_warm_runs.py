@@ -16,6 +16,7 @@ float32 nearest 1.9999 (``point3f``).
 import csv
 import io
 import os
+import time
 
 import numpy as np
 import pytest
@@ -86,7 +87,15 @@ def _expected_lx(px: float, py: float, luminance: float, dx: float = 0.0) -> flo
     return float(rect_irradiance_parallel(luminance, x_e - px, dx + 0.5 - px, -1.0 - py, 1.0 - py, H))
 
 
-def _write(folder, intensity=1000.0, samples="", points=POINTS, name="lamp.usda", sublayer=None, dx=0.0):
+def _age(*paths):
+    """Set the files' modification times 10 s back: settled files, whose reading the stage cache keeps
+    (:data:`~simulator.scene.stage_cache.RACY_NS`); each call sets a new time, so an edit still shows."""
+    t = time.time_ns() - 10_000_000_000
+    for p in paths:
+        os.utime(p, ns=(t, t))
+
+
+def _write(folder, intensity=1000.0, samples="", points=POINTS, name="lamp.usda", sublayer=None, dx=0.0, age=True):
     stage = STAGE.format(intensity=intensity, samples=samples, dx=dx)
     if sublayer is not None:
         stage = stage.replace('defaultPrim = "World"', f'defaultPrim = "World"\n    subLayers = [@{sublayer}@]')
@@ -96,6 +105,8 @@ def _write(folder, intensity=1000.0, samples="", points=POINTS, name="lamp.usda"
     cfg = folder / f"{name}.toml"
     cfg.write_text(f'stage = "{name}"\n\n[simulation]\nsamples = 16\nseed = 1\n\n{sensors}\n'
                    f'[output]\ncsv = "out/{name}.csv"\n')
+    if age:
+        _age(folder / name)
     return cfg
 
 
@@ -144,11 +155,12 @@ def test_a_warm_run_writes_the_cold_runs_bytes(tmp_path):
 
 
 def test_editing_the_stage_between_runs_is_read(tmp_path):
-    """The lamp's intensity doubled in the file (same size, within the same second): the next run
-    reads it, and the exact factors (geometry unchanged) give exactly twice the light."""
+    """The lamp's intensity doubled in the file (same size): the next run reads it, and the exact
+    factors (geometry unchanged) give exactly twice the light."""
     path = _write(tmp_path, intensity=1000)
     cfg = simulator.load_config(path)
     first = _lx(_run(cfg))
+    assert stage_cache.stats()["entries"] == 1  # kept: the edit below must be seen, not just missed
     _write(tmp_path, intensity=2000)  # same byte count
     second = _run(cfg)
     _check(second, 2000.0)
@@ -161,6 +173,7 @@ def test_a_moved_lamp_is_read_afresh(tmp_path):
     keyed by the lamp's corners), not scaled from the old one."""
     cfg = simulator.load_config(_write(tmp_path))
     _check(_run(cfg), 1000.0)
+    assert stage_cache.stats()["entries"] == 1
     _write(tmp_path, dx=0.25)
     _check(_run(cfg), 1000.0, dx=0.25)
 
@@ -171,6 +184,7 @@ def test_an_edit_that_keeps_size_and_mtime_is_read(tmp_path):
     path = _write(tmp_path, intensity=1000)
     cfg = simulator.load_config(path)
     _run(cfg)
+    assert stage_cache.stats()["entries"] == 1
     stage = tmp_path / "lamp.usda"
     st = os.stat(stage)
     _write(tmp_path, intensity=3000)
@@ -178,27 +192,30 @@ def test_an_edit_that_keeps_size_and_mtime_is_read(tmp_path):
     _check(_run(cfg), 3000.0)
 
 
-def test_a_racy_entry_is_checked_by_content(tmp_path, monkeypatch):
-    """A file modified just before it was read is compared by content as well: with its stat made
-    blind to the edit, the content still tells."""
-    path = _write(tmp_path, intensity=1000)
-    cfg = simulator.load_config(path)
+def test_a_just_modified_stage_is_used_but_not_kept(tmp_path):
+    """A reading of files modified within RACY_NS of it is not kept (an edit during the reading could
+    sit under the new times); once the files have settled, the next reading is kept and used."""
+    cfg = simulator.load_config(_write(tmp_path, age=False))
+    before = stage_cache.stats()
+    _check(_run(cfg), 1000.0)
+    _check(_run(cfg), 1000.0)
+    after = stage_cache.stats()
+    assert (after["reads"] - before["reads"], after["hits"] - before["hits"]) == (2, 0)
+    _age(tmp_path / "lamp.usda")
     _run(cfg)
-    real = stage_cache.file_identity
-    frozen = {}
-    monkeypatch.setattr(stage_cache, "file_identity", lambda p: frozen.setdefault(p, real(p)))
-    stage_cache.clear()
-    _run(cfg)  # kept with the frozen identities, the stage just written: racy, so hashed
-    _write(tmp_path, intensity=1500)
-    _check(_run(cfg), 1500.0)
+    _check(_run(cfg), 1000.0)
+    assert stage_cache.stats()["hits"] == after["hits"] + 1
 
 
 def test_an_edited_sublayer_is_read(tmp_path):
     """A layer the stage composes (a sublayer) is watched too: its stronger opinion is read after an edit."""
     (tmp_path / "over.usda").write_text(OVER.format("float inputs:intensity = 1000"))
+    _age(tmp_path / "over.usda")
     cfg = simulator.load_config(_write(tmp_path, intensity=500, sublayer="./over.usda"))
     _check(_run(cfg), 500.0)  # the root layer is stronger than its sublayer
+    assert stage_cache.stats()["entries"] == 1
     (tmp_path / "over.usda").write_text(OVER.format("float inputs:exposure = 1"))
+    _age(tmp_path / "over.usda")
     _check(_run(cfg), 1000.0)  # exposure +1 from the sublayer: 2 × 500
 
 
@@ -275,12 +292,15 @@ def test_an_edited_ies_file_is_read(tmp_path):
     text = (stages_dir() / "photometry" / "cie171_lambert_1000cd.ies").read_text()
     ies.write_text(text)
     (tmp_path / "cie171_5_2_ies.usda").write_text((stages_dir() / "cie171_5_2_ies.usda").read_text())
+    _age(ies, tmp_path / "cie171_5_2_ies.usda")
     toml = (configs_dir() / "cie171_5_2_ies.toml").read_text().replace('"../stages/', '"')
     (tmp_path / "case.toml").write_text(toml)
     cfg = apply_overrides(simulator.load_config(tmp_path / "case.toml"), csv=str(tmp_path / "out.csv"))
     first = _lx(_run(cfg))
+    assert stage_cache.stats()["entries"] == 1
     assert "\n1 -1 1 91 " in text
     ies.write_text(text.replace("\n1 -1 1 91 ", "\n1 -1 2 91 ", 1))
+    _age(ies)
     second = _lx(_run(cfg))
     assert all(a > 0 for a in first)
     for a, b in zip(first, second):

@@ -10,10 +10,12 @@ run with the same selection gets the kept scene only while every one of
 those files still stats the same; an edited, replaced, touched or removed
 file makes it read the stage afresh.
 
-A file modified less than :data:`RACY_NS` before it was stat'ed could be
-modified again within one tick of a coarse file-system clock without its
-times changing; such a file's SHA-256 is kept too and compared on each use
-(the rule git applies to its index).
+A reading is kept only if none of its files was modified later than
+:data:`RACY_NS` before the reading began: a file edited while it was being
+read, or just before on a file system whose clock ticks coarsely, could
+otherwise state the new times beside the old content (the "racy" case git
+guards its index against). Such a reading is used once; the next run reads
+again and keeps that reading once its files have settled.
 
 Each use hands out a deep copy, so a caller that changes the scene it was
 given cannot change what later runs read. The cache holds the
@@ -47,7 +49,7 @@ MAX_BYTES = 1 << 29
 #: a stage with more array bytes than this is read but not kept (a one-off run of a big stage is
 #: not charged a second copy)
 MAX_ENTRY_BYTES = 1 << 28
-#: a file modified within this many nanoseconds of its stat is also checked by content
+#: a reading is kept only if every file it read was last modified this many nanoseconds before it began
 RACY_NS = 2_000_000_000
 
 _entries: OrderedDict = OrderedDict()
@@ -62,7 +64,6 @@ class _Entry:
     scene: object
     token: int  #: unique per reading: what later caches (the plan) key on
     identity: dict  #: path -> (size, inode, mtime_ns, ctime_ns)
-    racy: dict  #: path -> SHA-256 hex, for files modified within RACY_NS of their stat
     nbytes: int
 
 
@@ -98,14 +99,6 @@ def file_identity(path: str) -> tuple | None:
     return (st.st_size, st.st_ino, st.st_mtime_ns, st.st_ctime_ns)
 
 
-def _sha256(path: str) -> str | None:
-    try:
-        with open(path, "rb") as f:
-            return hashlib.sha256(f.read()).hexdigest()
-    except OSError:
-        return None
-
-
 def _selection(path, light_units, radiometric_spectrum, variants, time_code) -> str:
     return json.dumps([os.path.abspath(os.fspath(path)), light_units, repr(radiometric_spectrum),
                        variants or {}, None if time_code is None else float(time_code)], sort_keys=True, default=repr)
@@ -118,16 +111,7 @@ def _array_bytes(scene) -> int:
 
 
 def _still_valid(e: _Entry) -> bool:
-    now = time.time_ns()
-    for path, ident in e.identity.items():
-        if file_identity(path) != ident:
-            return False
-    for path, digest in list(e.racy.items()):
-        if _sha256(path) != digest:
-            return False
-        if now - e.identity[path][2] >= RACY_NS:  # old enough now: its times alone will tell
-            del e.racy[path]
-    return True
+    return all(file_identity(path) == ident for path, ident in e.identity.items())
 
 
 def cached_stage(read, path, light_units: str, radiometric_spectrum, variants: dict | None, time_code) -> tuple:
@@ -157,6 +141,7 @@ def cached_stage(read, path, light_units: str, radiometric_spectrum, variants: d
             return copy.deepcopy(e.scene), e.token
         _entries.pop(key, None)
     _ensure_hook()
+    began_ns = time.time_ns()
     _opened.files = set()
     try:
         scene = read()
@@ -167,15 +152,13 @@ def cached_stage(read, path, light_units: str, radiometric_spectrum, variants: d
     if scene.sources is None:
         return scene, None
     files = sorted(set(scene.sources) | {p for p in opened if os.path.isfile(p)})
-    stat_ns = time.time_ns()
     identity = {p: file_identity(p) for p in files}
-    if any(v is None for v in identity.values()):
-        return scene, None
-    racy = {p: _sha256(p) for p, v in identity.items() if stat_ns - v[2] < RACY_NS}
+    if any(v is None or v[2] > began_ns - RACY_NS for v in identity.values()):
+        return scene, None  # gone, or modified too recently to trust its times: used once, not kept
     nbytes = _array_bytes(scene)
     if nbytes > MAX_ENTRY_BYTES:
         return scene, None
-    e = _Entry(copy.deepcopy(scene), next(_serial), identity, racy, nbytes)
+    e = _Entry(copy.deepcopy(scene), next(_serial), identity, nbytes)
     with _lock:
         _entries[key] = e
         while len(_entries) > MAX_ENTRIES or sum(x.nbytes for x in _entries.values()) > MAX_BYTES:
