@@ -389,6 +389,8 @@ def _sources(stage: Usd.Stage, ctx: _Context, lights: list[Light]) -> tuple[str,
     files += [p for p in ctx.textures if isinstance(p, str)]
     files += [l.texture for l in lights if l.texture]
     files += [k.split("|", 1)[1] for k in ctx.materials if isinstance(k, str) and k.startswith("mtlx document|")]
+    # a layer inside a package (``scene.usdz[inner.usdc]``) changes with the package file
+    files = [f.split("[", 1)[0] if f.endswith("]") else f for f in files]
     return tuple(dict.fromkeys(os.path.abspath(f) for f in files))
 
 
