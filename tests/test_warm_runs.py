@@ -305,3 +305,69 @@ def test_an_edited_ies_file_is_read(tmp_path):
     assert all(a > 0 for a in first)
     for a, b in zip(first, second):
         assert abs(b - 2 * a) <= 1e-12 * 2 * a
+
+
+TEXTURED = """#usda 1.0
+(
+    metersPerUnit = 1
+    upAxis = "Z"
+)
+
+def RectLight "Lamp"
+{
+    float inputs:intensity = 1000
+    double3 xformOp:translate = (0, 0, 2)
+    uniform token[] xformOpOrder = ["xformOp:translate"]
+}
+
+def Material "M"
+{
+    token outputs:surface.connect = </M/S.outputs:surface>
+    def Shader "S"
+    {
+        uniform token info:id = "UsdPreviewSurface"
+        color3f inputs:diffuseColor.connect = </M/T.outputs:rgb>
+        token outputs:surface
+    }
+    def Shader "T"
+    {
+        uniform token info:id = "UsdUVTexture"
+        asset inputs:file = @wall.png@
+        token inputs:sourceColorSpace = "raw"
+        color3f outputs:rgb
+    }
+}
+
+def Mesh "Wall" (
+    prepend apiSchemas = ["MaterialBindingAPI"]
+)
+{
+    int[] faceVertexCounts = [3]
+    int[] faceVertexIndices = [0, 1, 2]
+    point3f[] points = [(-1, -1, 1), (1, -1, 1), (0, 1, 1)]
+    rel material:binding = </M>
+}
+"""
+
+
+def test_an_edited_texture_is_read(tmp_path):
+    """A UsdUVTexture file (read through USD's asset resolver, not Python's ``open``): its raw mean is
+    the wall's albedo, 100/255, then 200/255 after the file is rewritten."""
+    from simulator.io.map_png import png_bytes
+    from simulator.pipeline import cached_scene
+
+    png = tmp_path / "wall.png"
+    png.write_bytes(png_bytes(np.full((4, 4, 3), 100, np.uint8)))
+    (tmp_path / "wall.usda").write_text(TEXTURED)
+    (tmp_path / "wall.toml").write_text('stage = "wall.usda"\n\n[[sensor]]\nname = "a"\nkind = "irradiance"\n'
+                                        'position = [0, 0, 0]\nnormal = [0, 0, 1]\n')
+    _age(png, tmp_path / "wall.usda")
+    cfg = simulator.load_config(tmp_path / "wall.toml")
+    scene, token = cached_scene(cfg)
+    assert token is not None and str(png) in scene.sources
+    assert abs(float(scene.geometry.albedo[0]) - 100 / 255) <= 1e-12
+    png.write_bytes(png_bytes(np.full((4, 4, 3), 200, np.uint8)))
+    _age(png)
+    again, token2 = cached_scene(cfg)
+    assert token2 != token
+    assert abs(float(again.geometry.albedo[0]) - 200 / 255) <= 1e-12

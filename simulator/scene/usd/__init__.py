@@ -386,7 +386,7 @@ def _sources(stage: Usd.Stage, ctx: _Context, lights: list[Light]) -> tuple[str,
     if ctx.composition_errors:
         return None
     files = [layer.realPath for layer in stage.GetUsedLayers() if layer.realPath]
-    files += [p for p in ctx.textures if isinstance(p, str)]
+    files += [k.rsplit("|", 1)[0] for k in ctx.textures if isinstance(k, str) and k.rsplit("|", 1)[0]]  # "path|colour space"
     files += [l.texture for l in lights if l.texture]
     files += [k.split("|", 1)[1] for k in ctx.materials if isinstance(k, str) and k.startswith("mtlx document|")]
     # a layer inside a package (``scene.usdz[inner.usdc]``) changes with the package file
