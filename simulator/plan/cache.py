@@ -9,7 +9,8 @@ sensors and the requested method and component only. It is kept under
 - a digest of every sensor's fields (name, kind, position, normal, up, size,
   half-angle, resolution, grid, source), and
 - the requested method and component, and the planner's tunable bounds
-  (``AUTO_GUIDED``, ``LARGE_SOURCE_SR``, the ``exact`` rule's bounds).
+  (``AUTO_GUIDED``, ``LARGE_SOURCE_SR``, the ``exact`` rule's bounds, the
+  emitter pieces' sizes its note states).
 
 A scene without a token (not kept by the stage cache) is planned afresh each
 time. The :data:`MAX_ENTRIES` most recently used plans are kept. Callers
@@ -50,9 +51,11 @@ def sensors_digest(sensors) -> bytes:
 def _rules() -> tuple:
     """The planner's tunable rules at this moment (a changed bound is a different plan)."""
     from simulator.plan import exact_rule, planner
+    from simulator.scene import emitters  # the plan's note on emitter pieces
 
     return (planner.AUTO_GUIDED, planner.LARGE_SOURCE_SR, exact_rule.EXACT_MAX_OCCLUDERS,
-            exact_rule.EXACT_MAX_SCENE_TRIANGLES)
+            exact_rule.EXACT_MAX_SCENE_TRIANGLES, emitters.PIECE_M, emitters.SPLIT_M, emitters.MAX_PIECES,
+            emitters.MAX_SPLIT)
 
 
 def cached_plan(make, token: int | None, sensors, requested: str, component: str):
