@@ -13,7 +13,8 @@ sensors and the requested method and component only. It is kept under
   emitter pieces' sizes its note states).
 
 A scene without a token (not kept by the stage cache) is planned afresh each
-time. The :data:`MAX_ENTRIES` most recently used plans are kept. Callers
+time. The :data:`MAX_ENTRIES` most recently used plans are kept (at most
+:data:`MAX_SENSORS` sensors in all). Callers
 must not change a plan they are given (the run reads it and writes its
 record; nothing changes it).
 """
@@ -26,10 +27,12 @@ from collections import OrderedDict
 
 import numpy as np
 
-__all__ = ["MAX_ENTRIES", "sensors_digest", "cached_plan", "clear"]
+__all__ = ["MAX_ENTRIES", "MAX_SENSORS", "sensors_digest", "cached_plan", "clear"]
 
 #: plans kept (least recently used dropped first)
 MAX_ENTRIES = 8
+#: sensors in all the kept plans (a plan holds ~1 kB per sensor with its encoded record)
+MAX_SENSORS = 1 << 18
 
 _entries: OrderedDict = OrderedDict()
 _lock = threading.Lock()
@@ -69,9 +72,11 @@ def cached_plan(make, token: int | None, sensors, requested: str, component: str
             _entries.move_to_end(key)
             return plan
     plan = make()
+    if len(plan.sensors) > MAX_SENSORS:
+        return plan
     with _lock:
         _entries[key] = plan
-        while len(_entries) > MAX_ENTRIES:
+        while len(_entries) > MAX_ENTRIES or sum(len(p.sensors) for p in _entries.values()) > MAX_SENSORS:
             _entries.popitem(last=False)
     return plan
 
