@@ -249,7 +249,8 @@ def _cmd_run(args) -> int:
 
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
-    lean = args.command in ("run", "plan") and lean_start()  # a short command in a fresh process
+    # a short command given on the process's own command line (argv None): start it lean
+    lean = argv is None and args.command in ("run", "plan") and lean_start()
     try:
         if args.command == "run":
             return _cmd_run(args)

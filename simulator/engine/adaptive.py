@@ -37,7 +37,7 @@ import numpy as np
 from simulator.engine.stats import z_for_confidence
 from simulator.interrupts import StopFlag, sigint_deferred
 
-__all__ = ["StoppingRule", "run_batches", "first_batch_from_pilot", "pilot_floor", "PILOT_MIN_BATCH"]
+__all__ = ["StoppingRule", "run_batches", "first_batch_from_pilot", "pilot_floor", "PILOT_MIN_BATCH", "PILOT_LOW_BATCH"]
 
 #: fewest samples per sensor in a first batch the engine chooses (a variance
 #: from fewer is too rough for the rule to size the next batch by), unless the
