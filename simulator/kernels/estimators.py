@@ -45,7 +45,7 @@ import warp as wp
 from simulator.scene.model import Sensor, SensorKind
 
 from .group_tally import clear_group_sample, fold_group_sample, tally_group, tregenza_patch
-from .guide import guide_fraction, guide_row, guided_step, mixture_factor, pdf_guide, tally_patch
+from .guide import glossy_mixture_factor, guide_fraction, guide_row, guided_step, mixture_factor, pdf_guide, tally_patch
 from .light_pick import LightPick, is_delta, pick_light, pick_scale, picks_at, tally_pick
 from .lights import (  # noqa: F401  (GuideRec, LightRec, SceneRec re-exported for the engine)
     RAY_INF,
@@ -75,8 +75,8 @@ from .sampling import (
     to_world,
 )
 from .shadows import hit_light_before, shadow_ray_clear, shadow_ray_pass
-from .surfaces import ABSORB, MIRROR, mirror, pass_through
-from .bsdf import Bsdf, bsdf_f, bsdf_pdf, bsdf_sample, mirror_reflectance
+from .surfaces import ABSORB, MIRROR, mirror, pass_through, transmittance_along
+from .bsdf import Bsdf, bsdf_f, bsdf_pdf, bsdf_sample, lobe_weights, mirror_reflectance
 from .glossy import face_bsdf, is_glossy, mirror_share
 from .mirrors import image_source
 from .shaping import shaping_factor
@@ -245,7 +245,12 @@ def vertex_estimate(
     samples by π·f(wi, wo), draws the next direction by the BSDF (β takes
     f·cosθ/pdf) and weighs both by MIS with the BSDF's pdf; its mirror part
     is a direction chosen with probability :func:`mirror_share`, whose rays
-    no light sample weighs against."""
+    no light sample weighs against. With the guide, a glossy vertex draws
+    it with c·(1 − P_mirror)·w_diffuse (it stands in for the diffuse lobe)
+    and its lobes with the rest, every MIS weight over those real
+    densities; a delta vertex (a pane's or a mirror part's reflection)
+    never draws it, and the path it starts takes 1/(1 − c) instead of a
+    mixture factor (docs/DESIGN.md §Surface guide)."""
     rng = rng_in
     p = p_in
     n = n_in
@@ -277,6 +282,8 @@ def vertex_estimate(
     while depth < MAX_VERTICES:
         row = guide_row(scene, depth, cur_face)
         c_v = guide_fraction(scene, params, depth, row)
+        if delta != 0:  # a mirror vertex on a pane follows its one direction: no guide there
+            c_v = 0.0
         # Rays leave a surface from o, pushed off it (see offset_length). A
         # sensor within that push of a UsdLux light starts them at p itself:
         # lights are not geometry, and first_hit (plane_distance) still keeps
@@ -291,6 +298,10 @@ def vertex_estimate(
         if gl != 0:
             wo_l = to_local(wo_g, n)
             pm = mirror_share(bs, wo_l[2])
+            # the guide is a strategy for the diffuse lobe: it is drawn with c times the share of the
+            # vertex's draws that go to that lobe, (1 − p_mirror)·w_diffuse, and the lobes with 1 − c_v
+            if c_v > 0.0:
+                c_v = c_v * (1.0 - pm) * lobe_weights(bs, wo_l[2])[2]
         # -- next-event estimation: each light once, or (pick_light) the
         #    delta lights and one light with area, picked with P(li | x)
         pk = LightPick()
@@ -320,6 +331,8 @@ def vertex_estimate(
                     pdf_dir = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
                     if g_lanes != 0:
                         tint_l = wp.cw_mul(tint_l, lane_ratio(bsdf_lanes(scene, g_face, params.hero, wi_l, wo_l), f_grey))
+                    if c_v > 0.0:  # the lobes run with probability 1 − c_v
+                        pdf_dir = (1.0 - c_v) * pdf_dir
                 got = wp.vec2(0.0, 0.0)
                 if ls.value[0] > 0.0 or ls.value[1] > 0.0:
                     w = float(1.0)
@@ -401,9 +414,55 @@ def vertex_estimate(
                 g = guided_step(scene, row, o, n, c_v, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
                 if g.face < 0:
                     break
-                refl = surface_albedo(scene, params, g.face, tint)
-                beta = beta * refl.rho * g.factor
-                tint = refl.tint
+                if scene.surfaces == 0:
+                    refl = surface_albedo(scene, params, g.face, tint)
+                    beta = beta * refl.rho * g.factor
+                    tint = refl.tint
+                else:
+                    lanes_set = int(0)  # 1: the tint took a lane factor at this step (then renormalised)
+                    if gl != 0:
+                        # a glossy vertex: f·cosθx·jac / (p_lobes,A + c_v·p_guide,A), the lobes' density
+                        # (1 − c_v)(1 − p_mirror)·pdf_bsdf·jac, times the segment's share
+                        gwi = to_local(g.wi, n)
+                        p_lobes = (1.0 - c_v) * (1.0 - pm) * bsdf_pdf(bs, gwi, wo_l) * g.jac
+                        den = p_lobes + c_v * g.density
+                        if den <= 0.0:
+                            break
+                        f_grey = bsdf_f(bs, gwi, wo_l)
+                        beta = beta * (f_grey * gwi[2] * g.jac / den) * g.share
+                        if g_lanes != 0:  # the lanes of a coloured glossy vertex (as its direction samples)
+                            tint = wp.cw_mul(tint, lane_ratio(bsdf_lanes(scene, g_face, params.hero, gwi, wo_l), f_grey))
+                            lanes_set = 1
+                    else:
+                        beta = beta * g.factor
+                    if params.spectral != 0 and scene.spectral_panes != 0:  # coloured panes on the segment
+                        seg = g.y - o
+                        d_seg = wp.length(seg)
+                        off_y = offset_length(scene, g.y)
+                        if d_seg > off_y:
+                            t_grey = transmittance_along(scene, o, g.wi, d_seg - off_y, -1)
+                            tint = wp.cw_mul(tint, lane_ratio(transmittance_lanes(scene, params.hero, o, g.wi,
+                                                                                  d_seg - off_y, -1), t_grey))
+                            lanes_set = 1
+                    if lanes_set != 0:  # β takes the lanes' mean, the tint keeps mean 1
+                        m = 0.25 * (tint[0] + tint[1] + tint[2] + tint[3])
+                        if m > 0.0:
+                            beta = beta * m
+                            tint = tint / m
+                    gl = 0
+                    if is_glossy(scene, g.face):  # y scatters by its BSDF, seen from x
+                        gl = 1
+                        bs = face_bsdf(scene, g.face)
+                        wo_g = -g.wi
+                        g_face = g.face
+                        if params.spectral != 0:
+                            g_lanes = coloured_row(scene, g.face)[0]
+                    else:
+                        refl = surface_albedo(scene, params, g.face, tint)
+                        beta = beta * refl.rho
+                        tint = refl.tint
+                    if beta <= 0.0:
+                        break
                 weight = weight_in * beta
                 p = g.y
                 n = g.n
@@ -418,11 +477,14 @@ def vertex_estimate(
         tint_d = tint  # the lanes along this direction (a coloured glossy vertex's: see below)
         mirror_now = int(0)
         pdf_g = float(0.0)
+        gl_x = gl  # whether this vertex is glossy (gl then follows the next one)
         if delta == 0 and gl != 0:
             if pm > 0.0 and wp.randf(rng) < pm:  # the mirror part: reflectance F over its probability
                 wi = mirror(-wo_g, n)
                 f_grey = mirror_reflectance(bs, wo_l[2])
                 g_dir = f_grey / pm
+                if c_v > 0.0:  # ... which is (1 − c_v)·p_mirror beside the guide
+                    g_dir = g_dir / (1.0 - c_v)
                 mirror_now = 1
                 if g_lanes != 0:
                     tint_d = wp.cw_mul(tint, lane_ratio(mirror_lanes(scene, g_face, params.hero, wo_l[2]), f_grey))
@@ -431,6 +493,8 @@ def vertex_estimate(
                 if wi_l[2] <= 0.0:
                     break
                 pdf_g = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
+                if c_v > 0.0:
+                    pdf_g = (1.0 - c_v) * pdf_g
                 if pdf_g <= 0.0:
                     break
                 f_grey = bsdf_f(bs, wi_l, wo_l)
@@ -508,6 +572,11 @@ def vertex_estimate(
                 beta = beta * g_dir
                 weight = weight_in * beta
                 gl = 0
+            elif c_v > 0.0:
+                # the guide never draws a path bent by a pane, so only the cosine strategy (probability
+                # 1 − c) weighs it: β takes 1/(1 − c), and no mixture factor at the vertex it reaches
+                beta = beta / (1.0 - c_v)
+                weight = weight_in * beta
             tint = tint_d
             p = o + t_hit * wi
             n = wp.where(cos_view > 0.0, ng, -ng)
@@ -545,9 +614,13 @@ def vertex_estimate(
         else:
             beta = beta * refl.rho
             tint = refl.tint
-        if c_v > 0.0:  # one-sample MIS against the guide (mixture_factor)
-            beta = beta * mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
-                                         local[2] * wp.abs(cos_view) * INV_PI / (t_hit * t_hit))  # fmt: skip
+        if c_v > 0.0 and mirror_now == 0:  # one-sample MIS against the guide (a mirror direction: none)
+            if gl_x != 0:  # the lobes' area density, (1 − c_v)-weighted already, against the guide's
+                beta = beta * glossy_mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
+                                                    pdf_g * wp.abs(cos_view) / (t_hit * t_hit))  # fmt: skip
+            else:
+                beta = beta * mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
+                                             local[2] * wp.abs(cos_view) * INV_PI / (t_hit * t_hit))  # fmt: skip
         weight = weight_in * beta
         p = o + t_hit * wi
         n = wp.where(cos_view > 0.0, ng, -ng)

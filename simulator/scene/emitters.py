@@ -97,10 +97,11 @@ def split_emitters(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> t
     n_tri = g.n_triangles
     if n_tri == 0:
         return g, np.zeros(0, np.int64)
-    emits = np.any(g.emission > 0, axis=1)
-    p = g.points[g.triangles]
+    lit = np.flatnonzero(np.any(g.emission > 0, axis=1))  # only emitters are cut: measure only their edges
+    p = g.points[g.triangles[lit]]
     edge = np.max(np.linalg.norm(p - np.roll(p, 1, axis=1), axis=2), axis=1)
-    m = np.where(emits, np.clip(np.ceil(edge / h), 1, max_m), 1).astype(np.int64)
+    m = np.ones(n_tri, np.int64)
+    m[lit] = np.clip(np.ceil(edge / h), 1, max_m).astype(np.int64)
     if not (m > 1).any():
         return g, np.arange(n_tri)
     keep = m == 1
@@ -111,7 +112,7 @@ def split_emitters(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> t
     base = len(g.points)
     for t in np.flatnonzero(~keep):  # the split ones go after the rest, in order
         k = int(m[t])
-        a, b, c = p[t]
+        a, b, c = g.points[g.triangles[t]]
         # lattice nodes (i, j), i + j ≤ k: a + (i/k)(b − a) + (j/k)(c − a)
         ij = [(i, j) for j in range(k + 1) for i in range(k + 1 - j)]
         index = {node: base + n for n, node in enumerate(ij)}

@@ -544,6 +544,10 @@ class Scene:
     time_code: float | None = None
     #: prims read whose values vary in time, found when no time code was given (prim paths)
     animated: tuple[str, ...] = ()
+    #: the files the reader depended on (every layer the stage composed, textures and MaterialX documents
+    #: read by path; absolute paths), or None where that list is not known to be whole (a composition
+    #: error: a reference that did not resolve may resolve later). Keys the in-process stage cache.
+    sources: tuple[str, ...] | None = None
 
     @property
     def bounds(self) -> tuple[np.ndarray, np.ndarray]:

@@ -379,7 +379,23 @@ def load_stage(
         collections=light_collections(stage, lights),
         time_code=time,
         animated=tuple(ctx.animated),
+        sources=_sources(stage, ctx, lights),
     )
+
+
+def _sources(stage: Usd.Stage, ctx: _Context, lights: list[Light]) -> tuple[str, ...] | None:
+    """The files this reading depended on that pxr or a C++ reader opened (Python ``open`` calls are
+    seen by the caller's audit hook): every layer composed, texture files, dome maps and MaterialX
+    documents; None after a composition error (what failed to resolve is not a file to watch)."""
+    if ctx.composition_errors:
+        return None
+    files = [layer.realPath for layer in stage.GetUsedLayers() if layer.realPath]
+    files += [k.rsplit("|", 1)[0] for k in ctx.textures if isinstance(k, str) and k.rsplit("|", 1)[0]]  # "path|colour space"
+    files += [l.texture for l in lights if l.texture]
+    files += [k.split("|", 1)[1] for k in ctx.materials if isinstance(k, str) and k.startswith("mtlx document|")]
+    # a layer inside a package (``scene.usdz[inner.usdc]``) changes with the package file
+    files = [f.split("[", 1)[0] if f.endswith("]") else f for f in files]
+    return tuple(dict.fromkeys(os.path.abspath(f) for f in files))
 
 
 def _refuse_sealed_light(ctx: _Context, geometry: Geometry, lights: list[Light]) -> None:

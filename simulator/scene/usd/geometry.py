@@ -194,7 +194,7 @@ def _gprim_part(ctx: _Context, prim: Usd.Prim) -> _Part | None:
     if faces is None:  # opacity 0 everywhere: it lets light through
         return None
     albedo, emission, keep, albedo_rgb, curve, emission_rgb, surface_id = faces
-    tris, fanned, face_of = _triangulate_faces(points, counts, indices)
+    tris, fanned, face_of = _triangulate_faces(points, counts, indices, convex=not prim.IsA(UsdGeom.Mesh))
     if fanned:
         ctx.warn(f"{prim.GetPath()}: {fanned} self-intersecting or non-planar face(s) fan-triangulated")
     if not keep.all():
