@@ -343,3 +343,4 @@ def test_rewound_sheets_keep_their_texels_in_place(tmp_path, how):
     open_ = [1 - checker()[r, c] / 255 for c, r in cells]
     truth = [E_SUN * (o if how == "leftHanded" else 1 - o) for o in open_]
     np.testing.assert_allclose(v, truth, atol=2e-6 * E_SUN)
+
