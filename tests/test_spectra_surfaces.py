@@ -297,3 +297,73 @@ def test_guided_and_plain_paths_agree_through_a_tinted_pane(tmp_path):
             assert out.record["guide"]["reason"].endswith("used"), out.record["guide"]
     (a, sa), (b, sb) = got["path"], got["guided"]
     assert sa > 0 and sb > 0 and abs(a - b) <= 4 * math.hypot(sa, sb), got
+
+
+PROBE = '[[sensor]]\nname = "ball"\nkind = "probe"\nposition = [0, 0, 0]\nresolution = [8, 4]\n'
+
+
+@pytest.mark.parametrize("zenith", [0.0, 60.0])
+def test_a_probe_sees_the_delta_sun_through_the_tinted_pane_in_its_colour(tmp_path, zenith):
+    """A probe under the tinted pane and a zero-angle 3000 K sun of normal illuminance E: the sun is
+    added exactly (next-event estimation, no direction sample sees it), so its scalar illuminance is
+    E ∫S T(θ, λ) V/∫S V and its scalar irradiance E_W ∫S T(θ, λ) dλ/∫S dλ (the radiometric response's
+    quadrature, E_W the sun's own), T the slab of τ0(λ) at θ, to float32 rounding with zero standard
+    error; the grey slab's reading (the curve's D65 grey) is off by far more."""
+    path = stage(tmp_path, tinted(tmp_path) + quad("Pane", 1.0, "G", half=50) + sun(zenith))
+    out = run(load_config(config(tmp_path, path, PROBE, "light", 64)), log=lambda *a: None)
+    assert out.record["plan"]["transport"] == "spectral"
+    row = readings(out)["ball"]
+    c = math.cos(math.radians(zenith))
+    t = np.array([slab(c, 1.52, float(tau))[1] for tau in tau0(t0_curve(), 1.52)])
+    truth_lx = 1000.0 * v_weighted(t)
+    s = planck(T_CCT)
+    truth_w = out.scene.lights[0].emission[0] * R.response("radiometric").of(s * t) / R.response("radiometric").of(s)
+    for col, truth in (("scalar_illuminance", truth_lx), ("scalar_irradiance", truth_w)):
+        unit = "lx" if col.endswith("illuminance") else "W_m2"
+        v, se = float(row[f"{col}_{unit}"]), float(row[f"{col}_stderr_{unit}"])
+        assert se == 0.0 and abs(v - truth) <= 2e-5 * truth, (col, v, truth)
+    grey = 1000.0 * slab(c, 1.52, float(tau0(np.array([out.scene.geometry.surfaces[0].transmittance]), 1.52)[0]))[1]
+    assert abs(grey - truth_lx) > 1e-3 * truth_lx
+
+
+BLUE = ((380, 0.85), (480, 0.85), (560, 0.05), (780, 0.05))
+
+
+def tilted(name: str, z: float, bind: str, half: float = 5.0) -> str:
+    """A square pane through (0, 0, z) tilted 45° about the x axis (normal (0, −1, 1)/√2)."""
+    h = half
+    pts = [(-h, -h, z - h), (h, -h, z - h), (h, h, z + h), (-h, h, z + h)]
+    return (f'def Mesh "{name}"\n{{\n    int[] faceVertexCounts = [4]\n    int[] faceVertexIndices = [0, 1, 2, 3]\n'
+            f'    point3f[] points = [{", ".join(f"({x}, {y}, {zz})" for x, y, zz in pts)}]\n'
+            f'    rel material:binding = </{bind}>\n}}\n')
+
+
+@pytest.mark.parametrize("colour", ["spectral", "grey"])
+def test_a_lamp_between_two_tinted_panes_is_seen_through_the_near_one_only(tmp_path, colour):
+    """A radiance meter at the origin looking straight up through a pane at z = 1 m at a rect light
+    (50 cd/m², facing down) at z = 1.5 m, a second pane beyond it (through z = 2.5 m, tilted 45°, so
+    what it reflects leaves the stage); nothing else. UsdLux lights do not block, and the far pane
+    passes or reflects light that never reached the lamp, so the meter reads L·T0 of the near pane:
+    L ∫S T0 V/∫S V for the bronze pane (the far one blue) in a spectral run, L·0.70 for datasheet
+    panes of 0.70 in a grey one, within 4 standard errors (the pass, reflect or absorb draws and the
+    wavelengths)."""
+    if colour == "spectral":
+        write_curve(tmp_path / "bronze.csv")
+        write_curve(tmp_path / "blue.csv", BLUE)
+        body = material("Near", "float inputs:ior = 1.52\n        asset probesim:transmittance = @bronze.csv@")
+        body += material("Far", "float inputs:ior = 1.52\n        asset probesim:transmittance = @blue.csv@")
+        truth = 50.0 * v_weighted(t0_curve())
+    else:
+        body = material("Near", "float inputs:ior = 1.52", material_extra="float probesim:transmittance = 0.7")
+        body += material("Far", "float inputs:ior = 1.52", material_extra="float probesim:transmittance = 0.7")
+        truth = 50.0 * 0.7
+    body += quad("NearPane", 1.0, "Near", half=1e3) + tilted("FarPane", 2.5, "Far", half=1e3)
+    body += ('def RectLight "Lamp"\n{\n    float inputs:intensity = 50\n    float inputs:width = 1\n'
+             '    float inputs:height = 1\n    float3 xformOp:translate = (0, 0, 1.5)\n'
+             '    uniform token[] xformOpOrder = ["xformOp:translate"]\n}\n')
+    meter = '[[sensor]]\nname = "m"\nkind = "radiance"\nposition = [0, 0, 0]\ndirection = [0, 0, 1]\nhalf_angle_deg = 0\n'
+    out = run(load_config(config(tmp_path, stage(tmp_path, body), meter, "bsdf", 20000)), log=lambda *a: None)
+    assert out.record["plan"]["transport"] == colour
+    row = readings(out)["m"]
+    v, se = float(row["luminance_cd_m2"]), float(row["luminance_stderr_cd_m2"])
+    assert se > 0 and abs(v - truth) <= 4 * se, (v, se, truth)

@@ -82,7 +82,8 @@ from .mirrors import image_source
 from .shaping import shaping_factor
 from .spectral import Reflection, hero_nodes, lane_response, spectral_contribution, spectral_row
 from .spectral_surfaces import (
-    bsdf_lanes, coloured_row, lane_ratio, mirror_lanes, pass_through_lanes, shadow_lanes, transmittance_lanes,
+    bsdf_lanes, coloured_row, lane_ratio, lanes_before, mirror_lanes, pass_through_lanes, shadow_lanes,
+    transmittance_lanes,
 )
 
 # Forward-only: no gradients are taken, and skipping the adjoint halves compile time.
@@ -522,6 +523,8 @@ def vertex_estimate(
         event = int(0)
         tint_before = tint_d  # the lanes of lights met before the first coloured pane on this ray
         t_tint = float(RAY_INF)
+        hit0 = hit  # the walk's start, replayed for a light met past a coloured pane (lanes_before)
+        rng0 = rng
         if scene.surfaces != 0:  # through panes and cut-outs to where the ray stops (kernels.surfaces)
             if params.spectral != 0 and scene.spectral_panes != 0:  # coloured panes: the same draws, per lane
                 lp = pass_through_lanes(scene, params.hero, o, wi, hit, rng)
@@ -550,8 +553,11 @@ def vertex_estimate(
                 if weigh:
                     pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1)
                     w = power_heuristic(pdf_b, pdf_l)
+                tint_l = tint_before
+                if t >= t_tint:  # past a coloured pane: the lanes of the panes in front of the light only
+                    tint_l = wp.cw_mul(tint_before, lanes_before(scene, params.hero, o, wi, hit0, rng0, t))
                 total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission,
-                                            wp.where(t < t_tint, tint_before, tint_d))
+                                            tint_l)
         if face < 0:
             for li in range(scene.n_lights):
                 le = escaped_radiance(scene.lights[li], wi)
@@ -649,6 +655,8 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     tint_r = params.tint  # × the lanes of coloured panes passed or reflected off (spectral mode)
     tint_before = tint_r  # the lanes before the first coloured pane of the last segment, at distance t_tint
     t_tint = float(RAY_INF)
+    hit0 = hit  # the last segment's walk start, replayed for a light met past a coloured pane
+    rng0 = rng
     if scene.surfaces != 0:
         # through panes and cut-outs; a mirror reflection off a pane sends the ray on (what it then
         # sees was reflected on the way: indirect), each segment's lights counted as it passes them
@@ -656,6 +664,8 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
             ev = int(0)
             tint_before = tint_r
             t_tint = float(RAY_INF)
+            hit0 = hit
+            rng0 = rng
             if params.spectral != 0 and scene.spectral_panes != 0:
                 lp = pass_through_lanes(scene, params.hero, o, d, hit, rng)
                 rng = lp.rng
@@ -674,8 +684,10 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
                 l = scene.lights[li]
                 t_l = hit_light_before(l, o, d, hit.t)
                 if t_l > 0.0 and direct:
-                    total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission,
-                                                wp.where(t_l < t_tint, tint_before, tint_r))
+                    tint_l = tint_before
+                    if t_l >= t_tint:  # the panes in front of the light only (lanes_before)
+                        tint_l = wp.cw_mul(tint_before, lanes_before(scene, params.hero, o, d, hit0, rng0, t_l))
+                    total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, tint_l)
             if ev == ABSORB or k == MAX_MIRRORS - 1:
                 return total
             q = o + hit.t * d
@@ -693,8 +705,10 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
         l = scene.lights[li]
         t_l = hit_light_before(l, o, d, t_hit)
         if t_l > 0.0 and direct:
-            total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission,
-                                        wp.where(t_l < t_tint, tint_before, tint_r))
+            tint_l = tint_before
+            if t_l >= t_tint:  # the panes in front of the light only (lanes_before)
+                tint_l = wp.cw_mul(tint_before, lanes_before(scene, params.hero, o, d, hit0, rng0, t_l))
+            total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, tint_l)
     if face < 0:
         if direct:
             for li in range(scene.n_lights):

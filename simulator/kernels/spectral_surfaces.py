@@ -182,13 +182,11 @@ class LanePassage:
 
 
 @wp.func
-def pass_through_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, first: RayHit,
-                       rng_in: wp.uint32) -> LanePassage:
-    """:func:`.surfaces.pass_through` with the same draws (one uniform per face, :func:`.surfaces.
-    surface_event`), which also returns the lane factor of the events drawn: 1 through a coverage gap,
-    T(λ_k)/T through a pane's slab, R(λ_k)/R off it (the pane's lanes, :func:`pane_lanes`), and where
-    along the ray the first such factor applies (a light met before it is seen with the lanes as they
-    were; one met between two coloured panes takes both panes' factors, not exact, left so as rare)."""
+def walk_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, first: RayHit, rng_in: wp.uint32,
+               t_cut: float) -> LanePassage:
+    """:func:`pass_through_lanes` up to the distance ``t_cut`` along the ray: the same draws (one uniform
+    per face, in order), the lane factors of the faces nearer than ``t_cut`` only, and the walk ends at
+    the first face at or past it (its hit and event are then those of that face, not followed)."""
     out = LanePassage()
     out.tint = wp.vec4(1.0, 1.0, 1.0, 1.0)
     out.t_tint = RAY_INF
@@ -196,7 +194,7 @@ def pass_through_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, 
     h = first
     out.event = SCATTER
     for k in range(MAX_PASSES):
-        if h.face < 0:
+        if h.face < 0 or h.t >= t_cut:
             out.hit = h
             out.rng = rng
             return out
@@ -229,3 +227,25 @@ def pass_through_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, 
     out.event = ABSORB
     out.rng = rng
     return out
+
+
+@wp.func
+def pass_through_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, first: RayHit,
+                       rng_in: wp.uint32) -> LanePassage:
+    """:func:`.surfaces.pass_through` with the same draws (one uniform per face, :func:`.surfaces.
+    surface_event`), which also returns the lane factor of the events drawn: 1 through a coverage gap,
+    T(λ_k)/T through a pane's slab, R(λ_k)/R off it (the pane's lanes, :func:`pane_lanes`), and where
+    along the ray the first such factor applies. A light met before that distance is seen with the
+    lanes as they were; one met past it takes the factors of the panes in front of it only
+    (:func:`lanes_before`)."""
+    return walk_lanes(scene, hero, o, d, first, rng_in, RAY_INF)
+
+
+@wp.func
+def lanes_before(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, first: RayHit, rng_in: wp.uint32,
+                 t_light: float) -> wp.vec4:
+    """The lane factor of the panes between o and a light met at ``t_light`` along the ray that
+    :func:`pass_through_lanes` followed from ``first`` with ``rng_in``: the walk replayed with the same
+    uniforms, so its events are the same, and cut at ``t_light`` (panes past the light pass or reflect
+    light that never reached it)."""
+    return walk_lanes(scene, hero, o, d, first, rng_in, t_light).tint
