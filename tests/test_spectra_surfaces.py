@@ -306,9 +306,10 @@ PROBE = '[[sensor]]\nname = "ball"\nkind = "probe"\nposition = [0, 0, 0]\nresolu
 def test_a_probe_sees_the_delta_sun_through_the_tinted_pane_in_its_colour(tmp_path, zenith):
     """A probe under the tinted pane and a zero-angle 3000 K sun of normal illuminance E: the sun is
     added exactly (next-event estimation, no direction sample sees it), so its scalar illuminance is
-    E ∫S T(θ, λ) V/∫S V and its scalar irradiance E_W ∫S T(θ, λ) dλ/∫S dλ (the radiometric response's
-    quadrature, E_W the sun's own), T the slab of τ0(λ) at θ, to float32 rounding with zero standard
-    error; the grey slab's reading (the curve's D65 grey) is off by far more."""
+    E ∫S T(θ, λ) V/∫S V and its scalar irradiance (E/K) ∫S T(θ, λ) dλ/∫S dλ over 380–780 nm (K = ∫S V/∫S
+    the spectrum's luminous efficacy there, as irradiance sensors read it), T the slab of τ0(λ) at θ,
+    to float32 rounding with zero standard error; the grey slab's reading (the curve's D65 grey) is
+    off by far more."""
     path = stage(tmp_path, tinted(tmp_path) + quad("Pane", 1.0, "G", half=50) + sun(zenith))
     out = run(load_config(config(tmp_path, path, PROBE, "light", 64)), log=lambda *a: None)
     assert out.record["plan"]["transport"] == "spectral"
@@ -317,7 +318,7 @@ def test_a_probe_sees_the_delta_sun_through_the_tinted_pane_in_its_colour(tmp_pa
     t = np.array([slab(c, 1.52, float(tau))[1] for tau in tau0(t0_curve(), 1.52)])
     truth_lx = 1000.0 * v_weighted(t)
     s = planck(T_CCT)
-    truth_w = out.scene.lights[0].emission[0] * R.response("radiometric").of(s * t) / R.response("radiometric").of(s)
+    truth_w = 1000.0 * R.response("radiometric").of(s * t) / R.response("photopic").of(s)  # E/K · ∫S T/∫S
     for col, truth in (("scalar_illuminance", truth_lx), ("scalar_irradiance", truth_w)):
         unit = "lx" if col.endswith("illuminance") else "W_m2"
         v, se = float(row[f"{col}_{unit}"]), float(row[f"{col}_stderr_{unit}"])

@@ -31,10 +31,10 @@ no direction sample sees them. With ``mode = 1`` the kernel instead adds
 their exact contribution to the integrals (next-event estimation with a
 shadow ray): a light of normal irradiance E⊥ = I/d² (point) or E⊥ (distant)
 from direction ω contributes E⊥·f(ω) to integral q. The map never shows
-them. In a spectral run through coloured panes E⊥ takes, per channel, the
-panes' transmittance at every grid wavelength weighed by the light's
-spectrum and the channel's response (:func:`delta_pass_lanes`), as exact as
-the grey factor it replaces.
+them. In a spectral run each channel is the response to the light's
+spectrum, through coloured panes at every grid wavelength
+(:func:`delta_responses`): exact, and what the hero lanes of every other
+sensor estimate.
 
 Real spherical harmonics, l ≤ 2, in the order (l, m) = (0,0), (1,−1), (1,0),
 (1,1), (2,−2), (2,−1), (2,0), (2,1), (2,2), with ω = (x, y, z):
@@ -190,7 +190,7 @@ def delta_incident(scene: SceneRec, li: int, p: wp.vec3, open_segment: int) -> w
     first three components and the normal irradiance it gives (radiometric)
     in the fourth; use :func:`delta_scale` for the photometric twin. Zero if
     the light is not a delta light or is blocked. With ``open_segment`` 1 the
-    segment is not traced (E⊥ as if open: :func:`delta_pass_lanes` then gives
+    segment is not traced (E⊥ as if open: :func:`delta_responses` then takes
     what it passes)."""
     l = scene.lights[li]
     if l.kind == _POINT:
@@ -216,41 +216,37 @@ def delta_incident(scene: SceneRec, li: int, p: wp.vec3, open_segment: int) -> w
 
 
 @wp.func
-def delta_pass_lanes(scene: SceneRec, li: int, p: wp.vec3, w: wp.vec3) -> wp.vec2:
-    """What the surfaces between p and delta light ``li`` (toward ω = w) pass of its light in a spectral
-    run, per channel c (radiometric, photopic): the grid quadrature
+def delta_responses(scene: SceneRec, li: int, p: wp.vec3, w: wp.vec3, panes: int) -> wp.vec2:
+    """A spectral run's (radiometric, photopic) responses to delta light ``li`` at p (toward ω = w) per
+    unit of its radiometric value, as the hero lanes take them (:func:`.spectral.spectral_contribution`)
+    but exactly: the expectation over a lane's node, drawn with probability q_i/400,
 
-        Σ_i q_i W_c(λ_i) S(λ_i) T(λ_i) / Σ_i q_i W_c(λ_i) S(λ_i),
+        Σ_i (q_i/400) · W_c(λ_i) · S(λ_i) · T(λ_i),
 
-    S the light's spectral row, W_c the channel's lane weights (``scene.response_weights``, 400·q_c/q),
-    q the trapezoid weights (½ at 380 and 780 nm) and T(λ) the product of every face's pass factor
-    on the segment at λ, each coloured pane's at its T0(λ)
-    (:func:`.spectral_surfaces.transmittance_lanes`, four grid nodes per call). Exact: the integral
-    the hero lanes estimate, taken over every node."""
+    S the light's row of ``scene.spectral_emission``, W_c the response's lane weights
+    (``scene.response_weights``, 400·q_c/q, so the sum is the response's own quadrature of S·T), q
+    the trapezoid weights (½ at 380 and 780 nm). T(λ) is 1 unless ``panes`` is 1: then the product of
+    every face's pass factor on the segment at λ, each coloured pane's at its T0(λ)
+    (:func:`.spectral_surfaces.transmittance_lanes`, four grid nodes per call)."""
     l = scene.lights[li]
     dist = float(1.0e30)
     if l.kind == _POINT:
         dist = wp.length(l.position - p)
-    num = wp.vec2(0.0, 0.0)
-    den = wp.vec2(0.0, 0.0)
+    out = wp.vec2(0.0, 0.0)
     for g in range(101):  # nodes 4g … 4g + 3 of the 401
         h = wp.vec4i(wp.min(4 * g, 400), wp.min(4 * g + 1, 400), wp.min(4 * g + 2, 400), wp.min(4 * g + 3, 400))
-        t4 = transmittance_lanes(scene, h, p, w, dist, -1)
+        t4 = wp.vec4(1.0, 1.0, 1.0, 1.0)
+        if panes != 0:
+            t4 = transmittance_lanes(scene, h, p, w, dist, -1)
         s4 = spectral_row(scene.spectral_emission, li, h)
         for k in range(4):
             node = 4 * g + k
             if node <= 400:
-                q = float(1.0)
+                q = float(1.0 / 400.0)
                 if node == 0 or node == 400:
-                    q = 0.5
+                    q = 0.5 / 400.0
                 for c in range(2):
-                    x = q * scene.response_weights[c, node] * s4[k]
-                    num[c] = num[c] + x * t4[k]
-                    den[c] = den[c] + x
-    out = wp.vec2(0.0, 0.0)
-    for c in range(2):
-        if den[c] > 0.0:
-            out[c] = num[c] / den[c]
+                    out[c] = out[c] + q * scene.response_weights[c, node] * s4[k] * t4[k]
     return out
 
 
@@ -324,15 +320,17 @@ def probe_kernel(
         # delta lights are direct light; method bsdf cannot see them (as for every sensor)
         if params.nee == 0 or params.skip_direct != 0:
             return
-        # spectral runs with coloured panes: each channel through the panes at every wavelength
+        # spectral runs: each channel the response to the light's spectrum (through coloured panes at
+        # every wavelength), as the lanes of every other sensor read it
         per_lane = wp.where(params.spectral != 0 and scene.spectral_panes != 0, 1, 0)
         for li in range(scene.n_lights):
             inc = delta_incident(scene, li, probe.position, per_lane)
             if inc[3] > 0.0:
                 w = wp.vec3(inc[0], inc[1], inc[2])
                 e = scene.lights[li].emission * inc[3]
-                if per_lane != 0:
-                    e = wp.cw_mul(e, delta_pass_lanes(scene, li, probe.position, w))
+                if params.spectral != 0:
+                    e = (scene.lights[li].emission[0] * inc[3]) * delta_responses(scene, li, probe.position, w,
+                                                                                   per_lane)
                 for q in range(N_QUANTITIES):
                     f = probe_weight(q, w)
                     for c in range(2):
