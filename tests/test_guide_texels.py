@@ -26,25 +26,15 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from simulator.engine.driver import Engine
 from simulator.reference import closed_forms as cf
 from simulator.scene.model import Sensor, SensorKind
 from simulator.scene.usd import load_stage
-from tests.test_guide_surfaces import FURNACE_PANE
+from tests.test_guide_surfaces import FURNACE_PANE, forced_guide  # noqa: F401 (a fixture)
 from tests.test_texel_coverage import checker, material, png_grey
 
 FLOAT32_SLACK = 2e-6
-
-
-@pytest.fixture
-def forced_guide(monkeypatch):
-    """The guide used whatever its concentration."""
-    from simulator.engine import guide as G
-
-    monkeypatch.setattr(G, "MIN_CONCENTRATION", 0.0)
-    return G
 
 
 def _sensor(name, pos, normal):
