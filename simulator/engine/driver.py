@@ -680,7 +680,7 @@ class Engine:
         max_depth: int = -1,
         component: str = "total",
         progress: Callable[[Progress], None] | None = None,
-        count_rays: bool = False,
+        count_rays: bool | int = False,
         sensor_ids: np.ndarray | None = None,
         confidence: float = 0.95,
         stop: StopFlag | None = None,
@@ -716,6 +716,10 @@ class Engine:
         True and ``unfinished`` marks the sensors stopped short. Without
         ``stop``, Ctrl-C raises ``KeyboardInterrupt`` once the batch is done.
 
+        ``count_rays``: count the rays traced in ``rays_traced`` (True or 1:
+        every ray; 2: shadow rays only, so two runs of the same samples split
+        them by kind, as ``benchmarks/profile_office.py`` does).
+
         ``groups``: also tally every sample's light per light group on the
         same paths (one pass), giving ``group_mean`` and ``group_cov``; with
         ``groups.levels`` an adaptive run stops on the recombined readings
@@ -741,7 +745,7 @@ class Engine:
         if method in GUIDED_METHODS:
             self.ensure_guide(seed, ids_all, max_depth)
         params = self.trace_params(method, seed, max_depth, component)
-        params.count_rays = 1 if count_rays else 0
+        params.count_rays = int(count_rays)  # True: every ray; 2: shadow rays only (kernels.rays)
         params.pick_light = LIGHT_PICK_MODES[self.light_pick_mode(method)]
         if params.pick_light or (params.nee and int(self._dev.rec.n_pieces) > 1):
             self._prepare_pick(method, seed, max_depth, component, ids_all)  # and the emitter pieces' factors

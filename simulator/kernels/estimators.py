@@ -60,7 +60,7 @@ from .lights import (  # noqa: F401  (GuideRec, LightRec, SceneRec re-exported f
     sample_light,
     tri_emitted,
 )
-from .rays import count_ray, first_hit, near_light, offset_length, unoccluded  # noqa: F401  (unoccluded: probes)
+from .rays import count_ray, count_shadow_ray, first_hit, near_light, offset_length, unoccluded  # noqa: F401  (unoccluded: probes)
 from .records import SensorRec, TraceParams
 from .sampling import (
     INV_PI,
@@ -316,7 +316,7 @@ def vertex_estimate(
                             pdf_dir = (1.0 - c_v) * pdf_cosine_hemisphere(wp.dot(ls.wi, n))
                         w = power_heuristic(sel * ls.pdf, pdf_dir)
                     if w > 0.0 or params.tally_pick != 0:
-                        count_ray(scene, params)
+                        count_shadow_ray(scene, params)
                         clear = bool(True)
                         if scene.surfaces != 0:  # through panes and cut-outs, at their transmittance
                             vis = shadow_ray_pass(scene, o, p, li, ls)
@@ -343,7 +343,7 @@ def vertex_estimate(
                 if not is_delta(scene.lights[li]):
                     continue
                 for k in range(scene.n_mirror_planes):
-                    count_ray(scene, params)
+                    count_shadow_ray(scene, params)
                     im = image_source(scene, li, k, p, n, o)
                     v = im.value
                     if gl != 0:

@@ -31,7 +31,7 @@ class TraceParams:
     skip_direct: int  # 1: leave out light that reaches the sensor without a reflection (indirect only)
     emissive_light: int  # index of the EMISSIVE light record, −1 if none
     seed: int
-    count_rays: int  # 1: count traced rays per thread in scene.ray_counts (benchmarks)
+    count_rays: int  # 1: count traced rays per thread in scene.ray_counts (benchmarks); 2: shadow rays only
     thread: int  # set by the kernel for each thread
     mask_row: int  # set by the kernel: the sensor whose light mask applies at vertex 0, −1 for none
     spectral: int  # 1: hero-wavelength transport (scene.spectral_* tables, response tallies)
