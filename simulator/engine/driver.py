@@ -55,6 +55,10 @@ PICK_PILOT_SAMPLES = 16
 #: a sensor's own first-vertex pick factor is shrunk toward all sensors'
 #: by this many pseudo-samples (a sensor's 16 pilot samples are few)
 PICK_PRIOR_SAMPLES = 4
+#: the pick pilot's samples per sensor when it learns factors per surface patch as well
+PATCH_PICK_SAMPLES = 64
+#: a patch's factors are shrunk toward row 0's by this many visits' worth of estimate
+PATCH_PICK_PRIOR_VISITS = 8
 #: the roulette threshold's pilot (methods.rr_pilot_choice): samples per sensor, at least this many in all,
 #: over at most this many sensors (evenly spread over the run's)
 RR_PILOT_SAMPLES = 8
@@ -237,6 +241,9 @@ class Engine:
         self._pick_learnt: tuple | None = None  # (factors, per-row gains) of the latest pick pilot
         self._pick_scaled = False  # the device's pick factors are steered by a group pass's scenarios
         self._mask_version = 0
+        #: paths: learn the light pick's factors per surface patch too, for the vertices past the first
+        #: (kernels.light_pick; docs/DESIGN.md §Next-event estimation); False: one row serves them all
+        self.patch_pick = True
 
     def _upload(self) -> DeviceScene:
         """Import Warp, load the kernels and upload the scene, on first need: a
@@ -368,6 +375,7 @@ class Engine:
         """Use these light-pick factors, (1 + S, L) over the light records
         (see :meth:`_prepare_pick`), instead of learning them by a pilot."""
         self._dev.set_pick_factors(np.asarray(factors, np.float64))
+        self._dev.use_patch_pick(False)
         self._pick_key = "fixed"
 
     def _prepare_pick(self, method: str, seed: int, max_depth: int, component: str, ids: np.ndarray) -> None:
@@ -386,8 +394,18 @@ class Engine:
         n_l = int(dev.rec.n_lights)
         params = self.trace_params(method, (seed + 0x3C6EF372) & 0x7FFFFFFF, max_depth, component)
         params.tally_pick = 1
-        count = np.full(len(ids), PICK_PILOT_SAMPLES, np.int64)
-        t_sensor, tally = self._launch(params, ids, np.zeros(len(ids), np.int64), count, tally=True)
+        per_patch = bool(self.patch_pick and dev.layout.usable and METHOD_FLAGS[method][3] and params.bounces != 0
+                         and self.light_pick_mode(method) != "off")
+        count = np.full(len(ids), PATCH_PICK_SAMPLES if per_patch else PICK_PILOT_SAMPLES, np.int64)
+        threads = self.threads
+        if per_patch:  # per-patch sums from one worker (kernels.light_pick.tally_patch_pick)
+            params.tally_pick = 2
+            dev.start_patch_pick_tally()
+            self.threads = 1
+        try:
+            t_sensor, tally = self._launch(params, ids, np.zeros(len(ids), np.int64), count, tally=True)
+        finally:
+            self.threads = threads
         tally = tally.reshape(len(t_sensor), 2, n_l, 2).astype(np.float64)
         factors = np.ones((1 + len(self.sensors), n_l))
 
@@ -413,6 +431,10 @@ class Engine:
             self.piece_factors = pf
             factors[:, self.emissive_light] = 1.0
         dev.set_pick_factors(factors)
+        if per_patch:
+            dev.set_patch_pick_factors(patch_pick_factors(dev.read_patch_pick_tally(), factors[0]))
+        else:
+            dev.use_patch_pick(False)
         self._pick_key = key
         # what each light gave per row, for a pass serving several scenarios (scenario_pick)
         self._pick_learnt = (factors, np.concatenate([tally[:, 1].sum(0)[None, :, 1], got], axis=0))
@@ -429,6 +451,7 @@ class Engine:
         if groups is None or groups.pick_levels is None:
             if self._pick_scaled:
                 self._dev.set_pick_factors(factors)
+                self._dev.use_patch_pick(True)
                 self._pick_scaled = False
             return mode
         from simulator.engine.scenario_pick import MAX_SPREAD, light_levels, pick_spread, scenario_multipliers
@@ -444,6 +467,7 @@ class Engine:
             pb[: len(groups.patch_base)] = groups.patch_base
         d = light_levels(groups.pick_levels, lg, pb)
         self._dev.set_pick_factors(factors * scenario_multipliers(got, d))
+        self._dev.use_patch_pick(False)  # the patches' factors are not steered by the scenarios: the rows serve
         self._pick_scaled = True
         rows = got[:1] if mode == LIGHT_PICK_MODES["after_first"] else got  # the rows the mode reads
         self.pick_spread = float(pick_spread(rows, d).max())
@@ -1133,4 +1157,16 @@ def _split_batch(ids: np.ndarray, first: np.ndarray, count: np.ndarray, max_samp
     if cur[0]:
         out.append(cur)
     return [(np.asarray(a, np.int64), np.asarray(b, np.int64), np.asarray(c, np.int64)) for a, b, c in out]
+
+
+def patch_pick_factors(tally: np.ndarray, row0: np.ndarray) -> np.ndarray:
+    """The light pick's factors per patch, (N, L): Σ w·value / Σ w·ê over the pilot's vertices on
+    each patch, shrunk toward row 0's factors ``row0`` (L,) by PATCH_PICK_PRIOR_VISITS visits' worth
+    of the patch's mean estimate; a patch the pilot never reached keeps row 0's. ``tally``: (N, L, 3)
+    sums of (w·ê, w·value, visits)."""
+    est, got, visits = tally[..., 0], tally[..., 1], tally[..., 2]
+    mean_est = np.where(visits > 0, est / np.where(visits > 0, visits, 1.0), 0.0)
+    prior = PATCH_PICK_PRIOR_VISITS * mean_est
+    den = est + prior
+    return np.where(den > 0, (got + prior * row0[None]) / np.where(den > 0, den, 1.0), row0[None])
 

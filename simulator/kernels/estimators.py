@@ -46,7 +46,7 @@ from simulator.scene.model import Sensor, SensorKind
 
 from .group_tally import clear_group_sample, fold_group_sample, tally_group, tregenza_patch
 from .guide import guide_fraction, guide_row, guided_step, mixture_factor, pdf_guide, tally_patch
-from .light_pick import LightPick, is_delta, pick_light, pick_scale, picks_at, tally_pick
+from .light_pick import LightPick, is_delta, pick_light, pick_scale, picks_at, pick_light_at, tally_patch_pick, tally_pick
 from .lights import (  # noqa: F401  (GuideRec, LightRec, SceneRec re-exported for the engine)
     RAY_INF,
     GuideRec,
@@ -288,7 +288,7 @@ def vertex_estimate(
         pk = LightPick()
         if params.nee != 0 and count and delta == 0:
             if picks_at(params, depth):
-                pk = pick_light(scene, p, n, params.mask_row, depth, rng)
+                pk = pick_light_at(scene, p, n, params.mask_row, depth, cur_face, rng)
                 rng = pk.rng
             for li in range(scene.n_lights):
                 u = wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng))
@@ -336,6 +336,8 @@ def vertex_estimate(
                                 tally_patch(scene, params, prev_row, cur_face, p, c_light)
                 if params.tally_pick != 0:
                     tally_pick(scene, params, li, p, n, depth, weight, got, ls.tri)
+                    if params.tally_pick == 2 and depth > 0:
+                        tally_patch_pick(scene, li, cur_face, p, n, weight, got)
         # -- delta lights seen in flat mirrors: their image sources (kernels.mirrors); light reflected
         #    on the way, so indirect (counted at a sensor's vertex even without its direct light)
         if params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes > 0:
