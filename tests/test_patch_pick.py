@@ -10,8 +10,9 @@
   and 0 in the shade (over the cone, cosθ departs from its centre's by
   at most sinσ·tanθ: 0.8% on the floor, θ = 60°; 2% allowed for steeper
   faces): on the patches the pilot visited 50 times or more, the sun's
-  shadowed value over its estimate lies in [0, 1.02], some patches (the sunlit floor) are near 1 and many (the
-  shaded floor, the walls in the sun's shadow) near 0.
+  shadowed value over its estimate lies in [0, 1.02], some patches (the
+  sunlit floor) are near 1 and many (the shaded floor, the walls in the
+  sun's shadow) near 0.
 - The factors are the same bytes at 1 and 2 CPU threads (the pilot's sums
   come from one worker).
 - Readings stay unbiased: the office's 1,464 guided readings with the
@@ -71,18 +72,10 @@ def test_the_suns_patch_factors_are_its_visible_fraction_and_thread_invariant():
         factors.append(_patch_factors(eng))
     assert factors[0].tobytes() == factors[1].tobytes()
     tally_eng = Engine(scene, sensors, threads=1)
-    tally_eng.run("guided", samples=8, seed=3)
     f = factors[0][:, sun]
-    # the pilot's own visits: rerun its tally to see where it went (same seed, same sums)
-    from simulator.engine import driver as D
-
+    # the pilot's own visits: its sums again (same seed, same bytes), read before they become factors
     dev = tally_eng._dev
-    params = tally_eng.trace_params("guided", (3 + 0x3C6EF372) & 0x7FFFFFFF)
-    params.tally_pick = 2
-    dev.start_patch_pick_tally()
-    ids = np.arange(len(sensors))
-    tally_eng._launch(params, ids, np.zeros(len(ids), np.int64), np.full(len(ids), D.PATCH_PICK_SAMPLES, np.int64),
-                      tally=True)  # fmt: skip
+    tally_eng._patch_pick_pilot("guided", 3, -1, "total", np.arange(len(sensors)))
     t = dev.read_patch_pick_tally()[:, sun]
     busy = (t[:, 2] >= 50) & (t[:, 0] > 0)
     assert busy.sum() >= 20

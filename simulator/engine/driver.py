@@ -55,8 +55,10 @@ PICK_PILOT_SAMPLES = 16
 #: a sensor's own first-vertex pick factor is shrunk toward all sensors'
 #: by this many pseudo-samples (a sensor's 16 pilot samples are few)
 PICK_PRIOR_SAMPLES = 4
-#: the pick pilot's samples per sensor when it learns factors per surface patch as well
-PATCH_PICK_SAMPLES = 64
+#: the per-patch pick pilot's samples per sensor ...
+PATCH_PICK_SAMPLES = 32
+#: ... over at most this many samples in all (the sensors evenly thinned): it runs on one worker
+PATCH_PICK_TOTAL = 1 << 16
 #: a patch's factors are shrunk toward row 0's by this many visits' worth of estimate
 PATCH_PICK_PRIOR_VISITS = 8
 #: the roulette threshold's pilot (methods.rr_pilot_choice): samples per sensor, at least this many in all,
@@ -396,16 +398,10 @@ class Engine:
         params.tally_pick = 1
         per_patch = bool(self.patch_pick and dev.layout.usable and METHOD_FLAGS[method][3] and params.bounces != 0
                          and self.light_pick_mode(method) != "off")
-        count = np.full(len(ids), PATCH_PICK_SAMPLES if per_patch else PICK_PILOT_SAMPLES, np.int64)
-        threads = self.threads
-        if per_patch:  # per-patch sums from one worker (kernels.light_pick.tally_patch_pick)
-            params.tally_pick = 2
-            dev.start_patch_pick_tally()
-            self.threads = 1
-        try:
-            t_sensor, tally = self._launch(params, ids, np.zeros(len(ids), np.int64), count, tally=True)
-        finally:
-            self.threads = threads
+        if per_patch:  # first: its launch resets the per-thread tallies the rows are learnt from below
+            self._patch_pick_pilot(method, seed, max_depth, component, ids)
+        count = np.full(len(ids), PICK_PILOT_SAMPLES, np.int64)
+        t_sensor, tally = self._launch(params, ids, np.zeros(len(ids), np.int64), count, tally=True)
         tally = tally.reshape(len(t_sensor), 2, n_l, 2).astype(np.float64)
         factors = np.ones((1 + len(self.sensors), n_l))
 
@@ -439,6 +435,24 @@ class Engine:
         # what each light gave per row, for a pass serving several scenarios (scenario_pick)
         self._pick_learnt = (factors, np.concatenate([tally[:, 1].sum(0)[None, :, 1], got], axis=0))
         self._pick_scaled = False
+
+    def _patch_pick_pilot(self, method: str, seed: int, max_depth: int, component: str, ids: np.ndarray) -> None:
+        """The per-patch sums of the light pick (kernels.light_pick.tally_patch_pick), on the device:
+        PATCH_PICK_SAMPLES samples of every light at every vertex for up to PATCH_PICK_TOTAL /
+        PATCH_PICK_SAMPLES of these sensors (evenly spread over them), on one CPU worker (the sums
+        are then the same bytes whatever the thread count), from a seed stream of their own."""
+        params = self.trace_params(method, (seed + 0x78DDE6E6) & 0x7FFFFFFF, max_depth, component)
+        params.tally_pick = 2
+        k = max(1, PATCH_PICK_TOTAL // PATCH_PICK_SAMPLES)
+        sub = ids if len(ids) <= k else np.unique(ids[np.linspace(0, len(ids) - 1, k).round().astype(np.int64)])
+        self._dev.start_patch_pick_tally()
+        threads = self.threads
+        self.threads = 1
+        try:
+            self._launch(params, sub, np.zeros(len(sub), np.int64), np.full(len(sub), PATCH_PICK_SAMPLES, np.int64),
+                         tally=True)  # fmt: skip
+        finally:
+            self.threads = threads
 
     def _scenario_pick(self, groups: LightGroups | None, mode: int) -> int:
         """Steer the learnt pick toward the scenarios a group pass serves (``groups.pick_levels``,
