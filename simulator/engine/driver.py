@@ -61,6 +61,12 @@ PATCH_PICK_SAMPLES = 32
 PATCH_PICK_TOTAL = 1 << 16
 #: a patch's factors are shrunk toward row 0's by this many visits' worth of estimate
 PATCH_PICK_PRIOR_VISITS = 8
+#: the split pilot's direct and indirect samples per irradiance sensor (Engine._split_rule) ...
+SPLIT_PILOT_SAMPLES = 16
+#: ... the most indirect paths a sample may read ...
+SPLIT_MAX = 8
+#: ... and the least gain predicted, variance × rays, for which a sample is split
+SPLIT_MIN_GAIN = 1.2
 #: the roulette threshold's pilot (methods.rr_pilot_choice): samples per sensor, at least this many in all,
 #: over at most this many sensors (evenly spread over the run's)
 RR_PILOT_SAMPLES = 8
@@ -246,6 +252,11 @@ class Engine:
         #: paths: learn the light pick's factors per surface patch too, for the vertices past the first
         #: (kernels.light_pick; docs/DESIGN.md §Next-event estimation); False: one row serves them all
         self.patch_pick = True
+        #: paths: each irradiance sample reads its direct light once and the mean of K indirect paths;
+        #: "auto": K by a pilot (:meth:`_split_rule`), an int: that K (1: no split)
+        self.split_indirect: int | str = "auto"
+        self._split_found: dict[tuple, dict] = {}
+        self.split_pilot: dict | None = None  #: what the split pilot measured for the latest path run
 
     def _upload(self) -> DeviceScene:
         """Import Warp, load the kernels and upload the scene, on first need: a
@@ -351,6 +362,7 @@ class Engine:
         p.tally_chunk = 1
         p.pick_light = 0
         p.tally_pick = 0
+        p.split_indirect = 0
         p.rr_threshold = float(self.rr_threshold if self.rr_threshold is not None else rr_threshold_rule(self.scene)[0])
         return p
 
@@ -453,6 +465,56 @@ class Engine:
                          tally=True)  # fmt: skip
         finally:
             self.threads = threads
+
+    def _split_rule(self, params, ids: np.ndarray) -> int:
+        """K, the indirect paths per irradiance sample (kernels.estimators.split_irradiance), from a
+        pilot of SPLIT_PILOT_SAMPLES direct and as many indirect samples of each irradiance sensor in
+        ``ids`` (their own seed stream): with V_d, V_i the relative variances per sample summed over
+        the sensors (over the square of the total reading) and c_d, c_i the rays per sample,
+        K = √(V_i·c_d / (V_d·c_i)) (the Neyman allocation: the cost c_d + K·c_i times the variance
+        V_d + V_i/K is least there), rounded, within [1, SPLIT_MAX]; 1 where the predicted gain
+        (V_d + V_i)(c_d + c_i) / ((V_d + V_i/K)(c_d + K·c_i)) is under SPLIT_MIN_GAIN. Once per (run's
+        strategies, sensors)."""
+        ids = np.asarray([i for i in ids if self.sensors[i].kind == SensorKind.IRRADIANCE], np.int64)
+        if not len(ids) or params.spectral:
+            return 1  # spectral transport: the pilot reads the grey channels only, not the responses
+        key = (params.nee, params.bsdf, params.bounces, params.guide_c, params.pick_light, params.rr_threshold,
+               params.seed, ids.tobytes())  # fmt: skip
+        if key in self._split_found:
+            self.split_pilot = self._split_found[key]
+            return self.split_pilot["k"]
+        tb = time.perf_counter()
+        parts = []
+        kept = (params.seed, params.bounces, params.skip_direct, params.count_rays, params.split_indirect,
+                self.rays_traced)  # the run's, restored below (a struct's copy would share its fields)
+        try:
+            for bounces, skip in ((0, 0), (kept[1], 1)):
+                params.seed = (int(kept[0]) + 0x1B873593) & 0x7FFFFFFF
+                params.bounces, params.skip_direct, params.count_rays, params.split_indirect = bounces, skip, 1, 0
+                self.rays_traced = 0
+                _, cnt, mean, m2, *_ = self._launch(params, ids, np.zeros(len(ids), np.int64),
+                                                    np.full(len(ids), SPLIT_PILOT_SAMPLES, np.int64))  # fmt: skip
+                rays = self.rays_traced / max(1, int(cnt.sum()))
+                parts.append((mean[:, 1], m2[:, 1] / np.maximum(cnt - 1, 1), max(rays, 1.0)))
+        finally:
+            (params.seed, params.bounces, params.skip_direct, params.count_rays, params.split_indirect,
+             self.rays_traced) = kept
+        (m_d, v_d, c_d), (m_i, v_i, c_i) = parts
+        m = m_d + m_i
+        ok = m > 0
+        rv_d = float((v_d[ok] / m[ok] ** 2).sum())
+        rv_i = float((v_i[ok] / m[ok] ** 2).sum())
+        k = 1
+        if rv_i > 0:
+            k = SPLIT_MAX if rv_d <= 0 else int(np.clip(round(float(np.sqrt(rv_i * c_d / (rv_d * c_i)))), 1, SPLIT_MAX))
+        gain = (rv_d + rv_i) * (c_d + c_i) / max((rv_d + rv_i / k) * (c_d + k * c_i), 1e-300) if rv_i > 0 else 1.0
+        if gain < SPLIT_MIN_GAIN:
+            k = 1  # the split would save too little (no indirect noise, or cheap direct light) to pay for the change
+        self.split_pilot = {"k": k, "relvar_direct": rv_d / max(1, int(ok.sum())),
+                            "relvar_indirect": rv_i / max(1, int(ok.sum())), "rays_direct": c_d, "rays_indirect": c_i,
+                            "predicted_gain": gain, "seconds": time.perf_counter() - tb}  # fmt: skip
+        self._split_found[key] = self.split_pilot
+        return k
 
     def _scenario_pick(self, groups: LightGroups | None, mode: int) -> int:
         """Steer the learnt pick toward the scenarios a group pass serves (``groups.pick_levels``,
@@ -788,6 +850,13 @@ class Engine:
         if params.pick_light or (params.nee and int(self._dev.rec.n_pieces) > 1):
             self._prepare_pick(method, seed, max_depth, component, ids_all)  # and the emitter pieces' factors
             params.pick_light = self._scenario_pick(groups, params.pick_light)
+        self.split_pilot = None
+        if METHOD_FLAGS[method][3] and params.bounces != 0 and component == "total":
+            # before the roulette and first-batch pilots, so that they measure the samples the run draws
+            k = self.split_indirect
+            if k == "auto":
+                k = self._split_rule(params, ids_all)
+            params.split_indirect = int(k) if int(k) > 1 else 0
         adaptive = rel_error is not None
         choose = adaptive and choose_first_batch
         z = z_for_confidence(confidence)

@@ -574,9 +574,29 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
 
 
 @wp.func
+def split_irradiance(scene: SceneRec, p: wp.vec3, n: wp.vec3, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+    """One estimate of the irradiance on (p, n): with ``params.split_indirect`` = K ≥ 2 (paths, total
+    light) the direct light once (next-event estimation and the cosine ray's emitters, bounces 0) plus
+    the mean of K indirect paths (each skipping the sensor's own direct light), every part from a
+    stream of its own: E = E_d + E_i, so the sum is unbiased, and its variance is v_d + v_i/K for the
+    cost c_d + K·c_i (the Neyman allocation of samples between the two, in one pass)."""
+    if params.split_indirect <= 1 or params.bounces == 0 or params.skip_direct != 0:
+        return vertex_irradiance(scene, p, n, 1.0, params, params.skip_direct, rng_in)
+    rng = rng_in
+    seed = wp.randi(rng)
+    prm = params
+    prm.bounces = 0
+    total = vertex_irradiance(scene, p, n, 1.0, prm, 0, wp.rand_init(seed, 0))
+    inv_k = 1.0 / float(params.split_indirect)
+    for k in range(params.split_indirect):
+        total += vertex_irradiance(scene, p, n, inv_k, params, 1, wp.rand_init(seed, k + 1))
+    return total
+
+
+@wp.func
 def sample_irradiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
     """One estimate of the irradiance on the sensor's side."""
-    return vertex_irradiance(scene, s.position, s.normal, 1.0, params, params.skip_direct, rng_in)
+    return split_irradiance(scene, s.position, s.normal, params, rng_in)
 
 
 @wp.func

@@ -56,3 +56,4 @@ class TraceParams:
     pick_light: int  # one picked light with area (light_pick.py): 0 never, 1 at every vertex, 2 past the first
     tally_pick: int  # 1: tally the light pick's pilot sums in scene.pick_tally (a pilot run)
     rr_threshold: float  # Russian roulette weight window (engine.methods.rr_threshold_rule)
+    split_indirect: int  # K ≥ 2: an irradiance sample is one direct estimate + the mean of K indirect paths (kernels.estimators.split_irradiance)
