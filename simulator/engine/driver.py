@@ -851,7 +851,7 @@ class Engine:
             self._prepare_pick(method, seed, max_depth, component, ids_all)  # and the emitter pieces' factors
             params.pick_light = self._scenario_pick(groups, params.pick_light)
         self.split_pilot = None
-        if METHOD_FLAGS[method][3] and params.bounces != 0 and component == "total":
+        if METHOD_FLAGS[method][3] and params.bounces != 0 and component == "total" and groups is None:
             # before the roulette and first-batch pilots, so that they measure the samples the run draws
             k = self.split_indirect
             if k == "auto":
