@@ -1,7 +1,8 @@
 """Where a sample's time goes on the office: ray queries against everything else.
 
 Reads configs/office_bench.toml (1,464 sensors in the furnished office) with
-one estimator (default ``guided``) on one CPU worker, so CPU seconds
+one estimator (default ``guided``, one path a sample: ``--paths auto`` lets
+the engine split samples) on one CPU worker, so CPU seconds
 (``time.process_time``) are the kernel's own, and prints:
 
 - samples/s and CPU µs per sample;
@@ -19,7 +20,7 @@ one estimator (default ``guided``) on one CPU worker, so CPU seconds
   seed), each one's variance per sample over the total reading's square,
   averaged over the sensors.
 
-    PYTHONPATH=. python benchmarks/profile_office.py [--samples 32] [--method guided] [--rays 400000]
+    PYTHONPATH=. python benchmarks/profile_office.py [--samples 32] [--method guided] [--rays 400000] [--paths auto]
 """
 
 from __future__ import annotations
@@ -130,6 +131,8 @@ def main() -> None:
     ap.add_argument("--method", default="guided")
     ap.add_argument("--rays", type=int, default=400000, help="closest-hit rays of the replay (about)")
     ap.add_argument("--no-split", action="store_true", help="skip the direct/indirect variance split")
+    ap.add_argument("--paths", default="1", help="indirect paths per irradiance sample: 1 (one path a sample, "
+                    "the default) or auto (the engine's split rule)")  # fmt: skip
     a = ap.parse_args()
 
     from simulator.config import load_config
@@ -142,6 +145,7 @@ def main() -> None:
     sensors = list(cfg.sensors)
     load_kernels("cpu")
     eng = Engine(scene, sensors, threads=1)
+    eng.split_indirect = a.paths if a.paths == "auto" else int(a.paths)
     eng.run(a.method, samples=8, seed=1000)  # kernel load and the method's pilots, out of the timing
     n_s = len(sensors)
     c0 = time.process_time()
