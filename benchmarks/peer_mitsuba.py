@@ -19,6 +19,19 @@ LLVM 14 and 15 fail to select ``fmaximum``, 19 works; point Dr.Jit at it
 with ``DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM.so.19.1``).
 
     PYTHONPATH=. python benchmarks/peer_mitsuba.py configs/office_bench.toml --rms 0.01 0.003
+
+``--stage`` reads the config's sensors on another stage (e.g.
+stages/office_emissive.usda: the office with its window and luminaires as
+emissive geometry, which Mitsuba samples as area emitters, where the dome of
+office.usda is a constant emitter it samples over the whole sphere). With
+``--replicas R`` no stored reference is needed: each renderer draws R
+independent renders at each budget; one render's error per sensor is the
+spread of the R (its variance s², relative to the pooled mean), the time to a
+target follows from the largest budget by the 1/√t law of an unbiased estimator, t·(rms/target)²,
+and the two renderers' pooled means at the largest budgets are compared sensor by sensor
+(z = Δ/√(σ_p² + σ_m²)), so a bias in either would show:
+
+    PYTHONPATH=. python benchmarks/peer_mitsuba.py --stage stages/office_emissive.usda --replicas 4 --rms 0.01 0.003
 """
 
 from __future__ import annotations
@@ -177,6 +190,59 @@ def time_to(points: list[tuple[float, float]], target: float) -> tuple[float, bo
     return t * (e / target) ** 2, False
 
 
+def replica_errors(runs: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray, float]:
+    """(pooled mean, its standard error, one render's relative RMS error) from R independent renders
+    (R, S): s² the unbiased spread per sensor, one render's relative error √mean_s(s²/mean²)."""
+    x = np.asarray(runs)
+    mean = x.mean(axis=0)
+    var = x.var(axis=0, ddof=1)
+    ok = mean > 0
+    return mean, np.sqrt(var / len(x)), float(np.sqrt(np.mean(var[ok] / mean[ok] ** 2)))
+
+
+def replica_comparison(a, cfg, scene, sensors) -> None:
+    """Both renderers at each budget, R seeds each: time to each target from one render's spread."""
+    if a.replicas < 2:
+        raise SystemExit("--replicas: at least 2 independent renders are needed for a spread")
+    from simulator.engine.driver import Engine, load_kernels
+
+    print(f"{platform.processor() or platform.machine()}, {os.cpu_count()} CPUs, load {os.getloadavg()[0]:.2f} at start; "
+          f"{len(sensors)} sensors, {scene.geometry.n_triangles} triangles on {Path(cfg.stage).name}; "
+          f"{a.replicas} renders per budget, no reference")  # fmt: skip
+    load_kernels(cfg.simulation.device)
+    engine = Engine(scene, sensors, device=cfg.simulation.device)
+    t0 = time.perf_counter()
+    run_probesim(cfg, scene, sensors, 8, 7, engine)  # pilots and guide, once per engine
+    print(f"probesim setup (pilots, guide): {time.perf_counter() - t0:.2f} s, kept out of the times")
+    t0 = time.perf_counter()
+    run_mitsuba(scene, sensors[:2], 4, a.proxy_m, 1)
+    print(f"mitsuba setup (kernel compile): {time.perf_counter() - t0:.2f} s, kept out of the times")
+    rows, pooled = {"probesim": [], "mitsuba": []}, {}
+    ladders = {"probesim": a.probesim_samples, "mitsuba": a.mitsuba_spp}
+    for who, ladder in ladders.items():
+        for n in ladder:
+            runs, walls = [], []
+            for r in range(a.replicas):
+                v, t = (run_probesim(cfg, scene, sensors, n, 101 + r, engine) if who == "probesim"
+                        else run_mitsuba(scene, sensors, n, a.proxy_m, 101 + r))
+                runs.append(v)
+                walls.append(t)
+            mean, se, one = replica_errors(runs)
+            t = float(np.median(walls))
+            rows[who].append((t, one))
+            pooled[who] = (mean, se)
+            print(f"{who:8s} {n:6d} per sensor: {t:8.2f} s a render, one render's RMS {one:.3%}", flush=True)
+    (mp, sp), (mm, sm) = pooled["probesim"], pooled["mitsuba"]
+    z = (mp - mm) / np.sqrt(sp**2 + sm**2)
+    print(f"pooled means at the top budgets: Mitsuba/probesim - 1 = {np.mean(mm) / np.mean(mp) - 1:+.3%} (mean over "
+          f"sensors), RMS z {np.sqrt(np.mean(z**2)):.2f}, |z| > 4 at {int(np.sum(np.abs(z) > 4))} of {len(z)} sensors")
+    for target in a.rms:
+        (t_p, e_p), (t_m, e_m) = rows["probesim"][-1], rows["mitsuba"][-1]  # the largest budgets
+        tp, tm = t_p * (e_p / target) ** 2, t_m * (e_m / target) ** 2
+        print(f"to {target:.2%} RMS: probesim {tp:.1f} s, mitsuba {tm:.1f} s, probesim/mitsuba {tp / tm:.2f}x; "
+              f"load {os.getloadavg()[0]:.2f} at end")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("config", nargs="?", default=str(ROOT / "configs" / "office_bench.toml"))
@@ -184,6 +250,9 @@ def main() -> None:
     ap.add_argument("--probesim-samples", type=int, nargs="+", default=[256, 1024, 4096])
     ap.add_argument("--mitsuba-spp", type=int, nargs="+", default=[1024, 4096, 16384])
     ap.add_argument("--proxy-m", type=float, default=0.005)
+    ap.add_argument("--stage", help="read the config's sensors on this stage instead of its own")
+    ap.add_argument("--replicas", type=int, default=0,
+                    help="R >= 2: errors from R independent renders per budget, no stored reference")
     a = ap.parse_args()
 
     import mitsuba as mi
@@ -194,8 +263,14 @@ def main() -> None:
 
     mi.set_variant("llvm_ad_mono")
     cfg = load_config(a.config)
+    if a.stage:
+        from dataclasses import replace
+
+        cfg = replace(cfg, stage=Path(a.stage).resolve())
     scene = load_scene(cfg)
     sensors = list(cfg.sensors)
+    if a.replicas:
+        return replica_comparison(a, cfg, scene, sensors)
     ref_rows = {r["sensor"]: r for r in csv.DictReader((ROOT / "configs" / "references" / f"{Path(a.config).stem}.csv").open())}
     ref = np.array([float(ref_rows[s.name]["illuminance_lx"]) for s in sensors])
     ref_se = np.array([float(ref_rows[s.name]["illuminance_stderr_lx"]) for s in sensors])

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import hashlib
 import platform
 import sys
 import time
@@ -17,18 +16,19 @@ from simulator.engine.driver import EngineResult
 from simulator.errors import UserError
 from simulator.interrupts import StopFlag, sigint_deferred
 from simulator.io.maps import grid_outputs, probe_outputs
+from simulator.plan.cache import cached_plan
 from simulator.plan.planner import Plan, make_plan, probe_method
 from simulator.io.results import Reading, probe_readings, readings_from, write_outputs
 from simulator.scene.model import Scene, Sensor, SensorKind
 
-__all__ = ["RunOutput", "load_scene", "collect_sensors", "run"]
+__all__ = ["RunOutput", "load_scene", "cached_scene", "collect_sensors", "run"]
 
 
 @dataclass
 class RunOutput:
     rows: list[Reading]
-    csv_path: Path
-    record_path: Path
+    csv_path: Path | None  #: None: run with ``write=False``
+    record_path: Path | None
     record: dict
     scene: Scene
     interrupted: bool = False  #: stopped by Ctrl-C: the files hold what was measured so far
@@ -40,6 +40,15 @@ def load_scene(cfg: RunConfig) -> Scene:
     return load_stage(cfg.stage, light_units=cfg.light_units, radiometric_spectrum=cfg.radiometric_spectrum,
                       variants=cfg.variants, require_light=True,  # a run of a stage with no light is refused
                       time=getattr(cfg, "time", None))
+
+
+def cached_scene(cfg: RunConfig) -> tuple[Scene, int | None]:
+    """:func:`load_scene`, kept for the process's later runs of the same stage selection while none of
+    the stage's files change (:mod:`simulator.scene.stage_cache`); ``(scene, token)``."""
+    from simulator.scene import stage_cache
+
+    return stage_cache.cached_stage(lambda: load_scene(cfg), cfg.stage, cfg.light_units, cfg.radiometric_spectrum,
+                                    cfg.variants, getattr(cfg, "time", None))
 
 
 def collect_sensors(cfg: RunConfig, scene: Scene) -> list[Sensor]:
@@ -126,7 +135,9 @@ def _merge_responses(out: EngineResult, r: EngineResult, ids, hero, engine, sim,
 
 
 def _sha256(path: Path) -> str:
-    return hashlib.sha256(path.read_bytes()).hexdigest()
+    from simulator.scene.stage_cache import file_sha256  # kept while the file is unchanged
+
+    return file_sha256(path)
 
 
 def _versions() -> dict:
@@ -178,7 +189,7 @@ def _batch_record(plan: dict) -> dict:
     return {k: v for k, v in plan.items() if v is not None}
 
 
-def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
+def run(cfg: RunConfig, progress=None, log=print, write: bool = True) -> RunOutput:
     """Run a validated config and write its CSV and run record.
 
     Parameters
@@ -188,9 +199,17 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
         Receives :class:`simulator.engine.driver.Progress` after each batch.
     log : callable
         Where one-line notes (warnings, the chosen method) go.
+    write : bool
+        False: write nothing (no CSV, run record or maps); the output's rows
+        and record are the same, its ``csv_path`` and ``record_path`` None
+        and its record's ``maps`` empty.
 
     Notes
     -----
+    The stage reading and the plan are kept for later calls in the same
+    process while nothing they depend on changes (:func:`cached_scene`,
+    :mod:`simulator.plan.cache`).
+
     Ctrl-C (or ``KeyboardInterrupt`` from ``progress``) while tracing stops
     the run after the current batch: the CSV and run record are written with
     what was measured (see :func:`_partial_rows`), no maps, and the output's
@@ -200,7 +219,7 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     from simulator.spectra.transport import choose_transport
 
     t0 = time.perf_counter()
-    scene = load_scene(cfg)
+    scene, token = cached_scene(cfg)
     spectrum = None  # the emitters' spectrum, for response columns (grey scenes: exact post hoc)
     hero = None  # spectral transport's tables (a colour can change a reading: hero wavelengths)
     if choose_transport(scene)[0] == "grey":
@@ -216,7 +235,7 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     plain = [s for s in sensors if s.kind != SensorKind.PROBE]
     sim = cfg.simulation
     t_read = time.perf_counter()
-    plan = make_plan(scene, plain, sim.method, sim.component)
+    plan = cached_plan(lambda: make_plan(scene, plain, sim.method, sim.component), token, plain, sim.method, sim.component)
     reason = "per-sensor plan (see plan)" if sim.method == "auto" else "as requested"
     probes_method = None
     if probes:  # no closed form for a probe: its method is chosen for the run
@@ -229,7 +248,7 @@ def run(cfg: RunConfig, progress=None, log=print) -> RunOutput:
     t_setup = time.perf_counter()
     with sigint_deferred() as stop:  # Ctrl-C from here on: stop after the batch, write what was measured
         return _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log,
-                                (t0, t_read, t_load, t_setup), spectrum)  # fmt: skip
+                                (t0, t_read, t_load, t_setup), spectrum, write)  # fmt: skip
 
 
 def _run_spectrum(cfg: RunConfig, scene: Scene):
@@ -299,7 +318,7 @@ def _partial_rows(rows: list[Reading], unfinished: dict[str, bool], adaptive: bo
 
 
 def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log, times,
-                     spectrum=None) -> RunOutput:
+                     spectrum=None, write=True) -> RunOutput:
     """The rest of :func:`run`: trace (until done or ``stop``), then write the files."""
     t0, t_read, t_load, t_setup = times
     sim = cfg.simulation
@@ -338,15 +357,16 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         n_finished = sum(1 for u in unfinished.values() if not u)
     else:
         rows = [by_name[s.name] for s in sensors]
-        meta = {"seed": sim.seed, "method": "+".join(plan.groups()), "light_units": cfg.light_units, "stage": cfg.stage.name}
-        extra = grid_outputs(cfg.output.csv, cfg.grids, rows, meta, responses=response_maps)
-        probe_meta = {**meta, "method": probes_method, "taken": [g.name for g in cfg.grids]}
-        if spectrum is not None:  # grey scene, one declared spectrum: the maps carry its colour
-            from simulator.spectra.posthoc import rgb_per_luminance
+        if write:  # the maps: files only
+            meta = {"seed": sim.seed, "method": "+".join(plan.groups()), "light_units": cfg.light_units, "stage": cfg.stage.name}
+            extra = grid_outputs(cfg.output.csv, cfg.grids, rows, meta, responses=response_maps)
+            probe_meta = {**meta, "method": probes_method, "taken": [g.name for g in cfg.grids]}
+            if spectrum is not None:  # grey scene, one declared spectrum: the maps carry its colour
+                from simulator.spectra.posthoc import rgb_per_luminance
 
-            probe_meta["rgb"] = (spectrum.name, rgb_per_luminance(spectrum))
-        probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, probe_meta)
-        extra.update(probe_files)
+                probe_meta["rgb"] = (spectrum.name, rgb_per_luminance(spectrum))
+            probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, probe_meta)
+            extra.update(probe_files)
     t_end = time.perf_counter()
     record = {
         "config_path": str(cfg.path),
@@ -391,5 +411,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
             "batches": {m: _batch_record(p) for m, p in getattr(engine, "batch_plans", {}).items()},
         },
     }
-    record_path = write_outputs(cfg.output.csv, rows, record, extra)
+    if not write:
+        return RunOutput(rows, None, None, record, scene, interrupted)
+    record_path = write_outputs(cfg.output.csv, rows, record, extra, encoded={"plan": plan.record_json()})
     return RunOutput(rows, cfg.output.csv, record_path, record, scene, interrupted)

@@ -16,8 +16,15 @@ import pytest
 from simulator.commands.verify import _load_case, default_configs_dir, expected_values
 from simulator.config import load_config
 from simulator.config.overrides import apply_overrides
-from simulator.engine.adaptive import PILOT_MIN_BATCH, StoppingRule, first_batch_from_pilot, run_batches
-from simulator.engine.driver import Engine
+from simulator.engine.adaptive import (
+    PILOT_LOW_BATCH,
+    PILOT_MIN_BATCH,
+    StoppingRule,
+    first_batch_from_pilot,
+    pilot_floor,
+    run_batches,
+)
+from simulator.engine.driver import BLOCK, Engine
 from simulator.engine.methods import rr_pilot_choice
 from simulator.reference.cases import case
 from simulator.scene.model import SensorKind
@@ -125,19 +132,63 @@ def test_chosen_first_batch_spends_at_most_1_3x_what_the_slowest_sensor_needs(na
     assert checked >= 3
 
 
+def test_pilot_floor_follows_the_pilots_90th_percentile_need_raised_by_its_error():
+    """A need from m pilot samples has the relative standard error of a
+    variance from m samples, √(2/(m − 1)) (0.5345 at m = 8, 0.0886 at
+    m = 256); the floor is ⌈q₀.₉·(1 + that)⌉ within [PILOT_LOW_BATCH, 8]:
+    needs all 2 at m = 8 give ⌈3.07⌉ = 4; all 3 give ⌈4.60⌉ = 5; needs 1 … 10
+    (q₀.₉ = 9.1) give 13.96, held at 8; all 3 at m = 256 give ⌈3.27⌉ = 4; a
+    pilot of one sample per sensor says nothing (8)."""
+    assert PILOT_LOW_BATCH == 4
+    assert pilot_floor(np.full(32, 2.0), 8) == 4
+    assert pilot_floor(np.full(32, 3.0), 8) == 5
+    assert pilot_floor(np.arange(1.0, 11.0), 8) == PILOT_MIN_BATCH
+    assert pilot_floor(np.full(4, 3.0), 256) == 4
+    assert pilot_floor(np.full(4, 3.0), 1) == PILOT_MIN_BATCH
+    assert pilot_floor(np.full(4, 1e-6), 8) == PILOT_LOW_BATCH  # never below 3 degrees of freedom
+    z = 1.96  # through first_batch_from_pilot: relvar 2e-5 at 1% needs 0.77 each, so the floor is 4
+    assert first_batch_from_pilot(np.full(32, 2e-5), z, 0.01, 1024, pilot_samples=8) == 4
+    assert first_batch_from_pilot(np.full(32, 2e-5), z, 0.01, 1024) == PILOT_MIN_BATCH  # no pilot size: the floor
+    assert first_batch_from_pilot(np.full(32, 2e-5), z, 0.01, 2, pilot_samples=8) == 2  # never above the upper bound
+    assert first_batch_from_pilot(np.array([0.01, 0.01]), z, 0.01, 1024, pilot_samples=8) == 193  # the median rule
+
+
 def test_integrating_sphere_first_batch_and_threshold_from_one_pilot():
-    """In the integrating sphere at 1% the pilot's noisiest sensor needs
-    fewer than 8 samples at t = 0.01 (and ~130 at the rule's 0.04), so the
-    roulette pilot stops at 0.01 and the first batch is the floor of 8;
-    every sensor then meets the target in that batch. The old rule, the
-    config's 1,024 as the first batch, kept t = 0.04 and drew 1,024."""
+    """In the integrating sphere at 1% the pilot's sensors need a few
+    samples at t = 0.01 (and ~130 at the rule's 0.04), so the roulette pilot
+    stops at 0.01 and the first batch is the floor the pilot's needs set
+    (below 8: :func:`pilot_floor`); a sensor that misses the target in it
+    takes one more batch. The old rule, the config's 1,024 as the first
+    batch, kept t = 0.04 and drew 1,024."""
     c, scene, sensors = _case("integrating_sphere")
     sensors = [s for s in sensors if s.kind == SensorKind.IRRADIANCE]
     eng = Engine(scene, sensors)
     res = eng.run("path", samples=1024, seed=3, rel_error=0.01, choose_first_batch=True)
     assert eng.rr_pilot["threshold"] == pytest.approx(0.01, rel=1e-6), eng.rr_pilot["tried"]
-    assert eng.batch_plans["path"]["first_batch"] == PILOT_MIN_BATCH
-    assert res.target_met.all() and res.samples.max() <= 2 * PILOT_MIN_BATCH
+    plan = eng.batch_plans["path"]
+    need = 1.96**2 * eng.rr_pilot["relvar"] / 0.01**2
+    assert plan["first_batch"] == pilot_floor(need[np.isfinite(need)], plan["pilot_samples"]) < PILOT_MIN_BATCH, plan
+    assert res.target_met.all() and res.samples.max() <= plan["first_batch"] + BLOCK
+
+
+def test_integrating_sphere_grid_draws_at_most_1_3x_its_slowest_sensors_need():
+    """The bundled grid of 256 sensors in the integrating sphere, adaptive
+    to 1% at the config's seed: the pilot's sensors need 0.9 samples
+    (median) to 7.9, the floor is 6, and the run draws at most 1.3× per
+    sensor what its slowest sensor needs (8.1 per sensor against 6.0 with
+    the fixed floor of 8)."""
+    cfg = apply_overrides(load_config(default_configs_dir() / "integrating_sphere_grid.toml"), rel_error=0.01)
+    from simulator.pipeline import collect_sensors, load_scene
+
+    scene = load_scene(cfg)
+    sensors = collect_sensors(cfg, scene)
+    eng = Engine(scene, sensors)
+    res = eng.run("path", samples=cfg.simulation.samples, seed=cfg.simulation.seed, rel_error=0.01,
+                  choose_first_batch=cfg.simulation.choose_first_batch)  # fmt: skip
+    plan = eng.batch_plans["path"]
+    assert plan["chosen_by"] == "pilot" and plan["first_batch"] < PILOT_MIN_BATCH, plan
+    assert res.target_met.all()
+    assert res.samples.sum() / len(sensors) <= 1.3 * plan["needed_max"], (res.samples.sum(), plan)
     res = eng.run("path", samples=1024, seed=3, rel_error=0.01)  # samples given: the floor
     assert eng.batch_plans["path"] == {**eng.batch_plans["path"], "first_batch": 1024, "chosen_by": "samples"}
     assert res.samples.min() == 1024

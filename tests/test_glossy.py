@@ -116,6 +116,37 @@ def test_perfect_mirror_under_a_point_light_adds_its_image(tmp_path):
     assert abs(res.mean[0, 1] - truth) <= 2e-6 * truth, (res.mean[0, 1], truth)
 
 
+def _wall_mirror(name: str, x: float) -> str:
+    """A vertical square mirror in the plane x = const, bound to /Mirror."""
+    return f"""
+def Mesh "{name}"
+{{
+    int[] faceVertexCounts = [4]
+    int[] faceVertexIndices = [0, 1, 2, 3]
+    point3f[] points = [({x}, -1, 0.5), ({x}, 1, 0.5), ({x}, 1, 2.5), ({x}, -1, 2.5)]
+    rel material:binding = </Mirror>
+}}
+"""
+
+
+def test_light_off_two_mirrors_is_named_not_silently_dropped(tmp_path):
+    """The image-source connection reads a delta light one reflection deep. Two mirror planes facing
+    each other (a floor mirror and a wall mirror) under a point light: the light reflected by both in
+    turn is missing from every reading, so the summary names it; one mirror plane, or an area light
+    (found through any number of mirrors by the paths' reflections), gives no such line."""
+    mirror = material("Mirror", "float inputs:roughness = 0\n        float inputs:metallic = 1", rho=1.0)
+    one = load_stage(stage(tmp_path, mirror + quad("Floor", 0.0, "Mirror", half=5) + POINT, "one.usda"))
+    assert not any("two mirrors" in w for w in one.warnings), one.warnings
+    two = load_stage(stage(tmp_path, mirror + quad("Floor", 0.0, "Mirror", half=5) + _wall_mirror("Wall", 1.5)
+                           + POINT, "two.usda"))
+    said = [w for w in two.warnings if "two mirrors" in w]
+    assert len(said) == 1 and "/Lamp" in said[0] and "2 mirror planes" in said[0], two.warnings
+    area = POINT.replace("bool treatAsPoint = 1", "bool treatAsPoint = 0")
+    lit = load_stage(stage(tmp_path, mirror + quad("Floor", 0.0, "Mirror", half=5) + _wall_mirror("Wall", 1.5)
+                           + area, "area.usda"))
+    assert not any("two mirrors" in w for w in lit.warnings), lit.warnings
+
+
 def test_office_window_variants():
     """stages/office.usda: ``window = open`` (the default) is all matte, as office_bench's stored
     reference reads it; ``glazed`` adds one clear pane in the opening and a semi-gloss floor."""

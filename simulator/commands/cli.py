@@ -12,6 +12,7 @@ import sys
 import time
 
 from simulator import __version__
+from simulator.commands.startup import lean_start, resume_collections
 from simulator.engine.methods import METHODS
 from simulator.errors import UserError
 
@@ -204,8 +205,13 @@ def _cmd_run(args) -> int:
     t0 = time.perf_counter()
     bar = ProgressBar("tracing")
     note = (lambda m: print(m, file=sys.stderr))
+
+    def progress(p) -> None:
+        resume_collections()  # tracing has begun: every module it needs is loaded
+        bar(p)
+
     try:
-        out = run(cfg, progress=bar, log=note)
+        out = run(cfg, progress=progress, log=note)
     finally:
         bar.close()
     wall = time.perf_counter() - t0
@@ -243,6 +249,8 @@ def _cmd_run(args) -> int:
 
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    # a short command given on the process's own command line (argv None): start it lean
+    lean = argv is None and args.command in ("run", "plan") and lean_start()
     try:
         if args.command == "run":
             return _cmd_run(args)
@@ -275,6 +283,9 @@ def main(argv: list[str] | None = None) -> int:
         # quietly, and keep Python from complaining while flushing stdout at exit
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
+    finally:
+        if lean:
+            resume_collections()
     return 1
 
 

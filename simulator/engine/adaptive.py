@@ -37,19 +37,60 @@ import numpy as np
 from simulator.engine.stats import z_for_confidence
 from simulator.interrupts import StopFlag, sigint_deferred
 
-__all__ = ["StoppingRule", "run_batches", "first_batch_from_pilot", "PILOT_MIN_BATCH"]
+__all__ = ["StoppingRule", "run_batches", "first_batch_from_pilot", "pilot_floor", "PILOT_MIN_BATCH", "PILOT_LOW_BATCH"]
 
 #: fewest samples per sensor in a first batch the engine chooses (a variance
-#: from fewer is too rough for the rule to size the next batch by)
+#: from fewer is too rough for the rule to size the next batch by), unless the
+#: pilot shows that nearly every sensor needs fewer (:func:`pilot_floor`)
 PILOT_MIN_BATCH = 8
+#: the least that floor is lowered to: each sensor's own variance then has
+#: 3 degrees of freedom
+PILOT_LOW_BATCH = 4
+#: the share of the pilot's sensors whose need the lowered floor covers (the
+#: rest take a second batch sized by their own variance)
+PILOT_FLOOR_QUANTILE = 0.9
 #: the chosen first batch is this share of the pilot's median need: most
 #: sensors then take a second batch sized by their own variance (×1.1), and
 #: few overshoot their need by much in the first
 PILOT_NEED_SHARE = 0.5
 
 
+def pilot_floor(need: np.ndarray, pilot_samples: int, lower: int = PILOT_MIN_BATCH) -> int:
+    """The fewest samples of a first batch the engine chooses, from the pilot sensors' needs.
+
+    Parameters
+    ----------
+    need : ndarray, shape (P,)
+        Samples each pilot sensor needs, z²·relvar/rel² (finite).
+    pilot_samples : int
+        Samples per pilot sensor the needs were estimated from (m).
+    lower : int
+        The floor where the pilot cannot lower it.
+
+    Returns
+    -------
+    int
+        ``clip(⌈q₀.₉·(1 + √(2/(m − 1)))⌉, PILOT_LOW_BATCH, lower)``, q₀.₉ the
+        90th percentile of ``need``.
+
+    Notes
+    -----
+    A need estimated from m samples has the error of the variance it comes
+    from: relative standard error √(2/(m − 1)) for normal samples (the
+    variance of s² is 2σ⁴/(m − 1)), 53% at m = 8. The 90th percentile of the
+    pilot's needs raised by that one standard error is the batch most sensors
+    meet the target in; below ``lower`` the floor follows it, so a run whose
+    sensors need 2–6 samples does not draw 8 each.
+    """
+    need = np.asarray(need, np.float64)
+    if need.size == 0 or pilot_samples < 2:
+        return int(lower)
+    q = float(np.quantile(need, PILOT_FLOOR_QUANTILE)) * (1.0 + np.sqrt(2.0 / (pilot_samples - 1)))
+    return int(min(lower, max(PILOT_LOW_BATCH, int(np.ceil(q)))))
+
+
 def first_batch_from_pilot(relvar: np.ndarray, z: float, rel_error: float, upper: int,
-                           lower: int = PILOT_MIN_BATCH) -> int:
+                           lower: int = PILOT_MIN_BATCH, pilot_samples: int | None = None) -> int:
     """An adaptive run's first batch per sensor from a pilot's variances.
 
     Parameters
@@ -62,12 +103,15 @@ def first_batch_from_pilot(relvar: np.ndarray, z: float, rel_error: float, upper
     rel_error : float
         The relative half-width target.
     upper, lower : int
-        Bounds of the batch (``upper``: the config's default ``samples``).
+        Bounds of the batch (``upper``: the config's default ``samples``;
+        ``lower``: the floor where the pilot cannot lower it).
+    pilot_samples : int, optional
+        Samples per pilot sensor; given, the floor is :func:`pilot_floor`'s.
 
     Returns
     -------
     int
-        ``clip(⌈PILOT_NEED_SHARE·median(z²·relvar/rel_error²)⌉, lower,
+        ``clip(⌈PILOT_NEED_SHARE·median(z²·relvar/rel_error²)⌉, floor,
         upper)``; ``upper`` where no pilot sensor read anything (nothing to
         size a batch by).
     """
@@ -76,8 +120,9 @@ def first_batch_from_pilot(relvar: np.ndarray, z: float, rel_error: float, upper
     upper = max(1, int(upper))
     if rv.size == 0:
         return upper
+    floor = lower if pilot_samples is None else pilot_floor(z * z * rv / rel_error**2, pilot_samples, lower)
     need = z * z * float(np.median(rv)) / rel_error**2
-    return int(min(upper, max(min(lower, upper), int(np.ceil(PILOT_NEED_SHARE * need)))))
+    return int(min(upper, max(min(floor, upper), int(np.ceil(PILOT_NEED_SHARE * need)))))
 
 
 class StoppingRule:

@@ -238,6 +238,8 @@ class DeviceScene:
             r.roughness, r.metallic = float(s.roughness), float(s.metallic)
             r.specular, r.workflow = float(s.specular_grey), 1 if s.use_specular_workflow else 0
             r.coat, r.coat_roughness = float(s.clearcoat), float(s.clearcoat_roughness)
+            r.textured = 1 if s.opacity_texture >= 0 and g.texture_id is not None else 0
+            r.threshold = float(s.opacity_threshold) if r.textured else 0.0
             rows.append(r)
         if modelled:
             sid = np.ascontiguousarray(g.surface_id, np.int32)
@@ -258,6 +260,34 @@ class DeviceScene:
                                      dtype=wp.vec4)
         rec.face_mirror = wp.array(face_plane.astype(np.int32), dtype=wp.int32)
         self._keep += [rec.surf_id, rec.surf_side, rec.surf, rec.mirror_planes, rec.face_mirror]
+        self._upload_textures(wp, rec, g if modelled else None)
+
+    def _upload_textures(self, wp, rec, g) -> None:
+        """The opacity textures read per texel (:mod:`simulator.kernels.coverage`) on ``rec``: one
+        placeholder each where none (no row is then textured, so the kernels never read them)."""
+        from simulator.kernels.surface_rec import TexRec
+        from simulator.scene.surfaces import WRAP_MODES
+
+        wraps = {w: k for k, w in enumerate(WRAP_MODES)}
+        if g is None or g.texture_id is None:
+            ids, uv, recs, texels = np.full(1, -1, np.int32), np.zeros((3, 2), np.float32), [TexRec()], np.zeros(1)
+        else:
+            ids = np.ascontiguousarray(g.texture_id, np.int32)
+            uv = np.ascontiguousarray(g.texture_uv.reshape(-1, 2), np.float32)
+            recs, chunks, offset = [], [], 0
+            for t in g.coverage_textures:
+                r = TexRec()
+                r.offset, (r.h, r.w) = offset, t.opacity.shape
+                r.wrap_s, r.wrap_t, r.border = wraps[t.wrap[0]], wraps[t.wrap[1]], float(t.border)
+                recs.append(r)
+                chunks.append(t.opacity.reshape(-1))
+                offset += t.opacity.size
+            texels = np.concatenate(chunks)
+        rec.tex_id = wp.array(ids, dtype=wp.int32)
+        rec.tex_uv = wp.array(uv, dtype=wp.vec2)
+        rec.tex = wp.array(recs, dtype=TexRec)
+        rec.texels = wp.array(np.ascontiguousarray(texels, np.float32), dtype=float)
+        self._keep += [rec.tex_id, rec.tex_uv, rec.tex, rec.texels]
 
     def _upload_pieces(self, wp, rec, pieces, piece_of: np.ndarray) -> None:
         """The emitter pieces' records (one placeholder piece where none emit)."""
@@ -314,6 +344,11 @@ class DeviceScene:
         rec.response_weights = wp.array2d(weights, dtype=float)
         rec.response_lanes = wp.zeros(1, dtype=wp.vec4)
         rec.colour_weights = wp.array2d(colour, dtype=float)
+        rows = np.zeros((0, 3), np.int32) if tables is None else np.asarray(tables.surface_spectral, np.int32).reshape(-1, 3)
+        rec.spectral_panes = int(np.any(rows[:, 2] >= 0)) if len(rows) else 0
+        if not len(rows):
+            rows = np.array([[0, -1, -1]], np.int32)
+        rec.spectral_surface = wp.array(np.ascontiguousarray(rows), dtype=wp.vec3i)
         self.n_responses = 0 if tables is None else int(weights.shape[0])
 
     def set_hero_tables(self, tables) -> None:

@@ -236,6 +236,7 @@ class Engine:
         self.light_pick = "auto"
         #: Russian roulette threshold of path throughput; None: methods.rr_threshold_rule
         self.rr_threshold: float | None = None
+        self._rr_rule_t: float | None = None  # methods.rr_threshold_rule's, once asked (_rr_rule)
         self._pick_key: tuple | None = None
         #: the roulette pilot's findings per (method, depth, component, sensors, target):
         #: {"threshold", "rule", "tried": [(t, relvar_mean, relvar_max, rays)], "seconds"}
@@ -352,9 +353,9 @@ class Engine:
         p.n_groups = 0
         p.group_batch = 0
         p.group_state = self._no_groups
-        # the surface guide's one-sample MIS assumes cosine-sampled segments, which a mirror reflection
-        # off a pane bends: stages with panes or cut-outs trace plain paths (docs/DESIGN.md §Surfaces)
-        guided = method in GUIDED_METHODS and not self.scene.geometry.has_surfaces
+        # panes and cut-outs on a guided segment pass light at their transmittance, glossy vertices mix the
+        # guide with their lobes, and mirror vertices never use it (docs/DESIGN.md §Surface guide)
+        guided = method in GUIDED_METHODS
         p.guide_c = G.GUIDE_C if guided else 0.0
         p.guide_first = G.GUIDE_FIRST
         p.guide_depth = G.GUIDE_DEPTH
@@ -363,8 +364,15 @@ class Engine:
         p.pick_light = 0
         p.tally_pick = 0
         p.split_indirect = 0
-        p.rr_threshold = float(self.rr_threshold if self.rr_threshold is not None else rr_threshold_rule(self.scene)[0])
+        p.rr_threshold = float(self.rr_threshold if self.rr_threshold is not None else self._rr_rule())
         return p
+
+    def _rr_rule(self) -> float:
+        """The rule's roulette threshold (``methods.rr_threshold_rule``), found once per engine: it sums
+        every triangle's area, and each run asks for it twice."""
+        if self._rr_rule_t is None:
+            self._rr_rule_t = rr_threshold_rule(self.scene)[0]
+        return self._rr_rule_t
 
     def ensure_guide(self, seed: int, sensor_ids: np.ndarray | None = None, max_depth: int = -1):
         """Build the surface guide from a pilot over ``sensor_ids`` (default
@@ -561,7 +569,7 @@ class Engine:
         readings unbiased, the pilot only picks the cheaper one. Done once
         per (method, depth, component, sensors, target); with
         ``rr_threshold`` set the pilot does not run."""
-        t_rule = rr_threshold_rule(self.scene)[0]
+        t_rule = self._rr_rule()
         key = (method, max_depth, component, ids.tobytes(), first_batch, rel_error)
         if key not in self._rr_found:
             tb = time.perf_counter()
@@ -617,19 +625,19 @@ class Engine:
         roulette pilot's size, the run's settings, streams of its own,
         discarded). Returns the plan for the run record."""
         tb = time.perf_counter()
+        pick, count = self._pilot_pick(ids)  # the roulette pilot's sensors and samples too
         if rr_ran:
             rv = self.rr_pilot["relvar"]
         else:
-            pick, count = self._pilot_pick(ids)
             kept = params.seed
             params.seed = (int(params.seed) + 0x1B873593) & 0x7FFFFFFF
             try:
                 rv, _ = self._pilot_relvar(params, pick, count)
             finally:
                 params.seed = kept
-        first = first_batch_from_pilot(rv, z, rel_error, upper)
+        first = first_batch_from_pilot(rv, z, rel_error, upper, pilot_samples=int(count.min()))
         finite = rv[np.isfinite(rv)]
-        return {"first_batch": first, "chosen_by": "pilot", "upper": int(upper),
+        return {"first_batch": first, "chosen_by": "pilot", "upper": int(upper), "pilot_samples": int(count.min()),
                 "pilot_relvar_median": float(np.median(finite)) if finite.size else None,
                 "pilot_relvar_max": float(finite.max()) if finite.size else None,
                 "seconds": time.perf_counter() - tb}

@@ -145,7 +145,9 @@ def clip_polygons(V: np.ndarray, count: np.ndarray, s: np.ndarray) -> tuple[np.n
 
 
 def _rings_of(geoms: np.ndarray, owners: np.ndarray):
-    """Flatten polygons to rings: (list of (k, 2) coordinate arrays, owner per ring, sign per ring)."""
+    """Flatten polygons to rings: ``(xy, counts, owner, sign)``, the rings' vertices one after another
+    (each ring's closing point dropped; rings of fewer than 3 left out), shape (M, 2), the vertex
+    count, owner and sign (+1 exterior, −1 hole) of each ring."""
     import shapely
 
     parts, part_idx = shapely.get_parts(geoms, return_index=True)
@@ -165,19 +167,25 @@ def _rings_of(geoms: np.ndarray, owners: np.ndarray):
     owner = np.concatenate(owner)
     sign = np.concatenate(sign)
     xy, ring_id = shapely.get_coordinates(rings, return_index=True)
-    cuts = np.flatnonzero(np.diff(ring_id)) + 1
-    coords = [c[:-1] for c in np.split(xy, cuts)] if len(xy) else []  # drop each ring's closing point
-    ok = np.array([len(c) >= 3 for c in coords], bool) if coords else np.zeros(0, bool)
-    present = np.unique(ring_id) if len(xy) else np.zeros(0, np.int64)
-    owner, sign = owner[present][ok], sign[present][ok]
-    return [c for c, k in zip(coords, ok) if k], owner, sign
+    if not len(xy):
+        return np.zeros((0, 2)), np.zeros(0, np.int64), owner[:0], sign[:0]
+    present, counts = np.unique(ring_id, return_counts=True)  # ring_id is sorted: rings in order
+    counts = counts - 1  # the closing point
+    closing = np.cumsum(counts + 1) - 1
+    keep_pt = np.ones(len(xy), bool)
+    keep_pt[closing] = False
+    ok = counts >= 3
+    keep_pt &= np.repeat(ok, counts + 1)
+    return xy[keep_pt], counts[ok], owner[present][ok], sign[present][ok]
 
 
 def lambert_rings(rings: list[np.ndarray], receivers: np.ndarray, P: np.ndarray, N: np.ndarray) -> np.ndarray:
     """Cosine-weighted solid angle ∫ cos θ dω of each ring (a simple planar polygon).
 
     Vectorised Lambert contour sums; rings that dip below a receiver's horizon
-    are clipped to its hemisphere one by one.
+    are clipped to its hemisphere, all together (:func:`_lambert_clipped`,
+    the bits of :func:`_clip_convex_or_not` and :func:`_lambert_one` one ring
+    at a time).
 
     Parameters
     ----------
@@ -199,12 +207,17 @@ def lambert_rings(rings: list[np.ndarray], receivers: np.ndarray, P: np.ndarray,
     γ_i = ∠(u_i, u_{i+1}) and û_i = normalize(u_i × u_{i+1}), the integral is
     |Σ_i γ_i · n·û_i| / 2 (Lambert; Arvo 1995).
     """
-    R = len(rings)
+    if len(rings) == 0:
+        return np.zeros(0)
+    return _lambert_flat(np.concatenate(rings), np.array([len(r) for r in rings]), receivers, P, N)
+
+
+def _lambert_flat(V: np.ndarray, counts: np.ndarray, receivers: np.ndarray, P: np.ndarray, N: np.ndarray) -> np.ndarray:
+    """:func:`lambert_rings` of rings given one after another: ``V`` (M, 3), ``counts`` (R,) vertices each."""
+    R = len(counts)
     out = np.zeros(R)
     if R == 0:
         return out
-    counts = np.array([len(r) for r in rings])
-    V = np.concatenate(rings)
     ring_of = np.repeat(np.arange(R), counts)
     start = np.concatenate([[0], np.cumsum(counts)[:-1]])
     nxt = np.arange(len(V)) + 1
@@ -224,10 +237,75 @@ def lambert_rings(rings: list[np.ndarray], receivers: np.ndarray, P: np.ndarray,
     proj = np.einsum("ij,ij->i", c, N[rec]) / np.where(sin_g > 0.0, sin_g, 1.0)
     term = np.where((sin_g > 0.0) & (r > 0.0) & (r[nxt] > 0.0), gamma * proj, 0.0)
     out = 0.5 * np.abs(np.add.reduceat(term, start))
-    for i in np.nonzero(bad)[0]:  # crosses the horizon: clip to the hemisphere (rare for ceiling lights)
-        k = receivers[i]
-        v = rings[i] - P[k]
-        out[i] = _lambert_one(_clip_convex_or_not(v, v @ N[k]), N[k])
+    crossing = np.flatnonzero(bad)  # crosses the horizon: clip to the hemisphere (rare for ceiling lights)
+    if len(crossing):
+        out[crossing] = _lambert_clipped(V, start, counts, receivers, crossing, P, N)
+    return out
+
+
+def _lambert_clipped(V, start, counts, receivers, which, P, N) -> np.ndarray:
+    """:func:`_lambert_one` of :func:`_clip_convex_or_not` of each ring in ``which`` (relative to its
+    receiver, clipped to its hemisphere), for all of them at once: the same operations on each ring,
+    stacked (row-wise norms, cross products and dot products, one stacked ``matmul`` per ring for
+    ``c @ n`` and each ring's sum by ``np.add.reduceat``), checked bit for bit against the loop."""
+    k = counts[which]
+    idx = np.repeat(start[which], k) + (np.arange(int(k.sum())) - np.repeat(np.cumsum(k) - k, k))
+    rec = np.repeat(receivers[which], k)
+    v = V[idx] - P[rec]
+    ring = np.repeat(np.arange(len(which)), k)
+    first = np.cumsum(k) - k
+    sv = _ring_dot(v, ring, first, k, N[receivers[which]])  # v @ n, as the loop's matrix-vector product
+    prev = np.arange(len(v)) - 1
+    prev[first] = first + k - 1
+    # Sutherland–Hodgman, keeping s ≥ 0: per edge (prev → this), its crossing, then its end if kept
+    a, sa, b, sb = v[prev], sv[prev], v, sv
+    cross = (sa >= 0.0) != (sb >= 0.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        q = a + (b - a) * np.where(cross, sa / (sa - sb), 0.0)[:, None]
+    pts = np.stack([q, b], axis=1).reshape(-1, 3)
+    keep = np.stack([cross, sb >= 0.0], axis=1).reshape(-1)
+    owner = np.repeat(ring, 2)[keep]
+    c_pts = pts[keep]
+    # _lambert_one: drop vertices at the receiver, then rings of fewer than 3
+    c_pts, owner = c_pts[np.linalg.norm(c_pts, axis=1) > 0.0], owner[np.linalg.norm(c_pts, axis=1) > 0.0]
+    n_of = np.bincount(owner, minlength=len(which))
+    live = n_of[owner] >= 3
+    c_pts, owner = c_pts[live], owner[live]
+    out = np.zeros(len(which))
+    if not len(c_pts):
+        return out
+    present, n_k = np.unique(owner, return_counts=True)
+    s0 = np.cumsum(n_k) - n_k
+    nxt = np.arange(len(c_pts)) + 1
+    nxt[s0 + n_k - 1] = s0
+    u = c_pts / np.linalg.norm(c_pts, axis=1)[:, None]
+    w = u[nxt]
+    c = np.cross(u, w)
+    sin_g = np.linalg.norm(c, axis=1)
+    gamma = np.arctan2(sin_g, np.sum(u * w, axis=1))
+    cn = _ring_dot(c, np.repeat(np.arange(len(present)), n_k), s0, n_k, N[receivers[which][present]])
+    proj = np.where(sin_g > 0.0, cn / np.where(sin_g > 0.0, sin_g, 1.0), 0.0)
+    out[present] = 0.5 * np.abs(_ring_sum(gamma * proj, s0, n_k))
+    return out
+
+
+def _ring_dot(x: np.ndarray, ring: np.ndarray, first: np.ndarray, k: np.ndarray, n: np.ndarray) -> np.ndarray:
+    """``x[ring r] @ n[r]`` for every ring at once, through a stacked ``matmul`` over rings padded
+    with zeros: per ring the bits of its own matrix-vector product (a product per row does not
+    always give them)."""
+    pad = np.zeros((len(k), int(k.max()), 3))
+    pos = np.arange(len(x)) - first[ring]
+    pad[ring, pos] = x
+    return (pad @ n[:, :, None])[ring, pos, 0]
+
+
+def _ring_sum(x: np.ndarray, first: np.ndarray, k: np.ndarray) -> np.ndarray:
+    """``np.sum`` of each ring's run of ``x``, rings of one length together (numpy sums a row of n
+    pairwise, as it does an array of n; ``np.add.reduceat`` sums in order, other bits)."""
+    out = np.zeros(len(k))
+    for n in np.unique(k):  # a few lengths, not one call per ring
+        rows = np.flatnonzero(k == n)
+        out[rows] = x[first[rows][:, None] + np.arange(n)].sum(axis=1)
     return out
 
 
@@ -322,16 +400,35 @@ def visible_polygon_irradiance(radiance, light, tris, P, N, one_sided_normal=Non
     hit, si = hit[order], si[order]
     cuts = np.flatnonzero(np.diff(si)) + 1
     owners = si[np.r_[0, cuts]]
-    hidden = np.array([g[0] if len(g) == 1 else shapely.union_all(g) for g in np.split(hit, cuts)], dtype=object)
+    hidden = _union_per_receiver(hit, np.r_[0, cuts])
     visible = shapely.difference(luv, hidden)
-    rings, ring_owner, ring_sign = _rings_of(visible, owners)
+    xy, counts, ring_owner, ring_sign = _rings_of(visible, owners)
     rec = ids[owners]
     e[rec] = 0.0  # recomputed from the visible part: a wholly hidden lamp reads exactly 0
-    if rings:
-        r3 = [c + r[:, :1] * e1 + r[:, 1:] * e2 for r in rings]
-        vis = lambert_rings(r3, ids[ring_owner], P, N) * ring_sign
+    if len(counts):
+        r3 = c + xy[:, :1] * e1 + xy[:, 1:] * e2  # back to 3-D, on the light's plane
+        vis = _lambert_flat(r3, counts, ids[ring_owner], P, N) * ring_sign
         np.add.at(e, ids[ring_owner], vis)
     return _finish(e, radiance, single)
+
+
+def _union_per_receiver(shadows: np.ndarray, starts: np.ndarray) -> np.ndarray:
+    """The union of each receiver's shadows (``shadows[starts[k]:starts[k + 1]]``), one geometry per
+    receiver: a lone shadow as it is, several by one GEOS unary union per receiver, all in one call
+    (``union_all`` along the rows of a table padded with None, which it leaves out: the same
+    collection, hence the same union, as a call per receiver)."""
+    import shapely
+
+    sizes = np.diff(np.r_[starts, len(shadows)])
+    out = shadows[starts].copy()
+    many = np.flatnonzero(sizes > 1)
+    if len(many):
+        table = np.full((len(many), int(sizes[many].max())), None, dtype=object)
+        row = np.repeat(np.arange(len(many)), sizes[many])
+        col = np.arange(len(row)) - np.repeat(np.cumsum(sizes[many]) - sizes[many], sizes[many])
+        table[row, col] = shadows[np.repeat(sizes > 1, sizes)]
+        out[many] = shapely.union_all(table, axis=1)
+    return out
 
 
 def _finish(e: np.ndarray, radiance, single: bool):
@@ -387,9 +484,12 @@ def exact_direct(scene, sensors, sensor_ids: np.ndarray, light_mask: np.ndarray 
         return out
     P = np.array([sensors[i].position for i in ids], float)
     N = np.array([sensors[i].normal for i in ids], float)
+    from simulator.engine import exact_memo
+
     g = scene.geometry
     tris_all = g.points[g.triangles] if g.n_triangles else np.zeros((0, 3, 3))
     scale = max(1.0, float(np.abs(tris_all).max()) if len(tris_all) else 1.0)
+    scene_key = exact_memo.digest(tris_all, [scale, PLANE_SLACK])  # the factors below depend on the lights, receivers and this
     for j, light in enumerate(scene.lights):
         on = np.ones(len(ids), bool) if light_mask is None else light_mask[ids, j] != 0
         if not on.any():
@@ -405,6 +505,8 @@ def exact_direct(scene, sensors, sensor_ids: np.ndarray, light_mask: np.ndarray 
         step = max(1, _CHUNK_PAIRS // max(len(tris), 1))
         for a in range(0, len(k), step):
             sel = k[a : a + step]
-            e = visible_polygon_irradiance(1.0, V, tris, P[sel], N[sel], one_sided_normal=-ez, length_scale_m=scale)
+            key = scene_key + exact_memo.digest(V, ez, light.position, P[sel], N[sel])
+            e = exact_memo.factor(key, lambda: visible_polygon_irradiance(1.0, V, tris, P[sel], N[sel], one_sided_normal=-ez,
+                                                                          length_scale_m=scale))  # fmt: skip
             out[ids[sel]] += e[:, None] * np.asarray(light.emission, float)[None, :]
     return out

@@ -9,12 +9,11 @@ map costs a quick run little.
 
 from __future__ import annotations
 
-import io
 import math
 
 import numpy as np
 
-__all__ = ["nice_ticks", "colour_map", "map_png"]
+__all__ = ["nice_ticks", "colour_map", "map_png", "png_bytes"]
 
 #: the viridis colour map at 0, 1/8, …, 1 (sRGB, 0–255), interpolated linearly between
 VIRIDIS_9 = np.array([
@@ -133,9 +132,35 @@ def map_png(values: np.ndarray, extent_m: tuple[float, float], title_lines: list
     # title
     for k, line in enumerate(title_lines):
         draw.text((W / 2, 8 + k * (FONT_PX + 4)), line, fill=black, font=font, anchor="mt")
-    buf = io.BytesIO()
-    img.save(buf, format="PNG")
-    return buf.getvalue()
+    return png_bytes(np.asarray(img))
+
+
+def png_bytes(rgb: np.ndarray, level: int = 3) -> bytes:
+    """An 8-bit RGB PNG of ``rgb`` (H, W, 3) uint8: one IDAT of unfiltered rows (filter type 0 on
+    every row), deflated at zlib ``level``.
+
+    Pillow's writer chooses a filter per row and deflates at level 6, ~7 ms for a 640 × 480 map;
+    this, ~1.5 ms, for a file about 1.4× the size (a map is mostly flat colour).
+
+    Layout (PNG specification, 2nd edition): the 8-byte signature, then chunks of
+    ``length (4 bytes, big-endian) | type | data | CRC-32 of type and data``: IHDR (width,
+    height, bit depth 8, colour type 2 = RGB, compression 0, filter 0, interlace 0), IDAT (the
+    zlib stream of each row prefixed by its filter byte), IEND.
+    """
+    import struct
+    import zlib
+
+    rgb = np.ascontiguousarray(rgb, np.uint8)
+    h, w = rgb.shape[:2]
+    rows = np.zeros((h, 1 + 3 * w), np.uint8)
+    rows[:, 1:] = rgb.reshape(h, 3 * w)
+
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+
+    header = struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(rows.tobytes(), level))
+            + chunk(b"IEND", b""))
 
 
 def _vertical_text(img, text: str, font, centre: tuple[float, float]) -> None:

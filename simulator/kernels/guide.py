@@ -10,6 +10,7 @@ from .lights import SceneRec, tri_vertex
 from .rays import first_hit, offset_length
 from .records import TraceParams
 from .sampling import INV_PI, sample_triangle_bary
+from .surfaces import pass_factor, transmittance_along
 
 
 # ---------------------------------------------------------------- surface guide
@@ -181,7 +182,39 @@ class GuideStep:
     y: wp.vec3  # the next vertex
     n: wp.vec3  # its normal, facing the previous vertex
     face: int  # its triangle; −1: the strategy gave nothing (the path ends)
-    factor: float  # p_cos,A / p_mix at y (see mixture_factor)
+    factor: float  # p_cos,A / p_mix at y (see mixture_factor), × share
+    wi: wp.vec3  # unit direction from the vertex toward y
+    jac: float  # cosθy / r² (m⁻²): a solid-angle pdf times it is the area pdf at y
+    density: float  # the guide's area pdf P_j/A_j at y (m⁻²)
+    share: float  # what the segment passes and y scatters: T(x → y)·s(y) (1 on matte stages)
+
+
+@wp.func
+def scatter_share(scene: SceneRec, face: int, d: wp.vec3, ng: wp.vec3, p: wp.vec3) -> float:
+    """The probability that a path ray along ``d`` meeting ``face`` at p scatters
+    there (the SCATTER event of :func:`.surfaces.surface_event`): 1 on a
+    matte face, 1 − (what passes) = the coverage c on a cut-out (its
+    texture's at p where one drives it), 0 on a pane (a pane reflects,
+    passes or absorbs, it never scatters diffusely)."""
+    sid = scene.surf_id[face]
+    if sid < 0:
+        return 1.0
+    if scene.surf[sid].pane != 0:
+        return 0.0
+    return 1.0 - pass_factor(scene, face, d, ng, p)
+
+
+@wp.func
+def glossy_mixture_factor(c: float, pdf_guide_area: float, pdf_dir_area: float) -> float:
+    """p_dir,A / (p_dir,A + c·p_guide,A) at a glossy vertex, where p_dir,A
+    (the density of its lobe sampling, chosen with probability 1 − c,
+    already times 1 − c) and the guide's p_guide,A are both area densities
+    at y: what a next vertex drawn by the lobes takes besides f·cosθ/p_dir
+    (one-sample MIS, balance heuristic; 1 for c = 0)."""
+    den = pdf_dir_area + c * pdf_guide_area
+    if den <= 0.0:
+        return 0.0
+    return pdf_dir_area / den
 
 
 @wp.func
@@ -189,7 +222,17 @@ def guided_step(scene: SceneRec, row: int, o: wp.vec3, n: wp.vec3, c: float, u: 
     """The guide strategy at a vertex with ray origin o and normal n: a point
     y from :func:`sample_guide`, kept when it faces o, o sees its side, and
     the segment o → y first meets y's triangle (within the ray offset of y:
-    a coplanar neighbour met at y by rounding does not block it)."""
+    a coplanar neighbour met at y by rounding does not block it).
+
+    On a stage with panes or cut-outs (``scene.surfaces``) the segment is not
+    blocked by what passes light: it takes the share T(x → y)·s(y), T the
+    product of the pass factors on it (:func:`.surfaces.transmittance_along`,
+    as a shadow ray) and s(y) the probability that a ray meeting y's face
+    scatters there (:func:`scatter_share`). A cosine ray reaches y as a
+    scattering vertex with probability T·s and weight 1, so both strategies
+    estimate the same ∫ L·G·T·s dA; their one-sample MIS weights
+    (:func:`mixture_factor`) depend on y alone and still sum to 1, so the
+    pair stays unbiased (Veach 1997 §9.2.4 needs no more than that)."""
     g = GuideStep()
     g.face = -1
     gs = sample_guide(scene, row, u)
@@ -211,13 +254,27 @@ def guided_step(scene: SceneRec, row: int, o: wp.vec3, n: wp.vec3, c: float, u: 
     if cos_y <= 0.0:
         return g
     off = offset_length(scene, gs.y)
-    h = first_hit(scene, o, wi, dist + off)
-    if h.face >= 0 and h.face != gs.face and h.t < dist - off:
-        return g
+    share = float(1.0)
+    if scene.surfaces != 0:
+        share = scatter_share(scene, gs.face, wi, ng, gs.y)
+        if share > 0.0 and dist > off:
+            share = share * transmittance_along(scene, o, wi, dist - off, -1)
+        if share <= 0.0:
+            return g
+    else:
+        h = first_hit(scene, o, wi, dist + off)
+        if h.face >= 0 and h.face != gs.face and h.t < dist - off:
+            return g
     g.y = gs.y
     g.n = ng
     g.face = gs.face
     g.factor = mixture_factor(c, gs.density, cos_x * cos_y * INV_PI / (dist * dist))
+    if scene.surfaces != 0:
+        g.factor = g.factor * share
+    g.wi = wi
+    g.jac = cos_y / (dist * dist)
+    g.density = gs.density
+    g.share = share
     return g
 
 

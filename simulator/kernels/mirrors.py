@@ -39,6 +39,15 @@ _DISTANT_M = wp.constant(int(LightKind.DISTANT))
 class ImageSample:
     wi: wp.vec3  # unit direction from the receiver toward the image (and the mirror)
     value: wp.vec2  # irradiance on the receiver's plane (W/m², lx), 0 when the connection fails
+    # for spectral lanes (kernels.spectral_surfaces): the mirror triangle, its incidence cosine and
+    # (grey) reflectance, and the segment toward the light with its (grey) visibility
+    face: int
+    cos_m: float
+    refl: float
+    m_off: wp.vec3
+    to_l: wp.vec3
+    dist_l: float
+    vis: float
 
 
 @wp.func
@@ -97,4 +106,11 @@ def image_source(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp
         e = e * shaping_factor(l, -to_l) / (dist_img * dist_img)
     out.wi = wi
     out.value = e * l.emission
+    out.face = h.face
+    out.cos_m = cos_m
+    out.refl = refl
+    out.m_off = m_off
+    out.to_l = to_l
+    out.dist_l = dist_l
+    out.vis = vis
     return out

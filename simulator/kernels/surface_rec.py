@@ -1,6 +1,7 @@
 """The device record of one surface beyond Lambert (a row of ``Geometry.surfaces``).
 
-Kept apart from :mod:`.surfaces` (the functions that read it) so that
+With :class:`TexRec`, an opacity texture read per texel. Kept apart from
+:mod:`.surfaces` (the functions that read them) so that
 :class:`~simulator.kernels.lights.base.SceneRec` can hold a table of them
 without importing the ray code.
 """
@@ -22,3 +23,21 @@ class SurfRec:
     workflow: int  # 1: specular workflow
     coat: float
     coat_roughness: float
+    # per-texel coverage (kernels.coverage): textured 1 reads the face's opacity texture at the hit
+    # (scene.tex_id[face] ≥ 0; else ``coverage``); threshold > 0: c = 1 where opacity ≥ it, else 0
+    textured: int
+    threshold: float
+
+
+@wp.struct
+class TexRec:
+    """One opacity texture (``Geometry.coverage_textures``): ``h × w`` texels of ``scene.texels`` from
+    ``offset``, row 0 at the top (t = 1); wrap codes per axis (0 black, 1 clamp, 2 repeat, 3 mirror);
+    ``border`` the value a black wrap reads outside the image."""
+
+    offset: int
+    w: int
+    h: int
+    wrap_s: int
+    wrap_t: int
+    border: float

@@ -20,6 +20,9 @@ two ways:
   importance sampling at the vertex the ray left still weighs the same two
   estimates of the same light).
 
+Where an opacity texture drives the coverage, c is read at the hit point
+(:mod:`.coverage`), so both expectations hold texel by texel.
+
 A pane passes light straight on, with no offset (a thin slab). On a closed
 pane mesh (``scene.surf_side`` ±1) the face a ray enters by takes the whole
 slab and the face it leaves by passes it (its share was summed on entry),
@@ -33,6 +36,7 @@ averaged over s and p (docs/REFERENCES.md §Thin slab).
 
 import warp as wp
 
+from .coverage import coverage_at
 from .lights import SceneRec
 from .rays import RayHit, first_hit, offset_length
 
@@ -93,17 +97,19 @@ def pane_rt(scene: SceneRec, face: int, d: wp.vec3, ng: wp.vec3) -> wp.vec2:
 
 
 @wp.func
-def pass_factor(scene: SceneRec, face: int, d: wp.vec3, ng: wp.vec3) -> float:
-    """The fraction of light along ``d`` that passes ``face``: 0 for a matte face, (1 − c) + c·T for a
-    surface of coverage c whose part that is there transmits T (0 unless it is a pane)."""
+def pass_factor(scene: SceneRec, face: int, d: wp.vec3, ng: wp.vec3, p: wp.vec3) -> float:
+    """The fraction of light along ``d`` that passes ``face`` at p: 0 for a matte face, (1 − c) + c·T for
+    a surface of coverage c (its texture's at p where one drives it, :func:`.coverage.coverage_at`)
+    whose part that is there transmits T (0 unless it is a pane)."""
     sid = scene.surf_id[face]
     if sid < 0:
         return 0.0
     s = scene.surf[sid]
+    c = coverage_at(scene, s, face, p)
     t = float(0.0)
     if s.pane != 0:
         t = pane_rt(scene, face, d, ng)[1]
-    return (1.0 - s.coverage) + s.coverage * t
+    return (1.0 - c) + c * t
 
 
 @wp.func
@@ -123,7 +129,7 @@ def transmittance_along(scene: SceneRec, o: wp.vec3, wi: wp.vec3, dist: float, t
         h = first_hit(scene, o + start * wi, wi, end - start)
         if h.face < 0 or h.face == tri:
             return f
-        f = f * pass_factor(scene, h.face, wi, h.ng)
+        f = f * pass_factor(scene, h.face, wi, h.ng, o + (start + h.t) * wi)
         if f <= 0.0:
             return 0.0
         start = start + h.t + offset_length(scene, o + (start + h.t) * wi)
@@ -133,18 +139,20 @@ def transmittance_along(scene: SceneRec, o: wp.vec3, wi: wp.vec3, dist: float, t
 
 
 @wp.func
-def surface_event(scene: SceneRec, face: int, d: wp.vec3, ng: wp.vec3, u: float) -> int:
-    """What a path ray along ``d`` does at ``face``, drawn with the uniform ``u``: :data:`SCATTER`,
-    :data:`PASS`, :data:`MIRROR` or :data:`ABSORB` (module docstring); a matte face scatters."""
+def surface_event(scene: SceneRec, face: int, d: wp.vec3, ng: wp.vec3, p: wp.vec3, u: float) -> int:
+    """What a path ray along ``d`` does at ``face`` (hit at p), drawn with the uniform ``u``:
+    :data:`SCATTER`, :data:`PASS`, :data:`MIRROR` or :data:`ABSORB` (module docstring); a matte face
+    scatters."""
     sid = scene.surf_id[face]
     if sid < 0:
         return SCATTER
     s = scene.surf[sid]
     x = u
-    if s.coverage < 1.0:
-        if x >= s.coverage:
+    c = coverage_at(scene, s, face, p)
+    if c < 1.0:
+        if x >= c:
             return PASS
-        x = x / s.coverage  # uniform again on [0, 1)
+        x = x / c  # uniform again on [0, 1)
     if s.pane == 0:
         return SCATTER
     rt = pane_rt(scene, face, d, ng)
@@ -177,7 +185,7 @@ def pass_through(scene: SceneRec, o: wp.vec3, d: wp.vec3, first: RayHit, rng_in:
             out.hit = h
             out.rng = rng
             return out
-        ev = surface_event(scene, h.face, d, h.ng, wp.randf(rng))
+        ev = surface_event(scene, h.face, d, h.ng, o + h.t * d, wp.randf(rng))
         if ev != PASS:
             out.hit = h
             out.event = ev

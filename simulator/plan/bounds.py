@@ -41,12 +41,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["LEAF", "FANOUT", "front_of_plane", "FrontIndex"]
+__all__ = ["LEAF", "FANOUT", "SCAN_MAX_TRIANGLES", "SCAN_PAIRS", "front_of_plane", "FrontIndex"]
 
 #: triangles per leaf
 LEAF = 16
 #: children per inner node
 FANOUT = 8
+#: triangles up to which :meth:`FrontIndex.first_in_front_many` scans every triangle for every plane
+SCAN_MAX_TRIANGLES = 512
+#: planes × triangles scanned at once (memory: ~200 bytes each)
+SCAN_PAIRS = 1 << 16
 #: no triangle: the sentinel of a node's lowest index
 _NONE = np.iinfo(np.int64).max
 
@@ -162,6 +166,42 @@ class FrontIndex:
             else:
                 best = np.minimum(best, self._exact(cut, o, n))
         return {k: (int(b) if b != _NONE else -1) for k, b in zip(self.names, best)}
+
+    def first_in_front_many(self, origins: np.ndarray, normals: np.ndarray) -> np.ndarray | None:
+        """:meth:`first_in_front` of many planes at once, or None where the scene is too big for a
+        scan of every triangle per plane (more than :data:`SCAN_MAX_TRIANGLES`: the hierarchy
+        per plane is cheaper there).
+
+        Parameters
+        ----------
+        origins, normals : ndarray, shape (S, 3)
+            A point (metres) and the unit normal of each plane.
+
+        Returns
+        -------
+        ndarray of int, shape (S, K), or None
+            Per plane and subset (in ``names`` order), the lowest original
+            index of a triangle in front (:func:`front_of_plane`), −1 for none.
+
+        Notes
+        -----
+        Heights ``(v − o)·n`` are computed by the same matrix product as
+        :func:`front_of_plane`'s, stacked over the planes (numpy's ``matmul``
+        gives the same bits per plane), so the answers are the scan's.
+        """
+        if self.n > SCAN_MAX_TRIANGLES:
+            return None
+        o = np.asarray(origins, float).reshape(-1, 3)
+        nrm = np.asarray(normals, float).reshape(-1, 3)
+        out = np.full((len(o), len(self.names)), _NONE, np.int64)
+        first = np.where(self.member, self.original[:, None], _NONE)  # (T, K)
+        step = max(1, SCAN_PAIRS // max(self.n, 1))
+        for a in range(0, len(o), step):
+            d = self.points[None] - o[a : a + step, None, None, :]  # (s, T, 3, 3)
+            h = (d @ nrm[a : a + step, None, :, None])[..., 0]  # (s, T, 3): stacked matmul, the scan's own arithmetic
+            front = np.any(h > self.tol, axis=2)  # (s, T)
+            out[a : a + step] = np.where(front[:, :, None], first[None], _NONE).min(axis=1)
+        return np.where(out == _NONE, -1, out)
 
     def _exact(self, leaves: np.ndarray, o: np.ndarray, n: np.ndarray) -> np.ndarray:
         """Lowest original index per subset among the leaves' triangles in front."""

@@ -20,7 +20,7 @@ import numpy as np
 from simulator.engine.exact import exact_refusal
 from simulator.scene.model import Scene, Sensor, SensorKind
 
-__all__ = ["EXACT_MAX_OCCLUDERS", "EXACT_MAX_SCENE_TRIANGLES", "exact_plan_refusal"]
+__all__ = ["EXACT_MAX_OCCLUDERS", "EXACT_MAX_SCENE_TRIANGLES", "exact_plan_refusal", "exact_plan_refusals"]
 
 #: occluder triangles in front of a sensor above which shadow rays are used
 #: instead. A chosen bound, not a measured crossover: at a dozen candidates
@@ -32,6 +32,56 @@ EXACT_MAX_OCCLUDERS = 256
 #: count above (one numpy pass over every triangle per sensor; at this size
 #: that stays in the milliseconds): shadow rays read them
 EXACT_MAX_SCENE_TRIANGLES = 20_000
+
+
+#: sensors × triangles whose heights :func:`exact_plan_refusals` computes at once (~200 bytes each)
+_PAIRS = 1 << 18
+
+
+def exact_plan_refusals(scene: Scene, sensors: list[Sensor], culled: list[list[str]]) -> list[str | None]:
+    """:func:`exact_plan_refusal` of each sensor (``culled``: each one's culled lights), the
+    per-scene parts computed once and the occluder count of every sensor in stacked products (the
+    same arithmetic per sensor, so the same answers)."""
+    out: list[str | None] = [None] * len(sensors)
+    g = scene.geometry
+    pending = []  # sensors that get as far as counting occluders
+    refused = bool(g.n_triangles and np.any(g.emission > 0)) or g.has_surfaces  # for every sensor
+    for i, (s, c) in enumerate(zip(sensors, culled)):
+        if s.kind != SensorKind.IRRADIANCE or refused:
+            out[i] = exact_plan_refusal(scene, s, c)
+            continue
+        lights = [l for l in scene.lights if l.name not in c]
+        why = next((w for l in lights if (w := exact_refusal(l)) is not None), None)
+        if why is not None or not lights or g.n_triangles == 0:
+            out[i] = why
+        elif g.n_triangles > EXACT_MAX_SCENE_TRIANGLES:
+            out[i] = f"a large stage ({g.n_triangles} triangles): shadow rays"
+        else:
+            pending.append(i)
+    if not pending:
+        return out
+    pts = g.points[g.triangles]
+    tol = 1e-9 * max(1.0, float(np.abs(pts).max()))
+    emitting_of = {l.name: np.any((pts - l.position) @ -l.frame[:, 2] > tol, axis=1) for l in scene.lights}
+    groups: dict[tuple, int] = {}  # by culled set: the triangles in front of the lights left, one row each
+    group = np.array([groups.setdefault(tuple(culled[i]), len(groups)) for i in pending])
+    emitting = np.zeros((len(groups), len(pts)), bool)
+    for key, k in groups.items():
+        for l in scene.lights:
+            if l.name not in key:
+                emitting[k] |= emitting_of[l.name]
+    P = np.array([sensors[i].position for i in pending], float)
+    N = np.array([sensors[i].normal for i in pending], float)
+    step = max(1, _PAIRS // len(pts))
+    counts = np.zeros(len(pending), np.int64)
+    for a in range(0, len(pending), step):
+        d = pts[None] - P[a : a + step, None, None, :]
+        front = np.any((d @ N[a : a + step, None, :, None])[..., 0] > tol, axis=2)  # (s, T), as the scan's products
+        counts[a : a + step] = np.count_nonzero(front & emitting[group[a : a + step]], axis=1)
+    for i, n in zip(pending, counts.tolist()):
+        if n > EXACT_MAX_OCCLUDERS:
+            out[i] = f"{n} triangles may block its lights (more than {EXACT_MAX_OCCLUDERS})"
+    return out
 
 
 def exact_plan_refusal(scene: Scene, sensor: Sensor, culled: list[str]) -> str | None:

@@ -97,20 +97,22 @@ def split_emitters(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> t
     n_tri = g.n_triangles
     if n_tri == 0:
         return g, np.zeros(0, np.int64)
-    emits = np.any(g.emission > 0, axis=1)
-    p = g.points[g.triangles]
+    lit = np.flatnonzero(np.any(g.emission > 0, axis=1))  # only emitters are cut: measure only their edges
+    p = g.points[g.triangles[lit]]
     edge = np.max(np.linalg.norm(p - np.roll(p, 1, axis=1), axis=2), axis=1)
-    m = np.where(emits, np.clip(np.ceil(edge / h), 1, max_m), 1).astype(np.int64)
+    m = np.ones(n_tri, np.int64)
+    m[lit] = np.clip(np.ceil(edge / h), 1, max_m).astype(np.int64)
     if not (m > 1).any():
         return g, np.arange(n_tri)
     keep = m == 1
     points = [g.points]
     tris = [g.triangles[keep].astype(np.int64)]
     orig = [np.flatnonzero(keep)]
+    bary = [np.broadcast_to(np.eye(3)[:, :2], (int(keep.sum()), 3, 2))]  # (b, c) weights of each new corner
     base = len(g.points)
     for t in np.flatnonzero(~keep):  # the split ones go after the rest, in order
         k = int(m[t])
-        a, b, c = p[t]
+        a, b, c = g.points[g.triangles[t]]
         # lattice nodes (i, j), i + j ≤ k: a + (i/k)(b − a) + (j/k)(c − a)
         ij = [(i, j) for j in range(k + 1) for i in range(k + 1 - j)]
         index = {node: base + n for n, node in enumerate(ij)}
@@ -125,6 +127,8 @@ def split_emitters(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> t
                     sub.append((index[(i + 1, j + 1)], index[(i, j + 1)], index[(i + 1, j)]))
         tris.append(np.array(sub, np.int64))
         orig.append(np.full(len(sub), t))
+        node_bc = np.array(ij, float) / k
+        bary.append(node_bc[np.array(sub, np.int64) - (base - len(ij))])
     orig = np.concatenate(orig)
 
     def take(a):
@@ -135,7 +139,8 @@ def split_emitters(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> t
         emission=g.emission[orig], two_sided=g.two_sided[orig],
         prim=g.prim[orig] if len(g.prim) == n_tri else g.prim, albedo_rgb=take(g.albedo_rgb),
         reflectance_id=take(g.reflectance_id), emission_rgb=take(g.emission_rgb),
-        surface_id=take(g.surface_id), solid_side=take(g.solid_side),
+        surface_id=take(g.surface_id), solid_side=take(g.solid_side), texture_id=take(g.texture_id),
+        texture_uv=None if g.texture_uv is None else _corner_uv(g.texture_uv[orig], np.concatenate(bary)),
     )  # fmt: skip
     return out, orig
 
@@ -222,3 +227,11 @@ def pieces_note(g: Geometry) -> str | None:
         return f"emissive geometry: {how}, a triangle picked ∝ its power"
     return (f"emissive geometry: {how}, a piece picked by its estimated irradiance × a visibility a pilot "
             "learns, then a triangle ∝ its power")
+
+
+def _corner_uv(uv: np.ndarray, bc: np.ndarray) -> np.ndarray:
+    """Texture coordinates (T, 3, 2) of cut triangles: their original's corner ``uv`` (T, 3, 2) at the
+    barycentric weights ``bc`` (T, 3, 2) of b and c of each new corner (st is linear over the triangle)."""
+    b, c = bc[..., :1], bc[..., 1:]
+    a0, a1, a2 = uv[:, None, 0], uv[:, None, 1], uv[:, None, 2]
+    return a0 + b * (a1 - a0) + c * (a2 - a0)

@@ -315,6 +315,16 @@ class Geometry:
         Pane faces only: 0 on an open pane (a thin slab), +1 / −1 on a face
         of a closed pane mesh whose front / back faces outward
         (:func:`simulator.scene.surfaces.solid_sides`); None without panes.
+    coverage_textures : list of CoverageTexture
+        The opacity textures read per texel
+        (:class:`simulator.scene.surfaces.CoverageTexture`).
+    texture_id : ndarray, shape (T,), int32, or None
+        Per triangle: its index into ``coverage_textures``, -1 where none
+        (or the face has no texture coordinates: its row's ``coverage``);
+        None: no texture anywhere.
+    texture_uv : ndarray, shape (T, 3, 2), float64, or None
+        Per triangle corner: the texture's ``st`` (after its st transform),
+        zero where ``texture_id`` is -1; None with ``texture_id``.
     """
 
     points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
@@ -333,6 +343,9 @@ class Geometry:
     surface_id: np.ndarray | None = None
     surfaces: list = field(default_factory=list)
     solid_side: np.ndarray | None = None
+    coverage_textures: list = field(default_factory=list)
+    texture_id: np.ndarray | None = None
+    texture_uv: np.ndarray | None = None
 
     @property
     def has_surfaces(self) -> bool:
@@ -531,6 +544,10 @@ class Scene:
     time_code: float | None = None
     #: prims read whose values vary in time, found when no time code was given (prim paths)
     animated: tuple[str, ...] = ()
+    #: the files the reader depended on (every layer the stage composed, textures and MaterialX documents
+    #: read by path; absolute paths), or None where that list is not known to be whole (a composition
+    #: error: a reference that did not resolve may resolve later). Keys the in-process stage cache.
+    sources: tuple[str, ...] | None = None
 
     @property
     def bounds(self) -> tuple[np.ndarray, np.ndarray]:

@@ -14,6 +14,8 @@ warning):
   it untouched. With a threshold the coverage is 1 where ``opacity`` ≥ the
   threshold and 0 (the face is left out) below it (UsdPreviewSurface:
   "fragments with opacity < opacityThreshold are fully transparent").
+  Where a ``UsdUVTexture`` drives ``opacity`` the coverage is read per
+  texel at the hit (:class:`CoverageTexture`; ``Surface.opacity_texture``).
 - **panes** (``opacity`` < 1 in the default ``transparent`` mode, or a
   ``probesim:transmittance``): a dielectric of the material's ``ior``. An
   open surface is a *thin slab*: two parallel interfaces with no offset
@@ -49,11 +51,53 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Surface", "OPACITY_MODES", "fresnel_sp", "slab_rt", "internal_transmittance", "clear_slab_transmittance",
+__all__ = ["Surface", "CoverageTexture", "WRAP_MODES", "OPACITY_MODES", "fresnel_sp", "slab_rt", "internal_transmittance", "clear_slab_transmittance",
            "solid_sides"]
 
 #: UsdPreviewSurface ``opacityMode`` tokens
 OPACITY_MODES = ("transparent", "presence")
+
+#: UsdUVTexture ``wrapS`` / ``wrapT`` tokens probesim reads, in the order of their kernel codes
+#: (:func:`simulator.kernels.coverage.wrap_index`); ``useMetadata`` is read as ``black`` (below)
+WRAP_MODES = ("black", "clamp", "repeat", "mirror")
+
+
+@dataclass(frozen=True)
+class CoverageTexture:
+    """The per-texel opacity a ``UsdUVTexture`` feeds into ``inputs:opacity``, decoded.
+
+    Attributes
+    ----------
+    name : str
+        The UsdUVTexture prim and the file it reads, for messages and the plan.
+    opacity : ndarray, shape (H, W), float32
+        ``scale·decode(texel) + bias`` of the output's channel, clipped to
+        [0, 1]; row 0 at the top of the image (``t`` = 1).
+    wrap : tuple of (str, str)
+        ``wrapS``, ``wrapT``: one of :data:`WRAP_MODES`.
+    border : float
+        The value outside the image where a wrap is ``black``: ``bias``
+        clipped to [0, 1] (a black texel, scaled and biased).
+    primvar : str
+        The texture coordinate primvar a ``UsdPrimvarReader_float2`` reads
+        (``varname``), without the ``primvars:`` prefix.
+    st_affine : ndarray, shape (2, 3), float64
+        A ``UsdTransform2d`` between reader and texture as ``st' = A @ (s, t, 1)``:
+        ``in·scale``, rotated by ``rotation`` degrees, plus ``translation``;
+        the identity without one.
+    """
+
+    name: str
+    opacity: np.ndarray
+    wrap: tuple = ("black", "black")
+    border: float = 0.0
+    primvar: str = "st"
+    st_affine: np.ndarray = field(default_factory=lambda: np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]))
+
+    @property
+    def mean(self) -> float:
+        """The texture's mean opacity over its texels (the coverage of a face without texture coordinates)."""
+        return float(np.mean(self.opacity))
 
 
 @dataclass(frozen=True)
@@ -89,6 +133,14 @@ class Surface:
     unmodelled : tuple of str
         The inputs authored away from their fallback that no lobe models yet
         (for the summary warning and the plan).
+    opacity_texture : int
+        Index into ``Geometry.coverage_textures`` of the texture whose texels
+        give the coverage (presence: c = opacity(st); a threshold: c = 1 where
+        opacity(st) ≥ it, else 0), -1 for none; ``coverage`` is then what a
+        face without texture coordinates gets (from the texture's mean).
+    transmittance_spectrum : (str, ndarray (401,)) or None
+        A pane's measured normal-incidence transmittance T0(λ) (file name and
+        values on the grid; ``transmittance`` is its grey), for spectral runs.
     """
 
     name: str
@@ -108,11 +160,13 @@ class Surface:
     opacity_mode: str = "transparent"
     unmodelled: tuple = field(default_factory=tuple)
     glossy: bool = False
+    opacity_texture: int = -1
+    transmittance_spectrum: tuple | None = field(default=None, compare=False)
 
     @property
     def modelled(self) -> bool:
         """Whether the kernels read anything of this row beyond the face's albedo."""
-        return self.pane or self.coverage < 1.0 or self.glossy
+        return self.pane or self.coverage < 1.0 or self.glossy or self.opacity_texture >= 0
 
     @property
     def specular_grey(self) -> float:
@@ -128,10 +182,15 @@ class Surface:
     def lobes(self) -> tuple[str, ...]:
         """What this surface needs beyond a matte face, in words, for the plan."""
         out = []
-        if self.coverage < 1.0:
+        if self.opacity_texture >= 0:
+            rule = f"opacity >= {self.opacity_threshold:g}" if self.opacity_threshold > 0 else "presence"
+            out.append(f"coverage per texel ({rule})")
+        elif self.coverage < 1.0:
             out.append(f"coverage {self.coverage:g}")
         if self.pane:
             what = f"T0 {self.transmittance:g}" if self.transmittance is not None else "clear"
+            if self.transmittance_spectrum is not None:
+                what += f" from {self.transmittance_spectrum[0]}"
             out.append(f"dielectric slab (ior {self.ior:g}, {what})")
         if self.glossy:
             spec = ("mirror (delta)" if self.delta else f"GGX specular (roughness {self.roughness:g})")
@@ -262,3 +321,31 @@ def mirror_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndar
         planes[k] = [*nn, float(np.mean(p[mine][:, 0] @ nn))]
         face_plane[faces[mine]] = k
     return planes, face_plane, max(0, len(uniq) - len(order))
+
+
+def mirror_limits(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarray | None,
+                  surfaces: list, delta_lights: list[str]) -> list[str]:
+    """What the image-source connection of delta lights (:mod:`simulator.kernels.mirrors`) leaves out,
+    one note each: empty without delta lights or without mirror faces.
+
+    A point light or an angle-0 distant light reaches a receiver off a mirror
+    along one direction only; the kernels connect its image in each of the
+    :data:`MAX_MIRROR_PLANES` largest mirror planes, one reflection deep.
+    Light reflected by two mirrors in turn (a delta meets a delta: no
+    sampled direction finds it) and mirror planes past the largest are not
+    connected, so their share of a reading is missing: the summary says so.
+    Area, sphere and dome lights are found through any number of mirrors
+    by the paths' own reflections.
+    """
+    if not delta_lights:
+        return []
+    planes, _, left_out = mirror_planes(points, triangles, surface_id, surfaces)
+    notes = []
+    lights = ", ".join(delta_lights[:3]) + (" ..." if len(delta_lights) > 3 else "")
+    if len(planes) + left_out >= 2:
+        notes.append(f"light of point or angle-0 distant light(s) {lights} reflected by two mirrors in turn "
+                     f"is not read ({len(planes) + left_out} mirror planes; one reflection is read)")
+    if left_out:
+        notes.append(f"light of {lights} off the {left_out} mirror plane(s) past the {MAX_MIRROR_PLANES} "
+                     "largest is not read")
+    return notes

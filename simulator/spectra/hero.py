@@ -87,6 +87,13 @@ class HeroTables:
     face_emission : ndarray, shape (T,), int32
         Row of ``emission`` of each emitting triangle with a coloured
         ``emissiveColor``; −1 elsewhere (the emissive record's row).
+    surface_spectral : ndarray, shape (S, 3), int32
+        Per row of ``Geometry.surfaces``: (coloured, specular row, transmittance
+        row): coloured 1 when its BSDF or pane is traced per hero lane (a
+        glossy row whose faces' colour is not grey, a specularColor that is
+        not grey, a measured transmittance that is not flat); the rows of
+        ``reflectance`` holding the uplift of its ``specularColor`` and its
+        T0(λ), −1 for none (:func:`_surface_rows`). Empty without surfaces.
     """
 
     reflectance: np.ndarray
@@ -98,6 +105,7 @@ class HeroTables:
     colour: np.ndarray = field(default_factory=lambda: colour_weights())
     measured: list[str] = field(default_factory=list)
     face_emission: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int32))
+    surface_spectral: np.ndarray = field(default_factory=lambda: np.zeros((0, 3), np.int32))
 
 
 def response_weights(resp) -> np.ndarray:
@@ -232,6 +240,10 @@ def hero_tables(scene, light_units: str, default_spectrum, responses=(), declare
         face_row = np.where(ids >= 0, len(reflectance) + ids, face_row)
         reflectance = np.concatenate([np.asarray(reflectance, float).reshape(-1, N_LAMBDA), measured])
         measured_names = [name for name, _ in g.reflectances]
+    reflectance = np.asarray(reflectance, float).reshape(-1, N_LAMBDA)
+    surface_spectral, extra = _surface_rows(g, rgb, len(reflectance))
+    if extra:
+        reflectance = np.concatenate([reflectance, np.asarray(extra, float)])
     stated = 1 if light_units == "photometric" else 0
     rows = [_per_radiometric(light_spectrum(l, default_spectrum, declared), l.emission, stated) for l in scene.lights]
     em = np.asarray(g.emission, float).reshape(-1, 2)
@@ -258,4 +270,33 @@ def hero_tables(scene, light_units: str, default_spectrum, responses=(), declare
         notes=notes,
         measured=measured_names,
         face_emission=face_emission,
+        surface_spectral=surface_spectral,
     )
+
+
+def _surface_rows(g, rgb: np.ndarray, first_row: int) -> tuple[np.ndarray, list]:
+    """``(surface_spectral (S, 3), the extra reflectance rows)`` of ``Geometry.surfaces`` (see
+    :class:`HeroTables`): a glossy row is coloured when any face it covers has an albedo colour that
+    is not grey (its metallic F0 and F90 and its diffuse lobe then follow ρ(λ) of the face), or its
+    specular workflow's ``specularColor`` is not grey (uplifted, Mallett–Yuksel, as a diffuseColor);
+    a pane is coloured by a measured T0(λ) that is not flat."""
+    from simulator.spectra.reflectance import is_flat, uplift
+
+    surfaces = list(getattr(g, "surfaces", []) or [])
+    out = np.full((len(surfaces), 3), -1, np.int32)
+    out[:, 0] = 0
+    extra: list = []
+    sid = getattr(g, "surface_id", None)
+    for k, s in enumerate(surfaces):
+        if s.glossy:
+            faces = rgb[sid == k] if sid is not None and len(sid) == len(rgb) else np.zeros((0, 3))
+            if len(faces) and np.any(np.ptp(faces, axis=1) > 0):
+                out[k, 0] = 1
+            spec = np.asarray(s.specular_color, float)
+            if s.use_specular_workflow and np.ptp(spec) > 0:
+                out[k, 0], out[k, 1] = 1, first_row + len(extra)
+                extra.append(uplift(np.clip(spec, 0.0, 1.0)))
+        if s.pane and s.transmittance_spectrum is not None and not is_flat(s.transmittance_spectrum[1]):
+            out[k, 0], out[k, 2] = 1, first_row + len(extra)
+            extra.append(np.asarray(s.transmittance_spectrum[1], float))
+    return out, extra

@@ -92,16 +92,34 @@ def _measured_curves(geometry) -> list[str]:
     return [geometry.reflectances[i][0] for i in used if not is_flat(geometry.reflectances[i][1])]
 
 
+def _coloured_surfaces(geometry) -> list[str]:
+    """Materials (``Geometry.surfaces``) whose pane has a measured transmittance that is not flat, or
+    whose specular workflow's ``specularColor`` is not grey."""
+    from simulator.spectra.reflectance import is_flat
+
+    out = []
+    for s in getattr(geometry, "surfaces", []) or []:
+        if s.pane and s.transmittance_spectrum is not None and not is_flat(s.transmittance_spectrum[1]):
+            out.append(f"{s.name} (transmittance {s.transmittance_spectrum[0]})")
+        elif s.glossy and s.use_specular_workflow and np.ptp(np.asarray(s.specular_color, float)) > 0:
+            out.append(f"{s.name} (specularColor)")
+    return out
+
+
 def posthoc_refusal(scene) -> str | None:
     """Why the post-hoc path would not be exact for this scene, or None when it is.
 
-    Not exact: a material's measured reflectance is not flat, a colour was
+    Not exact: a material's measured reflectance or a pane's measured transmittance is not flat, a
+    specular workflow's specularColor is not grey, a colour was
     reduced to grey (the stage reader's summary warning), or the emitters have different spectra (their
     photometric/radiometric ratios differ).
     """
     measured = _measured_curves(scene.geometry)
     if measured:
         return f"measured reflectance {', '.join(measured)} is not flat: a colour can change a reading"
+    surfaces = _coloured_surfaces(scene.geometry)
+    if surfaces:
+        return f"coloured surface {', '.join(surfaces)}: a colour can change a reading"
     coloured = [w for w in scene.warnings if w.startswith(_COLOURED_WARNING + ": ")]
     if coloured:
         where = coloured[0][len(_COLOURED_WARNING) + 2:]

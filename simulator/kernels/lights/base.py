@@ -33,7 +33,7 @@ import warp as wp
 
 from simulator.scene.model import LightKind
 
-from ..surface_rec import SurfRec
+from ..surface_rec import SurfRec, TexRec
 
 #: length of a ray that leaves the scene, metres
 RAY_INF = wp.constant(1.0e30)
@@ -122,6 +122,11 @@ class SceneRec:
     surf_id: wp.array(dtype=wp.int32)  # per triangle: its row of surf, −1 for a matte face
     surf_side: wp.array(dtype=wp.int32)  # per triangle: 0 open pane (thin slab); ±1 closed pane mesh, front out / in
     surf: wp.array(dtype=SurfRec)
+    # opacity textures read per texel (kernels.coverage); unread unless a row of surf is textured
+    tex_id: wp.array(dtype=wp.int32)  # per triangle: its texture, −1: its row's coverage
+    tex_uv: wp.array(dtype=wp.vec2)  # 3 per triangle: st at its corners
+    tex: wp.array(dtype=TexRec)
+    texels: wp.array(dtype=float)  # the textures' opacities, concatenated
     n_mirror_planes: int  # flat planes of mirror faces (kernels.mirrors), 0 for none
     mirror_planes: wp.array(dtype=wp.vec4)  # (n, d): n·x = d
     face_mirror: wp.array(dtype=wp.int32)  # per triangle: its mirror plane, −1 for none
@@ -151,6 +156,9 @@ class SceneRec:
     response_weights: wp.array2d(dtype=float)  # (responses × 401): a lane's weight 400·q/w
     response_lanes: wp.array(dtype=wp.vec4)  # per kernel thread: this sample's spectral density per hero lane
     colour_weights: wp.array2d(dtype=float)  # (3 × 401): a lane's weight of linear sRGB (cd/m²), for probe maps
+    # per row of surf: (coloured, specular row, transmittance row) of spectral_reflectance (kernels.spectral_surfaces)
+    spectral_surface: wp.array(dtype=wp.vec3i)
+    spectral_panes: int  # 1: some pane has a measured T0(λ) (shadow and path rays then weigh it per lane)
     light_group: wp.array(dtype=wp.int32)  # per light record: its light group, −1 for none (TraceParams.group_tally)
     patch_base: wp.array(dtype=wp.int32)  # per light record: first group of its sky patches (a split dome), −1 when not split
     guide: GuideRec  # surface patches for guided paths

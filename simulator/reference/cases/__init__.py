@@ -159,6 +159,8 @@ _DIRECT: tuple[Case, ...] = (
          variants=(("sun", "zenith_30"),)),
     Case("glazing 60°", "glazing.toml", "the glazing at 60° from the zenith", D.glazing,
          variants=(("sun", "zenith_60"),)),
+    Case("cutout", "cutout.toml", "a delta sun through a presence grille and a threshold cut-out, opacity read "
+         "per texel", D.cutout),
 )  # fmt: skip
 
 # Interreflection: path tracing with Russian roulette, several reflectances

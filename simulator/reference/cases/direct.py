@@ -17,7 +17,10 @@ import numpy as np
 from simulator.errors import UserError
 from simulator.reference import closed_forms as cf
 from simulator.reference.cases.context import CaseContext, no_closed_form, one_light
-from simulator.reference.geometry import cone_lands_inside, patch_vertices, points_in_polygon_2d, ray_hits_triangles
+from simulator.reference.geometry import (
+    cone_lands_inside, patch_vertices, points_in_polygon_2d, ray_hits_triangles, ray_triangles,
+)
+from simulator.reference.texture import bilinear_at
 from simulator.scene.model import Light, LightKind, Scene, Sensor, SensorKind
 
 
@@ -426,3 +429,28 @@ def glazing(ctx: CaseContext, s: Sensor, ch: int) -> float:
     else:
         t = 1.0 - row.coverage
     return l.emission[ch] * c * t
+
+
+def cutout(ctx: CaseContext, s: Sensor, ch: int) -> float:
+    """A delta sun through a sheet whose opacity is read per texel (stages/cutout.usda): E = E⊥·cosθ·(1 − c),
+    c the coverage where the sun's ray from the receiver crosses the sheet: the texture's bilinear value o
+    at that point's st (presence), or 1 where o ≥ opacityThreshold and 0 below (docs/REFERENCES.md
+    §Coverage; :func:`simulator.reference.texture.bilinear_at`, the crossing's barycentric weights by
+    Möller–Trumbore)."""
+    l = one_light(ctx.scene, LightKind.DISTANT)
+    if l.half_angle != 0.0 or s.kind != SensorKind.IRRADIANCE:
+        raise no_closed_form(ctx, s, "a delta distant light and irradiance receivers only")
+    g = ctx.scene.geometry
+    toward = l.frame[:, 2]
+    c = max(0.0, float(np.dot(s.normal, toward)))
+    t, u, v, ok = ray_triangles(s.position, toward, g.points[g.triangles])
+    hit = np.flatnonzero(ok & (u >= 0) & (v >= 0) & (u + v <= 1) & (t > 0))
+    if len(hit) == 0 or g.surface_id is None or g.texture_id is None or g.texture_id[hit[0]] < 0:
+        raise no_closed_form(ctx, s, "one textured cut-out sheet above the receiver")
+    k = int(hit[0])
+    row = g.surfaces[int(g.surface_id[k])]
+    tex = g.coverage_textures[int(g.texture_id[k])]
+    st = (1 - u[k] - v[k]) * g.texture_uv[k, 0] + u[k] * g.texture_uv[k, 1] + v[k] * g.texture_uv[k, 2]
+    o = min(max(bilinear_at(tex.opacity.astype(np.float64), st, tex.wrap, tex.border), 0.0), 1.0)
+    cover = (1.0 if o >= row.opacity_threshold else 0.0) if row.opacity_threshold > 0 else o
+    return l.emission[ch] * c * (1.0 - cover)

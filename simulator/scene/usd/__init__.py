@@ -209,6 +209,7 @@ from pxr import Usd, UsdGeom, UsdLux
 
 from simulator.errors import UserError
 from simulator.scene.model import Geometry, Light, LightKind, Scene, Sensor
+from simulator.scene.surfaces import mirror_limits
 from simulator.scene.usd.collections import light_collections
 from simulator.scene.usd.context import _Context
 
@@ -362,6 +363,9 @@ def load_stage(
             closed = sorted({geometry.prim_names[i] for i in np.unique(geometry.prim[geometry.solid_side != 0])})
             ctx.ignored[f"refraction's bend in closed transparent mesh(es) {', '.join(closed[:3])}"
                         f"{' ...' if len(closed) > 3 else ''} (read as slabs entered once, no offset)"] += len(closed)
+        for note in mirror_limits(geometry.points, geometry.triangles, geometry.surface_id, geometry.surfaces,
+                                  [l.name for l in lights if l.is_delta]):
+            ctx.warn(f"{os.path.basename(str(path))}: {note}")
         ctx.pxr_messages += pxr_said.collect()
         _finish_warnings(ctx)
     return Scene(
@@ -375,7 +379,23 @@ def load_stage(
         collections=light_collections(stage, lights),
         time_code=time,
         animated=tuple(ctx.animated),
+        sources=_sources(stage, ctx, lights),
     )
+
+
+def _sources(stage: Usd.Stage, ctx: _Context, lights: list[Light]) -> tuple[str, ...] | None:
+    """The files this reading depended on that pxr or a C++ reader opened (Python ``open`` calls are
+    seen by the caller's audit hook): every layer composed, texture files, dome maps and MaterialX
+    documents; None after a composition error (what failed to resolve is not a file to watch)."""
+    if ctx.composition_errors:
+        return None
+    files = [layer.realPath for layer in stage.GetUsedLayers() if layer.realPath]
+    files += [k.rsplit("|", 1)[0] for k in ctx.textures if isinstance(k, str) and k.rsplit("|", 1)[0]]  # "path|colour space"
+    files += [l.texture for l in lights if l.texture]
+    files += [k.split("|", 1)[1] for k in ctx.materials if isinstance(k, str) and k.startswith("mtlx document|")]
+    # a layer inside a package (``scene.usdz[inner.usdc]``) changes with the package file
+    files = [f.split("[", 1)[0] if f.endswith("]") else f for f in files]
+    return tuple(dict.fromkeys(os.path.abspath(f) for f in files))
 
 
 def _refuse_sealed_light(ctx: _Context, geometry: Geometry, lights: list[Light]) -> None:
@@ -433,4 +453,4 @@ def _read_prims(ctx: _Context, stage: Usd.Stage) -> tuple[Geometry, list[Light],
                 if light.kind == LightKind.DOME:
                     domes.append((light, prim))
     attach_portals(ctx, stage, domes, portals)
-    return geo.build(ctx.reflectances, ctx.emissive_spectra, ctx.surfaces), lights, sensors
+    return geo.build(ctx.reflectances, ctx.emissive_spectra, ctx.surfaces, ctx.coverage_textures), lights, sensors

@@ -68,6 +68,9 @@ class _Context:
     #: surfaces beyond Lambert (:class:`simulator.scene.surfaces.Surface`), one per material; by material key
     surfaces: list = field(default_factory=list)
     surface_index: dict = field(default_factory=dict)
+    #: opacity textures read per texel (:class:`simulator.scene.surfaces.CoverageTexture`); by what reads them
+    coverage_textures: list = field(default_factory=list)
+    coverage_texture_index: dict = field(default_factory=dict)
 
     def summary_parts(self) -> list[str]:
         """Parts of the stage's one summary warning line beyond what was not read or ignored."""

@@ -55,16 +55,18 @@ class _GeometryBuilder:
         self._surface_id: list[np.ndarray] = []
         self._prim: list[np.ndarray] = []
         self._names: list[str] = []
+        self._texture: list = []
         self._n_points = 0
 
     def add(self, name: str, points: np.ndarray, tris: np.ndarray, albedo,
             emission, two_sided: bool, albedo_rgb=None, reflectance_id=None, emission_rgb=None,
-            surface_id=None) -> None:
+            surface_id=None, texture=None) -> None:
         """Add one prim's world triangles; ``albedo`` (T,) or scalar, ``emission`` (T, 2) or (2,),
         ``albedo_rgb`` (T, 3) or (3,), default grey ``(a, a, a)``; ``reflectance_id`` (T,) or scalar,
         default -1 (no measured reflectance); ``emission_rgb`` (T, 3) or (3,), default (1, 1, 1)
         (the emission's colour is the shared spectrum's); ``surface_id`` (T,) or scalar, default -1
-        (matte)."""
+        (matte); ``texture`` ``(texture id (T,), st (T, 3, 2))`` of faces whose opacity is read per texel.
+        """
         t = len(tris)
         if t == 0:
             return
@@ -84,11 +86,13 @@ class _GeometryBuilder:
         self._two_sided.append(np.full(t, bool(two_sided)))
         self._surface_id.append(np.broadcast_to(np.asarray(-1 if surface_id is None else surface_id, np.int32), (t,)))
         self._prim.append(np.full(t, index, np.int32))
+        self._texture.append(texture)
 
-    def build(self, reflectances=(), emissive_spectra=(), surfaces=()) -> Geometry:
+    def build(self, reflectances=(), emissive_spectra=(), surfaces=(), coverage_textures=()) -> Geometry:
         """The soup; ``reflectances`` the measured curves ``(name, ρ, grey)`` the ids index,
         ``emissive_spectra`` the ``(spectrum or None, authored)`` of the emitting prims, ``surfaces``
-        the :class:`~simulator.scene.surfaces.Surface` rows the surface ids index."""
+        the :class:`~simulator.scene.surfaces.Surface` rows the surface ids index, ``coverage_textures``
+        the opacity textures the texture ids index."""
         if not self._tris:
             return Geometry()
         from simulator.scene.surfaces import solid_sides
@@ -120,7 +124,17 @@ class _GeometryBuilder:
             surface_id=sid if (sid >= 0).any() else None,
             surfaces=list(surfaces),
             solid_side=side,
+            **self._textures(coverage_textures),
         )
+
+    def _textures(self, coverage_textures) -> dict:
+        """``Geometry`` fields of the faces whose opacity is read per texel (none: nothing)."""
+        if all(t is None for t in self._texture):
+            return {}
+        ids = [np.full(len(a), -1, np.int32) if t is None else t[0] for t, a in zip(self._texture, self._albedo)]
+        uv = [np.zeros((len(a), 3, 2)) if t is None else t[1] for t, a in zip(self._texture, self._albedo)]
+        return dict(coverage_textures=list(coverage_textures), texture_id=np.concatenate(ids).astype(np.int32),
+                    texture_uv=np.concatenate(uv))
 
 
 @dataclass
@@ -145,6 +159,8 @@ class _Part:
     reflectance_id: np.ndarray | None = None
     emission_rgb: np.ndarray | None = None
     surface_id: np.ndarray | None = None
+    texture_id: np.ndarray | None = None
+    texture_uv: np.ndarray | None = None
 
 
 def _read_gprim(ctx: _Context, prim: Usd.Prim, geo: _GeometryBuilder) -> None:
@@ -178,18 +194,48 @@ def _gprim_part(ctx: _Context, prim: Usd.Prim) -> _Part | None:
     if faces is None:  # opacity 0 everywhere: it lets light through
         return None
     albedo, emission, keep, albedo_rgb, curve, emission_rgb, surface_id = faces
-    tris, fanned, face_of = _triangulate_faces(points, counts, indices)
+    tris, fanned, face_of = _triangulate_faces(points, counts, indices, convex=not prim.IsA(UsdGeom.Mesh))
     if fanned:
         ctx.warn(f"{prim.GetPath()}: {fanned} self-intersecting or non-planar face(s) fan-triangulated")
     if not keep.all():
         tris, face_of = tris[keep[face_of]], face_of[keep[face_of]]
+    texture = _texture_corners(ctx, prim, points, counts, indices, keep, surface_id[face_of], face_of)
     gprim = UsdGeom.Gprim(prim)
     if gprim.GetOrientationAttr().Get(ctx.time) == UsdGeom.Tokens.leftHanded:
         tris = tris[:, [0, 2, 1]]
+        if texture is not None:
+            texture = (texture[0], texture[1][:, [0, 2, 1]])
     return _Part(name=str(prim.GetPath()), points=points, tris=tris, albedo=albedo[face_of],
                  emission=emission[face_of], two_sided=bool(gprim.GetDoubleSidedAttr().Get(ctx.time)),
                  is_light=is_light, albedo_rgb=albedo_rgb[face_of], reflectance_id=curve[face_of],
-                 emission_rgb=emission_rgb[face_of], surface_id=surface_id[face_of])
+                 emission_rgb=emission_rgb[face_of], surface_id=surface_id[face_of],
+                 texture_id=None if texture is None else texture[0], texture_uv=None if texture is None else texture[1])
+
+
+def _texture_corners(ctx: _Context, prim: Usd.Prim, points, counts, indices, keep, tri_surface, face_of):
+    """``(texture id (T,), st (T, 3, 2))`` of a gprim's kept triangles whose surface reads its opacity per
+    texel (:mod:`.texcoords`), None when none does. A face whose prim lacks the texture's primvar gets
+    -1 (its surface's coverage, from the texture's mean), counted in the summary warning."""
+    tex_of = np.array([s.opacity_texture for s in ctx.surfaces] + [-1], np.int64)[tri_surface]
+    if not (tex_of >= 0).any():
+        return None
+    from simulator.scene.usd.texcoords import _corner_st
+
+    # the same triangulation over face corners (points[indices] in corner order), so each corner is known
+    corner_tris, _, corner_face = _triangulate_faces(points[indices], counts, np.arange(len(indices)))
+    corner_tris = corner_tris[keep[corner_face]]
+    uv = np.zeros((len(face_of), 3, 2))
+    out = np.full(len(face_of), -1, np.int32)
+    for k in np.unique(tex_of[tex_of >= 0]):
+        tex = ctx.coverage_textures[int(k)]
+        mine = tex_of == k
+        st = _corner_st(ctx, prim, tex.primvar, face_of[mine], corner_tris[mine], indices)
+        if st is None:
+            ctx.ignored[f"inputs:opacity texture on a prim without primvars:{tex.primvar} (its mean used)"] += 1
+            continue
+        uv[mine] = st @ tex.st_affine[:, :2].T + tex.st_affine[:, 2]
+        out[mine] = k
+    return (out, uv) if (out >= 0).any() else None
 
 
 def _face_surfaces(ctx: _Context, prim: Usd.Prim, n_faces: int):
@@ -269,7 +315,11 @@ def _add_placed(ctx: _Context, prim: Usd.Prim, part: _Part, a: np.ndarray, t: np
     rid = None if part.reflectance_id is None else part.reflectance_id[per_tri]
     e_rgb = None if part.emission_rgb is None or part.is_light else part.emission_rgb[per_tri]
     sid = None if part.surface_id is None else part.surface_id[per_tri]
-    geo.add(name, world, tris, part.albedo[per_tri], emission, part.two_sided, rgb, rid, e_rgb, sid)
+    texture = None if part.texture_id is None else (part.texture_id[per_tri], part.texture_uv[per_tri])
+    if texture is not None:  # the corners follow a mirrored place's re-winding
+        flip = mirrored[np.repeat(np.arange(n), len(part.tris))[keep]]
+        texture[1][flip] = texture[1][flip][:, [0, 2, 1]]
+    geo.add(name, world, tris, part.albedo[per_tri], emission, part.two_sided, rgb, rid, e_rgb, sid, texture)
 
 
 def _gprim_polygons(ctx: _Context, prim: Usd.Prim):

@@ -145,7 +145,7 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
         ``transparent`` or ``presence``, a transmittance outside (0, 1] or
         above what a clear slab of that ior transmits.
     """
-    from simulator.scene.surfaces import OPACITY_MODES, Surface, internal_transmittance
+    from simulator.scene.surfaces import OPACITY_MODES, Surface, clear_slab_transmittance, internal_transmittance
 
     key = inputs.get("_surface_key", None)
     if key is None:
@@ -182,6 +182,15 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
             tau = internal_transmittance(t0, ior)
         except ValueError as e:
             raise ctx.error(prim, f"{TRANSMITTANCE_ATTR} {t0:g} from {t0_src}: {e}") from None
+    spectrum = inputs.get("_transmittance_spectrum")
+    if spectrum is not None:
+        peak = float(np.max(spectrum[1]))
+        clear = clear_slab_transmittance(ior)
+        if peak > clear + 1e-12:
+            raise ctx.error(prim, f"{TRANSMITTANCE_ATTR} {spectrum[0]}: its peak {peak:.4g} is above the "
+                                  f"{clear:.4f} a clear slab of ior {ior:g} transmits")
+    tex, tex_why = inputs.get("_opacity_texture", (-1, ""))
+    per_texel = tex >= 0 and (threshold > 0.0 or mode == "presence") and t0 is None
     coverage, pane = 1.0, False
     if threshold > 0.0:  # a cut-out: opacity below the threshold is not there, at or above it is opaque
         coverage = 1.0 if opacity >= threshold else 0.0
@@ -195,7 +204,7 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
         pane = True
         if coverage <= 0.0 or (threshold == 0.0 and mode == "transparent"):
             coverage = 1.0  # a datasheet pane: its transmittance, not its opacity, lets light through
-    if coverage <= 0.0:
+    if coverage <= 0.0 and not per_texel:
         why = f"opacity {opacity:g} below opacityThreshold {threshold:g}" if threshold > 0 else "opacity 0"
         ctx.warn(f"{prim.GetPath()}: {why}; left out (it blocks no light)")
         ctx.surface_index[key] = why
@@ -210,17 +219,19 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
     unmodelled = authored if pane else ()
     for n in unmodelled:
         ctx.ignored[f"inputs:{n}"] += 1  # read and validated; not modelled on a pane
-    if glossy:
-        c = np.atleast_1d(np.asarray(inputs.get("diffuseColor", ((0.0,),))[0], float))
-        if c.size == 3 and _not_uniform(np.ptp(c), float(np.max(np.abs(c)))):
-            ctx.ignored["diffuseColor's colour on glossy faces (their BSDF is traced grey, also in spectral runs)"] += 1
-    if coverage < 1.0 and inputs.get("opacity", (None, ""))[1].find("mean of the texture") >= 0:
-        ctx.ignored["inputs:opacity from a texture (coverage is its mean, not per texel)"] += 1
+    if per_texel:  # read per texel, not as the mean the summary's textured inputs count
+        ctx.textured["opacity"] -= 1
+        if ctx.textured["opacity"] <= 0:
+            del ctx.textured["opacity"]
+    if (coverage < 1.0 or threshold > 0.0) and not per_texel and "mean of the texture" in inputs.get("opacity", ("", ""))[1]:
+        how = f"{tex_why}: " if tex_why else ""
+        ctx.ignored[f"inputs:opacity from a texture ({how}coverage is its mean, not per texel)"] += 1
     row = Surface(name=str(prim.GetPath()), coverage=coverage, pane=pane, ior=ior, tau=tau, transmittance=t0,
                   roughness=values["roughness"], metallic=values["metallic"], clearcoat=values["clearcoat"],
                   clearcoat_roughness=values["clearcoatRoughness"], specular_color=spec,
                   use_specular_workflow=workflow, opacity=opacity, opacity_threshold=threshold, opacity_mode=mode,
-                  unmodelled=unmodelled, glossy=glossy)
+                  unmodelled=unmodelled, glossy=glossy, opacity_texture=tex if per_texel else -1,
+                  transmittance_spectrum=spectrum if pane else None)
     sid = -1
     if row.modelled:
         sid = len(ctx.surfaces)
@@ -401,13 +412,31 @@ def _preview_surface_inputs(ctx: _Context, material: UsdShade.Material) -> dict 
     inputs = {name: _input_value(ctx, shader, name, default) for name, default in _PREVIEW_DEFAULTS.items()
               if curve < 0 or name != "diffuseColor"}
     inputs["opacityMode"] = _opacity_mode(ctx, material, shader, inputs["opacityMode"])
-    t0 = _authored_float(ctx, (shader.GetPrim(), material.GetPrim()), TRANSMITTANCE_ATTR)
+    inputs["_opacity_texture"] = _opacity_texture(ctx, shader)
+    t0 = _transmittance(ctx, (shader.GetPrim(), material.GetPrim()))
     if t0 is not None:
-        inputs[TRANSMITTANCE_ATTR] = t0
+        inputs[TRANSMITTANCE_ATTR] = t0[:2]
+        if t0[2] is not None:
+            inputs["_transmittance_spectrum"] = t0[2]
     if curve >= 0:
         inputs["diffuseColor"] = ((ctx.reflectances[curve][2],) * 3, f"{REFLECTANCE_ATTR} {ctx.reflectances[curve][0]}")
         inputs["reflectance"] = (curve, inputs["diffuseColor"][1])
     return inputs
+
+
+def _opacity_texture(ctx: _Context, shader: UsdShade.Shader) -> tuple[int, str]:
+    """``(index into ctx.coverage_textures, "")`` of the texture ``inputs:opacity`` reads per texel, or
+    ``(-1, why not)`` (:func:`.textures._coverage_texture`; a file that cannot be read is an error)."""
+    from simulator.scene.usd.textures import _coverage_texture
+
+    where = f"{shader.GetPath()}.inputs:opacity"
+    inp = shader.GetInput("opacity")
+    if not inp or not inp.HasConnectedSource():
+        return -1, "not connected"
+    for attr in inp.GetValueProducingAttributes():
+        if UsdShade.Output.IsOutput(attr):
+            return _coverage_texture(ctx, attr, where)
+    return -1, "not connected"
 
 
 def _opacity_mode(ctx: _Context, material: UsdShade.Material, shader: UsdShade.Shader, read):
@@ -422,16 +451,43 @@ def _opacity_mode(ctx: _Context, material: UsdShade.Material, shader: UsdShade.S
     return str(read[0]), read[1]
 
 
-def _authored_float(ctx: _Context, prims, name: str):
-    """``(value, where)`` of the first prim's authored attribute ``name``, None if none authors it."""
+def _transmittance(ctx: _Context, prims):
+    """``(T0, where, spectrum)`` of the first prim's authored :data:`TRANSMITTANCE_ATTR`, None if none
+    authors it: a number (``spectrum`` None), or an asset (or string) path of a transmittance CSV
+    (:func:`simulator.spectra.transmittance.measured_transmittance`), relative to the layer that
+    authors it, whose grey is T0 and ``spectrum`` ``(file name, T0(λ) (401,))``.
+
+    Raises
+    ------
+    UserError
+        ``<stage>: <prim>: probesim:transmittance: <what is wrong>``: neither a number nor a path, an
+        empty path, or the file's own error (missing, bad header, a value outside [0, 1], ...).
+    """
+    from simulator.spectra.transmittance import measured_transmittance
+
     for p in prims:
-        attr = p.GetAttribute(name)
-        if attr and attr.HasAuthoredValue():
-            value = _get(ctx, attr)
+        attr = p.GetAttribute(TRANSMITTANCE_ATTR)
+        if not (attr and attr.HasAuthoredValue()):
+            continue
+        value = _get(ctx, attr)
+        if isinstance(value, (Sdf.AssetPath, str)):
+            authored = value.path if isinstance(value, Sdf.AssetPath) else value
+            path = (value.resolvedPath if isinstance(value, Sdf.AssetPath) else "") or _layer_relative(attr, authored)
+            if not authored.strip():
+                raise ctx.error(p, f"{TRANSMITTANCE_ATTR} is empty (expected a number or the path of a "
+                                   "transmittance .csv)")
             try:
-                return float(value), str(attr.GetPath())
-            except (TypeError, ValueError):
-                raise ctx.error(p, f"{name} must be a number, not a {attr.GetTypeName()}") from None
+                spectrum, grey, notes = measured_transmittance(os.path.abspath(path))
+            except UserError as e:
+                raise ctx.error(p, f"{TRANSMITTANCE_ATTR}: {e}") from None
+            for note in notes:
+                ctx.warn(f"{p.GetPath()}: {TRANSMITTANCE_ATTR}: {note}")
+            return grey, f"{attr.GetPath()} ({os.path.basename(path)})", (os.path.basename(path), spectrum)
+        try:
+            return float(value), str(attr.GetPath()), None
+        except (TypeError, ValueError):
+            raise ctx.error(p, f"{TRANSMITTANCE_ATTR} must be a number or the path of a transmittance .csv, "
+                               f"not a {attr.GetTypeName()}") from None
     return None
 
 

@@ -159,14 +159,17 @@ def _triangulate(points: np.ndarray, counts: np.ndarray, indices: np.ndarray) ->
     return tris, fanned
 
 
-def _triangulate_faces(points: np.ndarray, counts: np.ndarray,
-                       indices: np.ndarray) -> tuple[np.ndarray, int, np.ndarray]:
+def _triangulate_faces(points: np.ndarray, counts: np.ndarray, indices: np.ndarray,
+                       convex: bool = False) -> tuple[np.ndarray, int, np.ndarray]:
     """Split polygons into triangles that keep each face's winding.
 
     Faces are grouped by vertex count and handled in bulk: triangles as they
     are, convex polygons by a fan from their first vertex, and concave ones by
     ear clipping in the face's plane. Faces with fewer than 3 vertices are
-    skipped.
+    skipped. ``convex``: every face is known to be convex (the implicit
+    gprims' own polygons, planar by construction), so each is fanned without
+    the test, which on a finely tessellated Sphere costs more than all the
+    rest of its reading.
 
     Returns
     -------
@@ -192,13 +195,13 @@ def _triangulate_faces(points: np.ndarray, counts: np.ndarray,
             out.append(idx)
             face_out.append(faces)
             continue
-        convex = _convex_faces(points[idx])
-        hub = idx[convex]  # fan (v0, vk, vk+1), k = 1 .. n-2
+        fans = np.ones(len(faces), bool) if convex else _convex_faces(points[idx])
+        hub = idx[fans]  # fan (v0, vk, vk+1), k = 1 .. n-2
         k = np.arange(1, n - 1)
         fan = np.stack([np.broadcast_to(hub[:, :1], (len(hub), n - 2)), hub[:, k], hub[:, k + 1]], -1)
         out.append(fan.reshape(-1, 3))
-        face_out.append(np.repeat(faces[convex], n - 2))
-        for f, face in zip(faces[~convex], idx[~convex]):
+        face_out.append(np.repeat(faces[fans], n - 2))
+        for f, face in zip(faces[~fans], idx[~fans]):
             local, ok = _ear_clip(points[face])
             concave_fallback += not ok
             out.append(face[local])
@@ -265,8 +268,9 @@ def _ear_clip(poly: np.ndarray) -> tuple[np.ndarray, bool]:
 
 def _parallelogram_areas(points: np.ndarray, tris: np.ndarray) -> np.ndarray:
     """``|(p1 - p0) x (p2 - p0)|`` per triangle (T,): twice each triangle's area."""
-    p = points[tris]
-    return np.linalg.norm(cross3(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+    # each corner gathered on its own, (T, 3) contiguous: the same values as points[tris], in half the time
+    p0, p1, p2 = (np.take(points, tris[:, k], axis=0) for k in range(3))
+    return np.linalg.norm(cross3(p1 - p0, p2 - p0), axis=1)
 
 
 def _drop_zero_area(points: np.ndarray, tris: np.ndarray) -> np.ndarray:

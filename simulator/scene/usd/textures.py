@@ -1,4 +1,5 @@
-"""Textures a stage points at: bytes through the asset resolver, and a UsdUVTexture's mean value.
+"""Textures a stage points at: bytes through the asset resolver, a UsdUVTexture's mean value, and
+the per-texel opacity of a texture that drives ``inputs:opacity`` (:func:`_coverage_texture`).
 
 probesim's surfaces are uniform, so a ``diffuseColor`` connected to a
 ``UsdUVTexture`` is read as the texture's *mean* value (the mean over its
@@ -82,6 +83,12 @@ def _mean_rgba(ctx: _Context, resolved: str, colour_space: str) -> np.ndarray | 
 
 
 def _read_mean_rgba(resolved: str, colour_space: str) -> np.ndarray | None:
+    rgba = _read_rgba(resolved, colour_space)
+    return None if rgba is None else rgba.reshape(-1, 4).mean(axis=0)
+
+
+def _read_rgba(resolved: str, colour_space: str) -> np.ndarray | None:
+    """Decoded RGBA texels (H, W, 4) of a texture file, row 0 at the top; None if unreadable."""
     data = _asset_data(resolved)
     if data is None:
         return None
@@ -95,4 +102,48 @@ def _read_mean_rgba(resolved: str, colour_space: str) -> np.ndarray | None:
     alpha = px[..., 3] if c == 4 else (px[..., 1] if c == 2 else np.ones(px.shape[:2]))
     if colour_space == "sRGB" or (colour_space == "auto" and image.integer_bits == 8):
         rgb = srgb_to_linear(rgb)
-    return np.concatenate([rgb.reshape(-1, 3).mean(axis=0), [float(alpha.mean())]])
+    return np.concatenate([rgb, alpha[..., None]], axis=-1)
+
+
+def _coverage_texture(ctx: _Context, output: Usd.Attribute, where: str):
+    """The per-texel opacity of the UsdUVTexture output ``output`` (a float output: ``r``, ``g``, ``b``
+    or ``a``), as ``(index into ctx.coverage_textures, "")``, or ``(-1, why)`` when it is not read per
+    texel (``why`` names what is missing; the mean is used).
+
+    Raises
+    ------
+    UserError
+        ``<stage>: <shader>: inputs:file @<path>@ (feeding <where>): not found or unreadable``: an
+        opacity texture decides what blocks light, so a file that cannot be read is an error.
+    """
+    from simulator.scene.surfaces import CoverageTexture
+    from simulator.scene.usd.texcoords import _st_source, _wrap_mode
+
+    shader = UsdShade.Shader(output.GetPrim())
+    out_name = UsdShade.Output(output).GetBaseName()
+    chans = _OUTPUT_CHANNELS.get(out_name, [])
+    if not shader or shader.GetShaderId() != "UsdUVTexture" or len(chans) != 1:
+        return -1, "not a one-channel UsdUVTexture output"
+    asset = _get(ctx, shader.GetInput("file").GetAttr()) if shader.GetInput("file") else None
+    if asset is None or not asset.path:
+        return -1, "a UsdUVTexture without a file"
+    space = _source_colour_space(ctx, shader)
+    if _mean_rgba(ctx, asset.resolvedPath, space) is None:
+        raise ctx.error(shader.GetPrim(), f"inputs:file @{asset.path}@ (feeding {where}): not found or unreadable")
+    st = _st_source(ctx, shader)
+    if isinstance(st, str):
+        return -1, st
+    primvar, affine = st
+    c = chans[0]
+    scale = _float4(ctx, shader, "scale", (1.0, 1.0, 1.0, 1.0))[c]
+    bias = _float4(ctx, shader, "bias", (0.0, 0.0, 0.0, 0.0))[c]
+    wrap = (_wrap_mode(ctx, shader, "wrapS"), _wrap_mode(ctx, shader, "wrapT"))
+    key = (asset.resolvedPath, space, c, scale, bias, wrap, primvar, tuple(affine.ravel()))
+    if key not in ctx.coverage_texture_index:
+        rgba = _read_rgba(asset.resolvedPath, space)
+        opacity = np.clip(scale * rgba[..., c] + bias, 0.0, 1.0).astype(np.float32)
+        ctx.coverage_texture_index[key] = len(ctx.coverage_textures)
+        ctx.coverage_textures.append(CoverageTexture(
+            name=f"{shader.GetPath()} ({asset.path})", opacity=opacity, wrap=wrap,
+            border=float(np.clip(bias, 0.0, 1.0)), primvar=primvar, st_affine=affine))
+    return ctx.coverage_texture_index[key], ""
