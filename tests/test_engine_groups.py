@@ -44,6 +44,7 @@ def test_group_tallies_sum_to_the_total_of_the_same_pass():
     scene = _office()
     sensors = _sensors()
     eng = Engine(scene, sensors)
+    eng.split_indirect = 1  # one path a sample in the ordinary run too, as a group pass draws them
     r = eng.run_groups("path", LightGroups(_group_of(scene), 4), samples=512, seed=5)
     plain = eng.run("path", samples=512, seed=5)
     assert r.group_mean.shape == (4, len(sensors), 2) and r.group_cov.shape == (len(sensors), 2, 4, 4)

@@ -58,7 +58,9 @@ def _plain(sc, sensors, levels, groups, n, seed):
         if lv > 0:
             lights.append(replace(l, emission=(l.emission[0] * lv, l.emission[1] * lv)))
     sub = replace(group_scene(sc, []), lights=lights)
-    res = run_plan(Engine(sub, sensors), make_plan(sub, sensors, "auto", "total"), SimulationConfig(samples=n, seed=seed))
+    eng = Engine(sub, sensors)
+    eng.split_indirect = 1  # one path per sample, as a light-group pass draws them: errors compared at equal samples
+    res = run_plan(eng, make_plan(sub, sensors, "auto", "total"), SimulationConfig(samples=n, seed=seed))
     return res.mean[:, 1], res.stderr[:, 1]
 
 

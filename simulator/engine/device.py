@@ -161,6 +161,9 @@ class DeviceScene:
         n_rec = len(scene.lights) + 1  # the lights, and room for the emissive record
         rec.pick_factor = wp.ones((1 + n_sensors) * n_rec, dtype=float)
         rec.pick_tally = wp.zeros(1, dtype=wp.vec2)
+        rec.n_patch_pick = 0
+        rec.patch_pick_factor = wp.ones(1, dtype=float)
+        rec.patch_pick_tally = wp.zeros(1, dtype=wp.vec3)
         n_tri = g.n_triangles
         pts = g.points.astype(np.float32) if n_tri else np.zeros((3, 3), np.float32)
         tris = g.triangles.astype(np.int32) if n_tri else np.array([[0, 1, 2]], np.int32)
@@ -421,6 +424,32 @@ class DeviceScene:
         with wp.ScopedDevice(self.device):
             self.rec.pick_factor = wp.array(f, dtype=float)
         self._pick_factor = self.rec.pick_factor  # the record holds only its pointer
+
+    def start_patch_pick_tally(self) -> None:
+        """Zeroed per-patch sums of the pick pilot, (patches × light records) vec3."""
+        wp = warp()
+        with wp.ScopedDevice(self.device):
+            self.rec.patch_pick_tally = wp.zeros(max(1, self.layout.n_patches * int(self.rec.n_lights)), dtype=wp.vec3)
+        self._patch_pick_tally = self.rec.patch_pick_tally
+
+    def read_patch_pick_tally(self) -> np.ndarray:
+        """The pick pilot's per-patch sums, (patches, light records, 3) float64 (w·ê, w·value, visits)."""
+        t = self.rec.patch_pick_tally.numpy().astype(np.float64)
+        return t[: self.layout.n_patches * int(self.rec.n_lights)].reshape(self.layout.n_patches, int(self.rec.n_lights), 3)
+
+    def set_patch_pick_factors(self, factors: np.ndarray) -> None:
+        """The light pick's factors per patch, (patches, light records), for vertices past the first."""
+        wp = warp()
+        with wp.ScopedDevice(self.device):
+            self.rec.patch_pick_factor = wp.array(np.ascontiguousarray(factors, np.float32).reshape(-1), dtype=float)
+            self.rec.patch_pick_tally = wp.zeros(1, dtype=wp.vec3)
+            self.rec.n_patch_pick = 1
+        self._patch_pick_factor = self.rec.patch_pick_factor  # the record holds only its pointer
+
+    def use_patch_pick(self, on: bool) -> None:
+        """Let the per-patch factors steer the pick (where they have been set), or the rows alone."""
+        learnt = getattr(self, "_patch_pick_factor", None) is not None
+        self.rec.n_patch_pick = 1 if on and learnt else 0
 
     def set_light_mask(self, mask: np.ndarray) -> None:
         """Lights to skip per sensor at its first vertex: ``mask`` (S, L) over

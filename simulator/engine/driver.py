@@ -55,6 +55,18 @@ PICK_PILOT_SAMPLES = 16
 #: a sensor's own first-vertex pick factor is shrunk toward all sensors'
 #: by this many pseudo-samples (a sensor's 16 pilot samples are few)
 PICK_PRIOR_SAMPLES = 4
+#: the per-patch pick pilot's samples per sensor ...
+PATCH_PICK_SAMPLES = 32
+#: ... over at most this many samples in all (the sensors evenly thinned): it runs on one worker
+PATCH_PICK_TOTAL = 1 << 16
+#: a patch's factors are shrunk toward row 0's by this many visits' worth of estimate
+PATCH_PICK_PRIOR_VISITS = 8
+#: the split pilot's direct and indirect samples per irradiance sensor (Engine._split_rule) ...
+SPLIT_PILOT_SAMPLES = 16
+#: ... the most indirect paths a sample may read ...
+SPLIT_MAX = 8
+#: ... and the least gain predicted, variance × rays, for which a sample is split
+SPLIT_MIN_GAIN = 1.2
 #: the roulette threshold's pilot (methods.rr_pilot_choice): samples per sensor, at least this many in all,
 #: over at most this many sensors (evenly spread over the run's)
 RR_PILOT_SAMPLES = 8
@@ -238,6 +250,14 @@ class Engine:
         self._pick_learnt: tuple | None = None  # (factors, per-row gains) of the latest pick pilot
         self._pick_scaled = False  # the device's pick factors are steered by a group pass's scenarios
         self._mask_version = 0
+        #: paths: learn the light pick's factors per surface patch too, for the vertices past the first
+        #: (kernels.light_pick; docs/DESIGN.md §Next-event estimation); False: one row serves them all
+        self.patch_pick = True
+        #: paths: each irradiance sample reads its direct light once and the mean of K indirect paths;
+        #: "auto": K by a pilot (:meth:`_split_rule`), an int: that K (1: no split)
+        self.split_indirect: int | str = "auto"
+        self._split_found: dict[tuple, dict] = {}
+        self.split_pilot: dict | None = None  #: what the split pilot measured for the latest path run
 
     def _upload(self) -> DeviceScene:
         """Import Warp, load the kernels and upload the scene, on first need: a
@@ -343,6 +363,7 @@ class Engine:
         p.tally_chunk = 1
         p.pick_light = 0
         p.tally_pick = 0
+        p.split_indirect = 0
         p.rr_threshold = float(self.rr_threshold if self.rr_threshold is not None else self._rr_rule())
         return p
 
@@ -376,6 +397,7 @@ class Engine:
         """Use these light-pick factors, (1 + S, L) over the light records
         (see :meth:`_prepare_pick`), instead of learning them by a pilot."""
         self._dev.set_pick_factors(np.asarray(factors, np.float64))
+        self._dev.use_patch_pick(False)
         self._pick_key = "fixed"
 
     def _prepare_pick(self, method: str, seed: int, max_depth: int, component: str, ids: np.ndarray) -> None:
@@ -394,6 +416,10 @@ class Engine:
         n_l = int(dev.rec.n_lights)
         params = self.trace_params(method, (seed + 0x3C6EF372) & 0x7FFFFFFF, max_depth, component)
         params.tally_pick = 1
+        per_patch = bool(self.patch_pick and dev.layout.usable and METHOD_FLAGS[method][3] and params.bounces != 0
+                         and self.light_pick_mode(method) != "off")
+        if per_patch:  # first: its launch resets the per-thread tallies the rows are learnt from below
+            self._patch_pick_pilot(method, seed, max_depth, component, ids)
         count = np.full(len(ids), PICK_PILOT_SAMPLES, np.int64)
         t_sensor, tally = self._launch(params, ids, np.zeros(len(ids), np.int64), count, tally=True)
         tally = tally.reshape(len(t_sensor), 2, n_l, 2).astype(np.float64)
@@ -421,10 +447,82 @@ class Engine:
             self.piece_factors = pf
             factors[:, self.emissive_light] = 1.0
         dev.set_pick_factors(factors)
+        if per_patch:
+            dev.set_patch_pick_factors(patch_pick_factors(dev.read_patch_pick_tally(), factors[0]))
+        else:
+            dev.use_patch_pick(False)
         self._pick_key = key
         # what each light gave per row, for a pass serving several scenarios (scenario_pick)
         self._pick_learnt = (factors, np.concatenate([tally[:, 1].sum(0)[None, :, 1], got], axis=0))
         self._pick_scaled = False
+
+    def _patch_pick_pilot(self, method: str, seed: int, max_depth: int, component: str, ids: np.ndarray) -> None:
+        """The per-patch sums of the light pick (kernels.light_pick.tally_patch_pick), on the device:
+        PATCH_PICK_SAMPLES samples of every light at every vertex for up to PATCH_PICK_TOTAL /
+        PATCH_PICK_SAMPLES of these sensors (evenly spread over them), on one CPU worker (the sums
+        are then the same bytes whatever the thread count), from a seed stream of their own."""
+        params = self.trace_params(method, (seed + 0x78DDE6E6) & 0x7FFFFFFF, max_depth, component)
+        params.tally_pick = 2
+        k = max(1, PATCH_PICK_TOTAL // PATCH_PICK_SAMPLES)
+        sub = ids if len(ids) <= k else np.unique(ids[np.linspace(0, len(ids) - 1, k).round().astype(np.int64)])
+        self._dev.start_patch_pick_tally()
+        threads = self.threads
+        self.threads = 1
+        try:
+            self._launch(params, sub, np.zeros(len(sub), np.int64), np.full(len(sub), PATCH_PICK_SAMPLES, np.int64),
+                         tally=True)  # fmt: skip
+        finally:
+            self.threads = threads
+
+    def _split_rule(self, params, ids: np.ndarray) -> int:
+        """K, the indirect paths per irradiance sample (kernels.estimators.split_irradiance), from a
+        pilot of SPLIT_PILOT_SAMPLES direct and as many indirect samples of each irradiance sensor in
+        ``ids`` (their own seed stream): with V_d, V_i the relative variances per sample summed over
+        the sensors (over the square of the total reading) and c_d, c_i the rays per sample,
+        K = √(V_i·c_d / (V_d·c_i)) (the Neyman allocation: the cost c_d + K·c_i times the variance
+        V_d + V_i/K is least there), rounded, within [1, SPLIT_MAX]; 1 where the predicted gain
+        (V_d + V_i)(c_d + c_i) / ((V_d + V_i/K)(c_d + K·c_i)) is under SPLIT_MIN_GAIN. Once per (run's
+        strategies, sensors)."""
+        ids = np.asarray([i for i in ids if self.sensors[i].kind == SensorKind.IRRADIANCE], np.int64)
+        if not len(ids) or params.spectral:
+            return 1  # spectral transport: the pilot reads the grey channels only, not the responses
+        key = (params.nee, params.bsdf, params.bounces, params.guide_c, params.pick_light, params.rr_threshold,
+               params.seed, ids.tobytes())  # fmt: skip
+        if key in self._split_found:
+            self.split_pilot = self._split_found[key]
+            return self.split_pilot["k"]
+        tb = time.perf_counter()
+        parts = []
+        kept = (params.seed, params.bounces, params.skip_direct, params.count_rays, params.split_indirect,
+                self.rays_traced)  # the run's, restored below (a struct's copy would share its fields)
+        try:
+            for bounces, skip in ((0, 0), (kept[1], 1)):
+                params.seed = (int(kept[0]) + 0x1B873593) & 0x7FFFFFFF
+                params.bounces, params.skip_direct, params.count_rays, params.split_indirect = bounces, skip, 1, 0
+                self.rays_traced = 0
+                _, cnt, mean, m2, *_ = self._launch(params, ids, np.zeros(len(ids), np.int64),
+                                                    np.full(len(ids), SPLIT_PILOT_SAMPLES, np.int64))  # fmt: skip
+                rays = self.rays_traced / max(1, int(cnt.sum()))
+                parts.append((mean[:, 1], m2[:, 1] / np.maximum(cnt - 1, 1), max(rays, 1.0)))
+        finally:
+            (params.seed, params.bounces, params.skip_direct, params.count_rays, params.split_indirect,
+             self.rays_traced) = kept
+        (m_d, v_d, c_d), (m_i, v_i, c_i) = parts
+        m = m_d + m_i
+        ok = m > 0
+        rv_d = float((v_d[ok] / m[ok] ** 2).sum())
+        rv_i = float((v_i[ok] / m[ok] ** 2).sum())
+        k = 1
+        if rv_i > 0:
+            k = SPLIT_MAX if rv_d <= 0 else int(np.clip(round(float(np.sqrt(rv_i * c_d / (rv_d * c_i)))), 1, SPLIT_MAX))
+        gain = (rv_d + rv_i) * (c_d + c_i) / max((rv_d + rv_i / k) * (c_d + k * c_i), 1e-300) if rv_i > 0 else 1.0
+        if gain < SPLIT_MIN_GAIN:
+            k = 1  # the split would save too little (no indirect noise, or cheap direct light) to pay for the change
+        self.split_pilot = {"k": k, "relvar_direct": rv_d / max(1, int(ok.sum())),
+                            "relvar_indirect": rv_i / max(1, int(ok.sum())), "rays_direct": c_d, "rays_indirect": c_i,
+                            "predicted_gain": gain, "seconds": time.perf_counter() - tb}  # fmt: skip
+        self._split_found[key] = self.split_pilot
+        return k
 
     def _scenario_pick(self, groups: LightGroups | None, mode: int) -> int:
         """Steer the learnt pick toward the scenarios a group pass serves (``groups.pick_levels``,
@@ -437,6 +535,7 @@ class Engine:
         if groups is None or groups.pick_levels is None:
             if self._pick_scaled:
                 self._dev.set_pick_factors(factors)
+                self._dev.use_patch_pick(True)
                 self._pick_scaled = False
             return mode
         from simulator.engine.scenario_pick import MAX_SPREAD, light_levels, pick_spread, scenario_multipliers
@@ -452,6 +551,7 @@ class Engine:
             pb[: len(groups.patch_base)] = groups.patch_base
         d = light_levels(groups.pick_levels, lg, pb)
         self._dev.set_pick_factors(factors * scenario_multipliers(got, d))
+        self._dev.use_patch_pick(False)  # the patches' factors are not steered by the scenarios: the rows serve
         self._pick_scaled = True
         rows = got[:1] if mode == LIGHT_PICK_MODES["after_first"] else got  # the rows the mode reads
         self.pick_spread = float(pick_spread(rows, d).max())
@@ -688,7 +788,7 @@ class Engine:
         max_depth: int = -1,
         component: str = "total",
         progress: Callable[[Progress], None] | None = None,
-        count_rays: bool = False,
+        count_rays: bool | int = False,
         sensor_ids: np.ndarray | None = None,
         confidence: float = 0.95,
         stop: StopFlag | None = None,
@@ -724,6 +824,10 @@ class Engine:
         True and ``unfinished`` marks the sensors stopped short. Without
         ``stop``, Ctrl-C raises ``KeyboardInterrupt`` once the batch is done.
 
+        ``count_rays``: count the rays traced in ``rays_traced`` (True or 1:
+        every ray; 2: shadow rays only, so two runs of the same samples split
+        them by kind, as ``benchmarks/profile_office.py`` does).
+
         ``groups``: also tally every sample's light per light group on the
         same paths (one pass), giving ``group_mean`` and ``group_cov``; with
         ``groups.levels`` an adaptive run stops on the recombined readings
@@ -749,11 +853,18 @@ class Engine:
         if method in GUIDED_METHODS:
             self.ensure_guide(seed, ids_all, max_depth)
         params = self.trace_params(method, seed, max_depth, component)
-        params.count_rays = 1 if count_rays else 0
+        params.count_rays = int(count_rays)  # True: every ray; 2: shadow rays only (kernels.rays)
         params.pick_light = LIGHT_PICK_MODES[self.light_pick_mode(method)]
         if params.pick_light or (params.nee and int(self._dev.rec.n_pieces) > 1):
             self._prepare_pick(method, seed, max_depth, component, ids_all)  # and the emitter pieces' factors
             params.pick_light = self._scenario_pick(groups, params.pick_light)
+        self.split_pilot = None
+        if METHOD_FLAGS[method][3] and params.bounces != 0 and component == "total" and groups is None:
+            # before the roulette and first-batch pilots, so that they measure the samples the run draws
+            k = self.split_indirect
+            if k == "auto":
+                k = self._split_rule(params, ids_all)
+            params.split_indirect = int(k) if int(k) > 1 else 0
         adaptive = rel_error is not None
         choose = adaptive and choose_first_batch
         z = z_for_confidence(confidence)
@@ -1137,4 +1248,16 @@ def _split_batch(ids: np.ndarray, first: np.ndarray, count: np.ndarray, max_samp
     if cur[0]:
         out.append(cur)
     return [(np.asarray(a, np.int64), np.asarray(b, np.int64), np.asarray(c, np.int64)) for a, b, c in out]
+
+
+def patch_pick_factors(tally: np.ndarray, row0: np.ndarray) -> np.ndarray:
+    """The light pick's factors per patch, (N, L): Σ w·value / Σ w·ê over the pilot's vertices on
+    each patch, shrunk toward row 0's factors ``row0`` (L,) by PATCH_PICK_PRIOR_VISITS visits' worth
+    of the patch's mean estimate; a patch the pilot never reached keeps row 0's. ``tally``: (N, L, 3)
+    sums of (w·ê, w·value, visits)."""
+    est, got, visits = tally[..., 0], tally[..., 1], tally[..., 2]
+    mean_est = np.where(visits > 0, est / np.where(visits > 0, visits, 1.0), 0.0)
+    prior = PATCH_PICK_PRIOR_VISITS * mean_est
+    den = est + prior
+    return np.where(den > 0, (got + prior * row0[None]) / np.where(den > 0, den, 1.0), row0[None])
 

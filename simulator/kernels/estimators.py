@@ -46,7 +46,7 @@ from simulator.scene.model import Sensor, SensorKind
 
 from .group_tally import clear_group_sample, fold_group_sample, tally_group, tregenza_patch
 from .guide import glossy_mixture_factor, guide_fraction, guide_row, guided_step, mixture_factor, pdf_guide, tally_patch
-from .light_pick import LightPick, is_delta, pick_light, pick_scale, picks_at, tally_pick
+from .light_pick import LightPick, is_delta, pick_light, pick_light_at, pick_scale, picks_at, tally_patch_pick, tally_pick
 from .lights import (  # noqa: F401  (GuideRec, LightRec, SceneRec re-exported for the engine)
     RAY_INF,
     GuideRec,
@@ -60,7 +60,7 @@ from .lights import (  # noqa: F401  (GuideRec, LightRec, SceneRec re-exported f
     sample_light,
     tri_emitted,
 )
-from .rays import count_ray, first_hit, near_light, offset_length, unoccluded  # noqa: F401  (unoccluded: probes)
+from .rays import count_ray, count_shadow_ray, first_hit, near_light, offset_length, unoccluded  # noqa: F401  (unoccluded: probes)
 from .records import SensorRec, TraceParams
 from .sampling import (
     INV_PI,
@@ -308,7 +308,7 @@ def vertex_estimate(
         pk = LightPick()
         if params.nee != 0 and count and delta == 0:
             if picks_at(params, depth):
-                pk = pick_light(scene, p, n, params.mask_row, depth, rng)
+                pk = pick_light_at(scene, p, n, params.mask_row, depth, cur_face, rng)
                 rng = pk.rng
             for li in range(scene.n_lights):
                 u = wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng))
@@ -342,7 +342,7 @@ def vertex_estimate(
                             pdf_dir = (1.0 - c_v) * pdf_cosine_hemisphere(wp.dot(ls.wi, n))
                         w = power_heuristic(sel * ls.pdf, pdf_dir)
                     if w > 0.0 or params.tally_pick != 0:
-                        count_ray(scene, params)
+                        count_shadow_ray(scene, params)
                         clear = bool(True)
                         if scene.surfaces != 0:  # through panes and cut-outs, at their transmittance
                             vis = shadow_ray_pass(scene, o, p, li, ls)
@@ -364,6 +364,8 @@ def vertex_estimate(
                                 tally_patch(scene, params, prev_row, cur_face, p, c_light)
                 if params.tally_pick != 0:
                     tally_pick(scene, params, li, p, n, depth, weight, got, ls.tri)
+                    if params.tally_pick == 2 and depth > 0:
+                        tally_patch_pick(scene, li, cur_face, p, n, weight, got)
         # -- delta lights seen in flat mirrors: their image sources (kernels.mirrors); light reflected
         #    on the way, so indirect (counted at a sensor's vertex even without its direct light)
         if params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes > 0:
@@ -371,7 +373,7 @@ def vertex_estimate(
                 if not is_delta(scene.lights[li]):
                     continue
                 for k in range(scene.n_mirror_planes):
-                    count_ray(scene, params)
+                    count_shadow_ray(scene, params)
                     im = image_source(scene, li, k, p, n, o)
                     v = im.value
                     tint_m = tint
@@ -734,9 +736,29 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
 
 
 @wp.func
+def split_irradiance(scene: SceneRec, p: wp.vec3, n: wp.vec3, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+    """One estimate of the irradiance on (p, n): with ``params.split_indirect`` = K ≥ 2 (paths, total
+    light) the direct light once (next-event estimation and the cosine ray's emitters, bounces 0) plus
+    the mean of K indirect paths (each skipping the sensor's own direct light), every part from a
+    stream of its own: E = E_d + E_i, so the sum is unbiased, and its variance is v_d + v_i/K for the
+    cost c_d + K·c_i (the Neyman allocation of samples between the two, in one pass)."""
+    if params.split_indirect <= 1 or params.bounces == 0 or params.skip_direct != 0:
+        return vertex_irradiance(scene, p, n, 1.0, params, params.skip_direct, rng_in)
+    rng = rng_in
+    seed = wp.randi(rng)
+    prm = params
+    prm.bounces = 0
+    total = vertex_irradiance(scene, p, n, 1.0, prm, 0, wp.rand_init(seed, 0))
+    inv_k = 1.0 / float(params.split_indirect)
+    for k in range(params.split_indirect):
+        total += vertex_irradiance(scene, p, n, inv_k, params, 1, wp.rand_init(seed, k + 1))
+    return total
+
+
+@wp.func
 def sample_irradiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
     """One estimate of the irradiance on the sensor's side."""
-    return vertex_irradiance(scene, s.position, s.normal, 1.0, params, params.skip_direct, rng_in)
+    return split_irradiance(scene, s.position, s.normal, params, rng_in)
 
 
 @wp.func

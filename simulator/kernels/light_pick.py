@@ -49,6 +49,7 @@ from simulator.scene.model import LightKind
 
 from .lights import LightRec, SceneRec
 from .lights.emissive import piece_estimate, piece_probability, piece_totals
+from .guide import patch_at
 from .records import TraceParams
 from .sampling import PI
 
@@ -179,9 +180,12 @@ def light_estimate(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3) -> wp.vec2:
 
 
 @wp.func
-def pick_factor(scene: SceneRec, row: int, li: int) -> float:
+def pick_factor(scene: SceneRec, row: int, patch: int, li: int) -> float:
     """The learned factor f_li of the pick (row 0: every vertex past the
-    first; row 1 + s: sensor s's first vertex)."""
+    first; row 1 + s: sensor s's first vertex), or, where the pilot learnt
+    them per surface patch (``patch`` ≥ 0: a vertex past the first), its patch's."""
+    if patch >= 0:
+        return scene.patch_pick_factor[patch * scene.n_lights + li]
     return scene.pick_factor[row * scene.n_lights + li]
 
 
@@ -192,6 +196,7 @@ class LightPick:
     sum_w: float  # Σ w_l over the candidates
     sum_c: float  # Σ c_l
     row: int  # the factor row used at this vertex
+    patch: int  # the surface patch whose factors it uses, −1: the row's
     rng: wp.uint32  # the caller's random state after the pick's draws
 
 
@@ -202,13 +207,13 @@ def pick_mix(sum_w: float) -> float:
 
 
 @wp.func
-def pick_weights(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3, row: int, masked: bool) -> wp.vec2:
+def pick_weights(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3, row: int, patch: int, masked: bool) -> wp.vec2:
     """(w_li, c_li) at the vertex; (0, 0) for delta lights and masked ones."""
     l = scene.lights[li]
     if masked or is_delta(l):
         return wp.vec2(0.0, 0.0)
     ec = light_estimate(scene, li, p, n)
-    return wp.vec2(ec[0] * pick_factor(scene, row, li), ec[1])
+    return wp.vec2(ec[0] * pick_factor(scene, row, patch, li), ec[1])
 
 
 @wp.func
@@ -220,16 +225,22 @@ def light_masked(scene: SceneRec, mask_row: int, depth: int, li: int) -> bool:
 
 
 @wp.func
-def pick_light(scene: SceneRec, p: wp.vec3, n: wp.vec3, mask_row: int, depth: int, rng: wp.uint32) -> LightPick:
+def pick_light_at(scene: SceneRec, p: wp.vec3, n: wp.vec3, mask_row: int, depth: int, face: int, rng: wp.uint32) -> LightPick:
     """Draw one light with area for the vertex (p, n) with P(li | x) (module
     docstring), by two reservoirs in one pass: one over the weights w, one
-    over the c, the mixture then chosen with probability α."""
+    over the c, the mixture then chosen with probability α.
+
+    The vertex lies on triangle ``face`` (−1: a sensor); past the first vertex, where the pilot
+    learnt factors per patch (``scene.n_patch_pick``), its patch's factors steer the pick."""
     pk = LightPick()
     pk.li = -1
     pk.prob = 0.0
     pk.sum_w = 0.0
     pk.sum_c = 0.0
     pk.row = wp.where(depth == 0 and mask_row >= 0, 1 + mask_row, 0)
+    pk.patch = -1
+    if scene.n_patch_pick > 0 and depth > 0 and face >= 0:
+        pk.patch = patch_at(scene, face, p)
     pick_w = int(-1)
     pick_c = int(-1)
     w_of_w = float(0.0)
@@ -239,7 +250,7 @@ def pick_light(scene: SceneRec, p: wp.vec3, n: wp.vec3, mask_row: int, depth: in
     state = rng
     pk.rng = rng
     for li in range(scene.n_lights):
-        wc = pick_weights(scene, li, p, n, pk.row, light_masked(scene, mask_row, depth, li))
+        wc = pick_weights(scene, li, p, n, pk.row, pk.patch, light_masked(scene, mask_row, depth, li))
         if wc[0] > 0.0:
             pk.sum_w += wc[0]
             if wp.randf(state) * pk.sum_w < wc[0]:
@@ -270,6 +281,12 @@ def pick_light(scene: SceneRec, p: wp.vec3, n: wp.vec3, mask_row: int, depth: in
 
 
 @wp.func
+def pick_light(scene: SceneRec, p: wp.vec3, n: wp.vec3, mask_row: int, depth: int, rng: wp.uint32) -> LightPick:
+    """:func:`pick_light_at` with the factors of the rows only (no patch)."""
+    return pick_light_at(scene, p, n, mask_row, depth, -1, rng)
+
+
+@wp.func
 def mixed_probability(w: float, c: float, sum_w: float, sum_c: float) -> float:
     """(1 − α)·w/Σw + α·c/Σc, with α = :func:`pick_mix` (Σ = 0 terms dropped)."""
     a = pick_mix(sum_w)
@@ -287,7 +304,7 @@ def pick_probability(scene: SceneRec, pk: LightPick, li: int, p: wp.vec3, n: wp.
     ``pk``); 1 for delta lights, which are always sampled."""
     if is_delta(scene.lights[li]):
         return 1.0
-    wc = pick_weights(scene, li, p, n, pk.row, light_masked(scene, mask_row, depth, li))
+    wc = pick_weights(scene, li, p, n, pk.row, pk.patch, light_masked(scene, mask_row, depth, li))
     return mixed_probability(wc[0], wc[1], pk.sum_w, pk.sum_c)
 
 
@@ -334,3 +351,17 @@ def tally_pick(
     k = (params.thread * 2 + slot) * scene.n_lights + li
     e = light_estimate(scene, li, p, n)
     scene.pick_tally[k] = scene.pick_tally[k] + weight * wp.vec2(e[0], importance(got))
+
+
+@wp.func
+def tally_patch_pick(scene: SceneRec, li: int, face: int, p: wp.vec3, n: wp.vec3, weight: float, got: wp.vec2):
+    """A one-worker pilot's sums for light ``li``'s factor at the patch of the vertex p on triangle
+    ``face`` (a vertex past the first): weight × ê, weight × the shadowed value, and one visit.
+    Warp's CPU atomics are not atomic across workers, so the pilot runs on one (its sums are then
+    the same whatever the run's thread count)."""
+    if is_delta(scene.lights[li]) or face < 0:
+        return
+    e = light_estimate(scene, li, p, n)
+    k = patch_at(scene, face, p) * scene.n_lights + li
+    scene.patch_pick_tally[k] = scene.patch_pick_tally[k] + wp.vec3(weight * e[0], weight * importance(got), 1.0)
+

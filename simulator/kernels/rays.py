@@ -25,7 +25,16 @@ def offset_length(scene: SceneRec, p: wp.vec3) -> float:
 
 @wp.func
 def count_ray(scene: SceneRec, params: TraceParams):
-    """Tally one ray for ``probesim bench`` (a branch when counting is off)."""
+    """Tally one closest-hit ray for ``probesim bench`` (a branch when counting
+    is off): counted in mode 1 (every ray), not in mode 2 (shadow rays only)."""
+    if params.count_rays == 1:
+        scene.ray_counts[params.thread] = scene.ray_counts[params.thread] + 1
+
+
+@wp.func
+def count_shadow_ray(scene: SceneRec, params: TraceParams):
+    """Tally one shadow ray (a next-event visibility test): counted in modes 1
+    and 2, so a run in mode 2 splits the rays of one in mode 1 by kind."""
     if params.count_rays != 0:
         scene.ray_counts[params.thread] = scene.ray_counts[params.thread] + 1
 

@@ -31,7 +31,7 @@ class TraceParams:
     skip_direct: int  # 1: leave out light that reaches the sensor without a reflection (indirect only)
     emissive_light: int  # index of the EMISSIVE light record, −1 if none
     seed: int
-    count_rays: int  # 1: count traced rays per thread in scene.ray_counts (benchmarks)
+    count_rays: int  # 1: count traced rays per thread in scene.ray_counts (benchmarks); 2: shadow rays only
     thread: int  # set by the kernel for each thread
     mask_row: int  # set by the kernel: the sensor whose light mask applies at vertex 0, −1 for none
     spectral: int  # 1: hero-wavelength transport (scene.spectral_* tables, response tallies)
@@ -56,3 +56,4 @@ class TraceParams:
     pick_light: int  # one picked light with area (light_pick.py): 0 never, 1 at every vertex, 2 past the first
     tally_pick: int  # 1: tally the light pick's pilot sums in scene.pick_tally (a pilot run)
     rr_threshold: float  # Russian roulette weight window (engine.methods.rr_threshold_rule)
+    split_indirect: int  # K ≥ 2: an irradiance sample is one direct estimate + the mean of K indirect paths (kernels.estimators.split_irradiance)

@@ -164,6 +164,10 @@ class SceneRec:
     guide: GuideRec  # surface patches for guided paths
     pick_factor: wp.array(dtype=float)  # ((1 + sensors) × n_lights): learned factors of the light pick (light_pick.py)
     pick_tally: wp.array(dtype=wp.vec2)  # (threads × 2 × n_lights): a pilot's Σ(ê, shadowed value), TraceParams.tally_pick
+    # the light pick's factors per surface patch (guide layout) for vertices past the first; n_patch_pick 0: row 0 serves all
+    n_patch_pick: int
+    patch_pick_factor: wp.array(dtype=float)  # (n_patches × n_lights), when n_patch_pick > 0
+    patch_pick_tally: wp.array(dtype=wp.vec3)  # (n_patches × n_lights): a one-worker pilot's Σ(w·ê, w·value, 1), tally_pick 2
 
 
 @wp.struct
