@@ -25,7 +25,7 @@ probability 1 − c drawn from its own random stream
 
 import warp as wp
 
-from .lights import SceneRec, tri_vertex
+from .lights import SceneRec, tri_params
 from .surface_rec import SurfRec, TexRec
 
 #: TexRec wrap codes (simulator.scene.surfaces.WRAP_MODES)
@@ -81,22 +81,10 @@ def bilinear_opacity(scene: SceneRec, t: TexRec, st: wp.vec2) -> float:
 @wp.func
 def hit_st(scene: SceneRec, face: int, p: wp.vec3) -> wp.vec2:
     """Texture coordinates at point p on triangle ``face``: its corners' st at p's barycentric weights
-    (b1, b2 from the normal equations of p − a = b1 (b − a) + b2 (c − a), clamped to the triangle)."""
-    a = tri_vertex(scene, face, 0)
-    e1 = tri_vertex(scene, face, 1) - a
-    e2 = tri_vertex(scene, face, 2) - a
-    q = p - a
-    d11 = wp.dot(e1, e1)
-    d12 = wp.dot(e1, e2)
-    d22 = wp.dot(e2, e2)
-    q1 = wp.dot(q, e1)
-    q2 = wp.dot(q, e2)
-    den = d11 * d22 - d12 * d12
-    b1 = float(0.0)
-    b2 = float(0.0)
-    if den > 0.0:
-        b1 = wp.clamp((d22 * q1 - d12 * q2) / den, 0.0, 1.0)
-        b2 = wp.clamp((d11 * q2 - d12 * q1) / den, 0.0, 1.0 - b1)
+    (:func:`~.lights.tri_params`, clamped to the triangle)."""
+    st = tri_params(scene, face, p)
+    b1 = wp.clamp(st[0], 0.0, 1.0)
+    b2 = wp.clamp(st[1], 0.0, 1.0 - b1)
     k = 3 * face
     return (1.0 - b1 - b2) * scene.tex_uv[k] + b1 * scene.tex_uv[k + 1] + b2 * scene.tex_uv[k + 2]
 

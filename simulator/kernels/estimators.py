@@ -75,14 +75,14 @@ from .sampling import (
     to_world,
 )
 from .shadows import hit_light_before, shadow_ray_clear, shadow_ray_pass
-from .surfaces import ABSORB, MIRROR, mirror, pass_through, transmittance_along
+from .surfaces import ABSORB, MIRROR, mirror, transmittance_along
 from .bsdf import Bsdf, bsdf_f, bsdf_pdf, bsdf_sample, lobe_weights, mirror_reflectance
 from .glossy import face_bsdf, is_glossy, mirror_share
 from .mirrors import image_source
 from .shaping import shaping_factor
 from .spectral import Reflection, hero_nodes, lane_response, spectral_contribution, spectral_row
 from .spectral_surfaces import (
-    bsdf_lanes, coloured_row, lane_ratio, lanes_before, mirror_lanes, pass_through_lanes, shadow_lanes,
+    bsdf_lanes, coloured_row, lane_ratio, lanes_before, mirror_lanes, pass_through_traced, shadow_lanes,
     transmittance_lanes,
 )
 
@@ -528,18 +528,12 @@ def vertex_estimate(
         hit0 = hit  # the walk's start, replayed for a light met past a coloured pane (lanes_before)
         rng0 = rng
         if scene.surfaces != 0:  # through panes and cut-outs to where the ray stops (kernels.surfaces)
-            if params.spectral != 0 and scene.spectral_panes != 0:  # coloured panes: the same draws, per lane
-                lp = pass_through_lanes(scene, params.hero, o, wi, hit, rng)
-                rng = lp.rng
-                hit = lp.hit
-                event = lp.event
-                tint_d = wp.cw_mul(tint_d, lp.tint)
-                t_tint = lp.t_tint
-            else:
-                pas = pass_through(scene, o, wi, hit, rng)
-                rng = pas.rng
-                hit = pas.hit
-                event = pas.event
+            lp = pass_through_traced(scene, params, o, wi, hit, rng)  # coloured panes: the same draws, per lane
+            rng = lp.rng
+            hit = lp.hit
+            event = lp.event
+            tint_d = wp.cw_mul(tint_d, lp.tint)
+            t_tint = lp.t_tint
         weigh = params.mis != 0 and params.nee != 0 and delta == 0 and mirror_now == 0  # MIS against p's light samples
         t_hit = hit.t
         face = hit.face
@@ -668,18 +662,12 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
             t_tint = float(RAY_INF)
             hit0 = hit
             rng0 = rng
-            if params.spectral != 0 and scene.spectral_panes != 0:
-                lp = pass_through_lanes(scene, params.hero, o, d, hit, rng)
-                rng = lp.rng
-                hit = lp.hit
-                ev = lp.event
-                tint_r = wp.cw_mul(tint_r, lp.tint)
-                t_tint = lp.t_tint
-            else:
-                pas = pass_through(scene, o, d, hit, rng)
-                rng = pas.rng
-                hit = pas.hit
-                ev = pas.event
+            lp = pass_through_traced(scene, params, o, d, hit, rng)
+            rng = lp.rng
+            hit = lp.hit
+            ev = lp.event
+            tint_r = wp.cw_mul(tint_r, lp.tint)
+            t_tint = lp.t_tint
             if ev != MIRROR and ev != ABSORB:
                 break
             for li in range(scene.n_lights):

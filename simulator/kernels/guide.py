@@ -6,7 +6,7 @@ Host side: :mod:`simulator.scene.patches` (the layout) and
 
 import warp as wp
 
-from .lights import SceneRec, tri_vertex
+from .lights import SceneRec, tri_params, tri_vertex
 from .rays import first_hit, offset_length
 from .records import TraceParams
 from .sampling import INV_PI, sample_triangle_bary
@@ -63,25 +63,6 @@ def patch_point(k: int, m: int, u: wp.vec2) -> wp.vec2:
         e1 = wp.vec2(-1.0, 0.0)
         e2 = wp.vec2(0.0, -1.0)
     return (a0 + b[0] * e1 + b[1] * e2) / fm
-
-
-@wp.func
-def tri_params(scene: SceneRec, face: int, y: wp.vec3) -> wp.vec2:
-    """(s, t) of the point y on triangle ``face``: y = a + s·(b − a) + t·(c − a)
-    (least squares, so a point off the plane by rounding projects onto it)."""
-    a = tri_vertex(scene, face, 0)
-    e1 = tri_vertex(scene, face, 1) - a
-    e2 = tri_vertex(scene, face, 2) - a
-    d = y - a
-    d00 = wp.dot(e1, e1)
-    d01 = wp.dot(e1, e2)
-    d11 = wp.dot(e2, e2)
-    d20 = wp.dot(d, e1)
-    d21 = wp.dot(d, e2)
-    den = d00 * d11 - d01 * d01
-    if den <= 0.0:
-        return wp.vec2(0.0, 0.0)
-    return wp.vec2((d11 * d20 - d01 * d21) / den, (d00 * d21 - d01 * d20) / den)
 
 
 @wp.func

@@ -33,7 +33,9 @@ from .coverage import coverage_at
 from .lights import RAY_INF, LightSample, SceneRec
 from .rays import RayHit, first_hit, offset_length
 from .shadows import shadow_segment
-from .surfaces import ABSORB, MAX_PASSES, MIRROR, PASS, SCATTER, pane_rt, pass_factor, slab_rt, surface_event
+from .records import TraceParams
+from .surfaces import (ABSORB, MAX_PASSES, MIRROR, PASS, SCATTER, next_hit_past, pane_rt, pass_factor, pass_through,
+                       slab_rt, surface_event)
 
 
 @wp.func
@@ -218,11 +220,7 @@ def walk_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, first: R
             out.event = ev
             out.rng = rng
             return out
-        start = h.t + offset_length(scene, p)
-        nxt = first_hit(scene, o + start * d, d, 1.0e30)
-        if nxt.face >= 0:
-            nxt.t = nxt.t + start
-        h = nxt
+        h = next_hit_past(scene, o, d, h)
     out.hit = h
     out.event = ABSORB
     out.rng = rng
@@ -239,6 +237,24 @@ def pass_through_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, 
     lanes as they were; one met past it takes the factors of the panes in front of it only
     (:func:`lanes_before`)."""
     return walk_lanes(scene, hero, o, d, first, rng_in, RAY_INF)
+
+
+@wp.func
+def pass_through_traced(scene: SceneRec, params: TraceParams, o: wp.vec3, d: wp.vec3, first: RayHit,
+                        rng_in: wp.uint32) -> LanePassage:
+    """The walk a traced ray takes through panes and cut-outs: :func:`pass_through_lanes` in a spectral
+    run with coloured panes, else :func:`.surfaces.pass_through` with lane factor 1 and no coloured
+    pane (``t_tint`` RAY_INF), so callers keep one set of lanes either way."""
+    if params.spectral != 0 and scene.spectral_panes != 0:
+        return pass_through_lanes(scene, params.hero, o, d, first, rng_in)
+    pas = pass_through(scene, o, d, first, rng_in)
+    out = LanePassage()
+    out.hit = pas.hit
+    out.event = pas.event
+    out.rng = pas.rng
+    out.tint = wp.vec4(1.0, 1.0, 1.0, 1.0)
+    out.t_tint = RAY_INF
+    return out
 
 
 @wp.func

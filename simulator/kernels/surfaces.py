@@ -163,6 +163,17 @@ def surface_event(scene: SceneRec, face: int, d: wp.vec3, ng: wp.vec3, p: wp.vec
     return ABSORB
 
 
+@wp.func
+def next_hit_past(scene: SceneRec, o: wp.vec3, d: wp.vec3, h: RayHit) -> RayHit:
+    """The next face along the ray (o, d) past its hit ``h``, its distance still measured from o (the
+    query starts a rounding offset past h, :func:`.rays.offset_length`); face −1 where it escapes."""
+    start = h.t + offset_length(scene, o + h.t * d)
+    nxt = first_hit(scene, o + start * d, d, 1.0e30)
+    if nxt.face >= 0:
+        nxt.t = nxt.t + start
+    return nxt
+
+
 @wp.struct
 class Passage:
     hit: RayHit  # the face where the ray stops (distance from the original origin), face −1: it escaped
@@ -191,11 +202,7 @@ def pass_through(scene: SceneRec, o: wp.vec3, d: wp.vec3, first: RayHit, rng_in:
             out.event = ev
             out.rng = rng
             return out
-        start = h.t + offset_length(scene, o + h.t * d)
-        nxt = first_hit(scene, o + start * d, d, 1.0e30)
-        if nxt.face >= 0:
-            nxt.t = nxt.t + start
-        h = nxt
+        h = next_hit_past(scene, o, d, h)
     out.hit = h
     out.event = ABSORB
     out.rng = rng

@@ -44,7 +44,7 @@ import warp as wp
 
 from simulator.scene.model import Light, LightKind
 
-from .base import RAY_INF, GuideRec, LightKernel, LightRec, LightSample, SceneRec, empty_sample, tri_emitted, tri_vertex
+from .base import RAY_INF, GuideRec, LightKernel, LightRec, LightSample, SceneRec, empty_sample, tri_emitted, tri_params, tri_vertex
 
 __all__ = [
     "KERNELS", "RAY_INF", "GuideRec", "LightKernel", "LightRec", "LightSample", "SceneRec",

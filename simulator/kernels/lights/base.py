@@ -216,6 +216,25 @@ def tri_vertex(scene: SceneRec, tri: int, k: int) -> wp.vec3:
 
 
 @wp.func
+def tri_params(scene: SceneRec, face: int, y: wp.vec3) -> wp.vec2:
+    """(s, t) of the point y on triangle ``face``: y = a + s·(b − a) + t·(c − a)
+    (least squares, so a point off the plane by rounding projects onto it); (0, 0) on a degenerate one."""
+    a = tri_vertex(scene, face, 0)
+    e1 = tri_vertex(scene, face, 1) - a
+    e2 = tri_vertex(scene, face, 2) - a
+    d = y - a
+    d00 = wp.dot(e1, e1)
+    d01 = wp.dot(e1, e2)
+    d11 = wp.dot(e2, e2)
+    d20 = wp.dot(d, e1)
+    d21 = wp.dot(d, e2)
+    den = d00 * d11 - d01 * d01
+    if den <= 0.0:
+        return wp.vec2(0.0, 0.0)
+    return wp.vec2((d11 * d20 - d01 * d21) / den, (d00 * d21 - d01 * d20) / den)
+
+
+@wp.func
 def tri_emitted(scene: SceneRec, tri: int, wo_dot_ng: float) -> wp.vec2:
     """Radiance a triangle emits toward a viewer on the side where
     dot(toward viewer, geometric normal) = ``wo_dot_ng``."""
