@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import os
 import time
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Callable
 
@@ -466,13 +467,9 @@ class Engine:
         k = max(1, PATCH_PICK_TOTAL // PATCH_PICK_SAMPLES)
         sub = ids if len(ids) <= k else np.unique(ids[np.linspace(0, len(ids) - 1, k).round().astype(np.int64)])
         self._dev.start_patch_pick_tally()
-        threads = self.threads
-        self.threads = 1
-        try:
+        with _fields_set(self, threads=1):
             self._launch(params, sub, np.zeros(len(sub), np.int64), np.full(len(sub), PATCH_PICK_SAMPLES, np.int64),
                          tally=True)  # fmt: skip
-        finally:
-            self.threads = threads
 
     def _split_rule(self, params, ids: np.ndarray) -> int:
         """K, the indirect paths per irradiance sample (kernels.estimators.split_irradiance), from a
@@ -493,20 +490,19 @@ class Engine:
             return self.split_pilot["k"]
         tb = time.perf_counter()
         parts = []
-        kept = (params.seed, params.bounces, params.skip_direct, params.count_rays, params.split_indirect,
-                self.rays_traced)  # the run's, restored below (a struct's copy would share its fields)
+        depth, rays_kept = params.bounces, self.rays_traced
         try:
-            for bounces, skip in ((0, 0), (kept[1], 1)):
-                params.seed = (int(kept[0]) + 0x1B873593) & 0x7FFFFFFF
-                params.bounces, params.skip_direct, params.count_rays, params.split_indirect = bounces, skip, 1, 0
-                self.rays_traced = 0
-                _, cnt, mean, m2, *_ = self._launch(params, ids, np.zeros(len(ids), np.int64),
-                                                    np.full(len(ids), SPLIT_PILOT_SAMPLES, np.int64))  # fmt: skip
-                rays = self.rays_traced / max(1, int(cnt.sum()))
-                parts.append((mean[:, 1], m2[:, 1] / np.maximum(cnt - 1, 1), max(rays, 1.0)))
+            with _fields_set(params, seed=(int(params.seed) + 0x1B873593) & 0x7FFFFFFF, count_rays=1,
+                             split_indirect=0, bounces=depth, skip_direct=params.skip_direct):
+                for bounces, skip in ((0, 0), (depth, 1)):
+                    params.bounces, params.skip_direct = bounces, skip
+                    self.rays_traced = 0
+                    _, cnt, mean, m2, *_ = self._launch(params, ids, np.zeros(len(ids), np.int64),
+                                                        np.full(len(ids), SPLIT_PILOT_SAMPLES, np.int64))  # fmt: skip
+                    rays = self.rays_traced / max(1, int(cnt.sum()))
+                    parts.append((mean[:, 1], m2[:, 1] / np.maximum(cnt - 1, 1), max(rays, 1.0)))
         finally:
-            (params.seed, params.bounces, params.skip_direct, params.count_rays, params.split_indirect,
-             self.rays_traced) = kept
+            self.rays_traced = rays_kept
         (m_d, v_d, c_d), (m_i, v_i, c_i) = parts
         m = m_d + m_i
         ok = m > 0
@@ -574,10 +570,6 @@ class Engine:
         if key not in self._rr_found:
             tb = time.perf_counter()
             pick, count = self._pilot_pick(ids)
-            kept = (params.seed, params.count_rays, params.rr_threshold)  # the run's, restored below
-            params.seed = (int(params.seed) + 0x5851F42D) & 0x7FFFFFFF
-            params.count_rays = 1
-
             per_sensor = {}  # t -> each pilot sensor's relative variance per sample (NaN: read 0)
 
             def measure(t: float) -> tuple[float, float, float]:
@@ -588,10 +580,9 @@ class Engine:
                 rv = np.where(np.isnan(rv), 0.0, rv)
                 return float(rv.mean()), float(rv.max()), self.rays_traced / max(1, n_drawn)
 
-            try:
+            with _fields_set(params, seed=(int(params.seed) + 0x5851F42D) & 0x7FFFFFFF, count_rays=1,
+                             rr_threshold=params.rr_threshold):
                 t, tried = rr_pilot_choice(t_rule, measure, first_batch, z, rel_error)
-            finally:
-                params.seed, params.count_rays, params.rr_threshold = kept
             self.rays_traced = 0
             self._rr_found[key] = {"threshold": t, "rule": t_rule, "tried": tried, "seconds": time.perf_counter() - tb,
                                    "relvar": per_sensor[float(t)]}
@@ -629,12 +620,8 @@ class Engine:
         if rr_ran:
             rv = self.rr_pilot["relvar"]
         else:
-            kept = params.seed
-            params.seed = (int(params.seed) + 0x1B873593) & 0x7FFFFFFF
-            try:
+            with _fields_set(params, seed=(int(params.seed) + 0x1B873593) & 0x7FFFFFFF):
                 rv, _ = self._pilot_relvar(params, pick, count)
-            finally:
-                params.seed = kept
         first = first_batch_from_pilot(rv, z, rel_error, upper, pilot_samples=int(count.min()))
         finite = rv[np.isfinite(rv)]
         return {"first_batch": first, "chosen_by": "pilot", "upper": int(upper), "pilot_samples": int(count.min()),
@@ -1229,6 +1216,21 @@ def _recombined(mean: np.ndarray, cov: np.ndarray, levels: np.ndarray) -> tuple[
         var = np.einsum("jg,scgh,jh->sjc", d, cov, d)
     se = np.sqrt(np.where(np.isnan(var), np.inf, np.maximum(var, 0.0)))
     return val.reshape(len(val), -1), se.reshape(len(se), -1)
+
+
+@contextmanager
+def _fields_set(rec, **values):
+    """Set attributes of ``rec`` (the launch parameters, a Warp struct, or the engine) for a pilot's
+    launches and restore the run's values after, however the block ends; the launch parameters are
+    changed in place because a struct's copy would share its array fields with the original."""
+    kept = {name: getattr(rec, name) for name in values}
+    for name, value in values.items():
+        setattr(rec, name, value)
+    try:
+        yield rec
+    finally:
+        for name, value in kept.items():
+            setattr(rec, name, value)
 
 
 def _split_batch(ids: np.ndarray, first: np.ndarray, count: np.ndarray, max_samples: int) -> list[tuple]:
