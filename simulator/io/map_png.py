@@ -136,31 +136,19 @@ def map_png(values: np.ndarray, extent_m: tuple[float, float], title_lines: list
 
 
 def png_bytes(rgb: np.ndarray, level: int = 3) -> bytes:
-    """An 8-bit RGB PNG of ``rgb`` (H, W, 3) uint8: one IDAT of unfiltered rows (filter type 0 on
-    every row), deflated at zlib ``level``.
+    """An 8-bit RGB PNG of ``rgb`` (H, W, 3) uint8, written by Pillow at zlib ``level``.
 
-    Pillow's writer chooses a filter per row and deflates at level 6, ~7 ms for a 640 × 480 map;
-    this, ~1.5 ms, for a file about 1.4× the size (a map is mostly flat colour).
-
-    Layout (PNG specification, 2nd edition): the 8-byte signature, then chunks of
-    ``length (4 bytes, big-endian) | type | data | CRC-32 of type and data``: IHDR (width,
-    height, bit depth 8, colour type 2 = RGB, compression 0, filter 0, interlace 0), IDAT (the
-    zlib stream of each row prefixed by its filter byte), IEND.
+    Level 3 rather than Pillow's default 6: a map is mostly flat colour, and
+    a 640 × 480 map is encoded in ~2.7 ms instead of ~4.2 ms (the warm runs of
+    a parametric study write one per run), for a file about 3× the size.
     """
-    import struct
-    import zlib
+    import io
 
-    rgb = np.ascontiguousarray(rgb, np.uint8)
-    h, w = rgb.shape[:2]
-    rows = np.zeros((h, 1 + 3 * w), np.uint8)
-    rows[:, 1:] = rgb.reshape(h, 3 * w)
+    from PIL import Image
 
-    def chunk(kind: bytes, data: bytes) -> bytes:
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
-
-    header = struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0)
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(rows.tobytes(), level))
-            + chunk(b"IEND", b""))
+    out = io.BytesIO()
+    Image.fromarray(np.ascontiguousarray(rgb, np.uint8), "RGB").save(out, "PNG", compress_level=level)
+    return out.getvalue()
 
 
 def _vertical_text(img, text: str, font, centre: tuple[float, float]) -> None:
