@@ -15,18 +15,17 @@ kept (each S float64).
 from __future__ import annotations
 
 import hashlib
-import threading
-from collections import OrderedDict
 
 import numpy as np
+
+from simulator.memo import Kept
 
 __all__ = ["MAX_ENTRIES", "digest", "factor", "clear"]
 
 #: factors kept (one per light and receiver chunk; least recently used dropped first)
 MAX_ENTRIES = 64
 
-_entries: OrderedDict = OrderedDict()
-_lock = threading.Lock()
+_entries = Kept(MAX_ENTRIES)
 
 
 def digest(*arrays) -> bytes:
@@ -41,20 +40,14 @@ def digest(*arrays) -> bytes:
 
 def factor(key: bytes, compute) -> np.ndarray:
     """The kept factor under ``key``, else ``compute()`` (an (S,) array), kept. A copy either way."""
-    with _lock:
-        e = _entries.get(key)
-        if e is not None:
-            _entries.move_to_end(key)
-            return e.copy()
+    e = _entries.get(key)
+    if e is not None:
+        return e.copy()
     e = np.array(compute(), np.float64)
-    with _lock:
-        _entries[key] = e.copy()
-        while len(_entries) > MAX_ENTRIES:
-            _entries.popitem(last=False)
+    _entries.put(key, e.copy())
     return e
 
 
 def clear() -> None:
     """Forget every kept factor."""
-    with _lock:
-        _entries.clear()
+    _entries.clear()

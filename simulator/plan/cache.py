@@ -22,10 +22,10 @@ record; nothing changes it).
 from __future__ import annotations
 
 import hashlib
-import threading
-from collections import OrderedDict
 
 import numpy as np
+
+from simulator.memo import Kept
 
 __all__ = ["MAX_ENTRIES", "MAX_SENSORS", "sensors_digest", "cached_plan", "clear"]
 
@@ -34,8 +34,7 @@ MAX_ENTRIES = 8
 #: sensors in all the kept plans (a plan holds ~1 kB per sensor with its encoded record)
 MAX_SENSORS = 1 << 18
 
-_entries: OrderedDict = OrderedDict()
-_lock = threading.Lock()
+_entries = Kept(MAX_ENTRIES, MAX_SENSORS)
 
 
 def sensors_digest(sensors) -> bytes:
@@ -66,22 +65,15 @@ def cached_plan(make, token: int | None, sensors, requested: str, component: str
     if token is None:
         return make()
     key = (token, sensors_digest(sensors), requested, component, _rules())
-    with _lock:
-        plan = _entries.get(key)
-        if plan is not None:
-            _entries.move_to_end(key)
-            return plan
-    plan = make()
-    if len(plan.sensors) > MAX_SENSORS:
+    plan = _entries.get(key)
+    if plan is not None:
         return plan
-    with _lock:
-        _entries[key] = plan
-        while len(_entries) > MAX_ENTRIES or sum(len(p.sensors) for p in _entries.values()) > MAX_SENSORS:
-            _entries.popitem(last=False)
+    plan = make()
+    if len(plan.sensors) <= MAX_SENSORS:
+        _entries.put(key, plan, size=len(plan.sensors))
     return plan
 
 
 def clear() -> None:
     """Forget every kept plan."""
-    with _lock:
-        _entries.clear()
+    _entries.clear()

@@ -33,11 +33,12 @@ import os
 import sys
 import threading
 import time
-from collections import OrderedDict
 from dataclasses import dataclass
 from itertools import count
 
 import numpy as np
+
+from simulator.memo import Kept
 
 __all__ = ["MAX_ENTRIES", "MAX_BYTES", "MAX_ENTRY_BYTES", "RACY_NS", "cached_stage", "clear", "stats", "file_identity",
            "file_sha256"]
@@ -52,10 +53,9 @@ MAX_ENTRY_BYTES = 1 << 28
 #: a reading is kept only if every file it read was last modified this many nanoseconds before it began
 RACY_NS = 2_000_000_000
 
-_entries: OrderedDict = OrderedDict()
+_entries = Kept(MAX_ENTRIES, MAX_BYTES)  # selection -> _Entry, sized by its array bytes
 _serial = count(1)
 _counts = {"hits": 0, "reads": 0}
-_lock = threading.Lock()
 _opened = threading.local()  # .files: the paths Python opened while this thread reads a stage
 
 
@@ -64,7 +64,6 @@ class _Entry:
     scene: object
     token: int  #: unique per reading: what later caches (the plan) key on
     identity: dict  #: path -> (size, inode, mtime_ns, ctime_ns)
-    nbytes: int
 
 
 def _audit(event: str, args: tuple) -> None:
@@ -133,13 +132,10 @@ def cached_stage(read, path, light_units: str, radiometric_spectrum, variants: d
         known whole, or it is too big).
     """
     key = _selection(path, light_units, radiometric_spectrum, variants, time_code)
-    with _lock:
-        e = _entries.get(key)
-        if e is not None and _still_valid(e):
-            _entries.move_to_end(key)
-            _counts["hits"] += 1
-            return copy.deepcopy(e.scene), e.token
-        _entries.pop(key, None)
+    e = _entries.get(key, valid=_still_valid)  # an entry whose files changed is dropped
+    if e is not None:
+        _counts["hits"] += 1
+        return copy.deepcopy(e.scene), e.token
     _ensure_hook()
     began_ns = time.time_ns()
     _opened.files = set()
@@ -158,15 +154,12 @@ def cached_stage(read, path, light_units: str, radiometric_spectrum, variants: d
     nbytes = _array_bytes(scene)
     if nbytes > MAX_ENTRY_BYTES:
         return scene, None
-    e = _Entry(copy.deepcopy(scene), next(_serial), identity, nbytes)
-    with _lock:
-        _entries[key] = e
-        while len(_entries) > MAX_ENTRIES or sum(x.nbytes for x in _entries.values()) > MAX_BYTES:
-            _entries.popitem(last=False)
+    e = _Entry(copy.deepcopy(scene), next(_serial), identity)
+    _entries.put(key, e, size=nbytes)
     return scene, e.token
 
 
-_digests: OrderedDict = OrderedDict()  # path -> (identity, SHA-256 hex)
+_digests = Kept(4 * MAX_ENTRIES)  # path -> (identity, SHA-256 hex)
 
 
 def file_sha256(path) -> str:
@@ -175,26 +168,21 @@ def file_sha256(path) -> str:
     every run)."""
     path = os.path.abspath(os.fspath(path))
     ident = file_identity(path)
-    with _lock:
-        kept = _digests.get(path)
+    kept = _digests.get(path)
     if kept is not None and ident is not None and kept[0] == ident:
         return kept[1]
     stat_ns = time.time_ns()
     with open(path, "rb") as f:
         digest = hashlib.sha256(f.read()).hexdigest()
     if ident is not None and ident == file_identity(path) and stat_ns - ident[2] >= RACY_NS:
-        with _lock:
-            _digests[path] = (ident, digest)
-            while len(_digests) > 4 * MAX_ENTRIES:
-                _digests.popitem(last=False)
+        _digests.put(path, (ident, digest))
     return digest
 
 
 def clear() -> None:
     """Forget every kept stage and file digest."""
-    with _lock:
-        _entries.clear()
-        _digests.clear()
+    _entries.clear()
+    _digests.clear()
 
 
 def stats() -> dict:
