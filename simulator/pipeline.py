@@ -393,6 +393,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         **({} if engine.guide is None else {"guide": engine.guide.to_record()}),
         **({} if engine.rr_pilot is None else {"roulette": _roulette_record(engine.rr_pilot)}),
         **({} if engine.split_pilot is None else {"split": dict(engine.split_pilot)}),
+        **({} if engine.pieces_pilot is None else {"emitter_pieces": dict(engine.pieces_pilot)}),
         "sensors": len(sensors),
         "triangles": scene.geometry.n_triangles,
         "warnings": _scene_warnings(scene, engine) + list(res.warnings),

@@ -235,6 +235,9 @@ def _cmd_run(args) -> int:
         + (f"guide learnt in {t['guide']:.2f} s ({'used' if rec['guide']['sampled'] else 'not used'}), " if rec.get("guide") else "")
         + f"traced in {trace:.2f} s ({total / max(trace, 1e-9):,.0f} samples/s), {wall:.2f} s in all"
     )
+    if rec.get("emitter_pieces"):
+        ep = rec["emitter_pieces"]
+        print(f"emissive geometry: {ep['pieces']} pieces {'kept' if ep['kept'] else 'set aside'}: {ep['why']}")
     ad = rec.get("adaptive")
     if ad:
         print(

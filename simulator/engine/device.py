@@ -110,6 +110,10 @@ class DeviceScene:
         Sensors read by the estimator kernel (one :class:`SensorRec` each).
     device : str
         A Warp device name (see :func:`resolve_device`).
+    pieces : bool
+        Emissive triangles in pieces, the large ones cut (:mod:`simulator.scene.emitters`); False:
+        the scene's triangles as they are and one piece (each triangle picked ∝ its power), the
+        fallback where a pilot finds that the pieces do not pay (``Engine._choose_pieces``).
 
     Attributes
     ----------
@@ -122,7 +126,7 @@ class DeviceScene:
         The surfaces cut into patches for the guide (:mod:`simulator.scene.patches`).
     """
 
-    def __init__(self, scene: Scene, sensors: list[Sensor], device: str):
+    def __init__(self, scene: Scene, sensors: list[Sensor], device: str, pieces: bool = True):
         wp = warp()
         from simulator.kernels import estimators as K
         from simulator.kernels import lights as L
@@ -131,7 +135,11 @@ class DeviceScene:
         self._n_sensors = len(sensors)
         # large emitting triangles cut for the emitter pieces (coplanar: the same surface and emission);
         # every per-triangle array on the device follows ``tri_orig`` (the scene's triangle of each)
-        split, self.tri_orig = split_emitters(scene.geometry, emitters.SPLIT_M)
+        self.in_pieces = pieces
+        if pieces:
+            split, self.tri_orig = split_emitters(scene.geometry, emitters.SPLIT_M)
+        else:
+            split, self.tri_orig = scene.geometry, np.arange(scene.geometry.n_triangles)
         self._n_scene_tris = scene.geometry.n_triangles
         if split is not scene.geometry:
             scene = dc_replace(scene, geometry=split)
@@ -192,7 +200,8 @@ class DeviceScene:
         prob = np.zeros(max(n_tri, 1), np.float64)
         lights = [L.light_record(l, self._keep) for l in scene.lights]
         self.emissive_light = -1
-        pieces = emitter_pieces(g, emitters.PIECE_M, emitters.MAX_PIECES) if n_tri else None
+        cap = emitters.MAX_PIECES if self.in_pieces else 1
+        pieces = emitter_pieces(g, emitters.PIECE_M, cap) if n_tri else None
         self.pieces = pieces
         piece_of = np.full(max(n_tri, 1), -1, np.int32)
         if pieces is not None:
@@ -301,16 +310,18 @@ class DeviceScene:
             rec.piece_centre = wp.array(pieces.centre.astype(np.float32), dtype=wp.vec3)
             rec.piece_normal = wp.array(pieces.normal.astype(np.float32), dtype=wp.vec3)
             rec.piece_shape = wp.array(shape.astype(np.float32), dtype=wp.vec4)
+            rec.piece_power = wp.array(pieces.power_share.astype(np.float32), dtype=float)
         else:
             rec.piece_first = wp.zeros(1, dtype=wp.int32)
             rec.piece_count = wp.zeros(1, dtype=wp.int32)
             rec.piece_centre = wp.zeros(1, dtype=wp.vec3)
             rec.piece_normal = wp.zeros(1, dtype=wp.vec3)
             rec.piece_shape = wp.zeros(1, dtype=wp.vec4)
+            rec.piece_power = wp.ones(1, dtype=float)
         rec.piece_factor = wp.ones(max(k, 1), dtype=float)
-        rec.piece_tally = wp.zeros(1, dtype=wp.vec2)
+        rec.piece_tally = wp.zeros(1, dtype=wp.vec4)
         self._keep += [rec.emit_piece, rec.piece_first, rec.piece_count, rec.piece_centre, rec.piece_normal,
-                       rec.piece_shape]  # fmt: skip
+                       rec.piece_shape, rec.piece_power]  # fmt: skip
 
     def set_piece_factors(self, factors: np.ndarray) -> None:
         """The emitter pieces' learned factors, (K,) (see kernels/lights/emissive.py)."""

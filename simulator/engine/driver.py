@@ -32,6 +32,7 @@ from simulator.engine.methods import (
 from simulator.engine.stats import GroupBatchStats, GroupStats, RunningStats, z_for_confidence
 from simulator.errors import UserError
 from simulator.interrupts import StopFlag
+from simulator.scene import emitters
 from simulator.scene.model import MAX_PROBE_PIXELS, Scene, Sensor, SensorKind
 
 __all__ = [
@@ -247,7 +248,14 @@ class Engine:
         self.batch_plans: dict[str, dict] = {}
         self.piece_factors: np.ndarray | None = None  #: the emitter pieces' learned factors (None: not learnt)
         self.pick_spread: float | None = None  #: a group pass's pick spread (scenario_pick), None before one
-        self._piece_tally: np.ndarray | None = None  # the latest pick pilot's per-piece sums, (K, 2)
+        #: emitter pieces: "auto" (kept where the pick pilot predicts they pay, :meth:`_choose_pieces`),
+        #: True (always, as a stage has them) or False (the scene's triangles, one piece)
+        self.emitter_pieces: str | bool = "auto"
+        self._pieces_on = True  # the device scene's emitters are in pieces
+        #: what the pieces' choice measured (None: no choice made yet, or nothing to choose)
+        self.pieces_pilot: dict | None = None
+        self._piece_tally: np.ndarray | None = None  # the latest pick pilot's per-piece sums, (K, 4) (tally_pick)
+        self._piece_pilot: tuple | None = None  # the latest pick pilot's readings and per-sensor moments
         self._pick_learnt: tuple | None = None  # (factors, per-row gains) of the latest pick pilot
         self._pick_scaled = False  # the device's pick factors are steered by a group pass's scenarios
         self._mask_version = 0
@@ -270,7 +278,8 @@ class Engine:
             self._kernels = K
             # compile (or load from the kernel cache) before worker threads launch
             wp.load_module(K, device=self.device)
-            self._device_scene = DeviceScene(self.scene, self.sensors, self.device)
+            on = self._pieces_on and self.emitter_pieces is not False
+            self._device_scene = DeviceScene(self.scene, self.sensors, self.device, pieces=on)
             with wp.ScopedDevice(self.device):  # placeholder for TraceParams.group_state while tallies are off
                 self._no_groups = wp.zeros(1, dtype=wp.vec2d)
             if self._light_mask is not None:
@@ -443,7 +452,7 @@ class Engine:
         if pieces is not None:
             # emitter pieces learn their own factors (one row: the piece's pdf is read at any vertex
             # without its depth); the emissive record's estimate is their sum, so its own factor stays 1
-            pf = ratio(pieces, 1.0)
+            pf = ratio(pieces[:, :2], 1.0)
             dev.set_piece_factors(pf)
             self.piece_factors = pf
             factors[:, self.emissive_light] = 1.0
@@ -456,6 +465,56 @@ class Engine:
         # what each light gave per row, for a pass serving several scenarios (scenario_pick)
         self._pick_learnt = (factors, np.concatenate([tally[:, 1].sum(0)[None, :, 1], got], axis=0))
         self._pick_scaled = False
+
+    def _choose_pieces(self, method: str, seed: int, max_depth: int, component: str, ids: np.ndarray) -> None:
+        """Keep the emitter pieces or go back to one piece and the scene's own triangles, once per
+        engine, from the pick pilot (:meth:`_prepare_pick`, which learns the pieces' factors; a guided
+        method's pilot is the path's, the guide not yet built). Over its light samples of the pieces,
+        kernels.light_pick.piece_moments sums the second moments of each vertex's MIS estimate with the
+        pieces' pick and with a pick ∝ power (importance reweighting of the same samples); their
+        difference per sample, Δ_s, is what one piece would add to sensor s's variance per sample V_s
+        (the paths unchanged), so the pieces cut the mean relative variance by
+
+            G = Σ_s (V_s + Δ_s)/m_s² / Σ_s V_s/m_s²,
+
+        V_s and the mean m_s the pilot's own (as W + lm/683, the pick's importance). They stay where
+        G ≥ emitters.PIECES_MIN_GAIN: where the receivers see the emitters unevenly, as through a window, not
+        in an enclosure seen whole from everywhere, where they cost more CPU than they give back.
+        Unbiased either way: the choice changes only the pdf."""
+        dev = self._dev
+        if dev.pieces is None or dev.pieces.n <= 1 or self._pick_key == "fixed":
+            return
+        tb = time.perf_counter()
+        self._prepare_pick("path" if method in GUIDED_METHODS else method, seed, max_depth, component, ids)
+        if self._piece_pilot is None:
+            return
+        sensors, cnt, mean, m2, moments = self._piece_pilot
+        n = np.maximum(cnt, 1).astype(np.float64)
+        delta = (moments[..., 1].sum(axis=1) - moments[..., 0].sum(axis=1)) / n  # < 0: one piece would do better
+        var = m2 / np.maximum(n - 1, 1)[:, None]
+        m = mean[:, 0] + mean[:, 1] / 683.0
+        v = (np.sqrt(var[:, 0]) + np.sqrt(var[:, 1]) / 683.0) ** 2  # the channels' errors move together
+        ok = m > 0
+        base = float(np.sum(v[ok] / m[ok] ** 2))
+        with_one = float(np.sum((v[ok] + delta[ok]) / m[ok] ** 2))
+        gain = with_one / base if base > 0 else (np.inf if with_one > 0 else 1.0)  # inf: no noise with pieces
+        keep = gain >= emitters.PIECES_MIN_GAIN
+        self.pieces_pilot = {
+            "pieces": int(dev.pieces.n), "triangles": int(dev.rec.tris.shape[0] // 3),
+            "predicted_gain": gain if np.isfinite(gain) else None,
+            "min_gain": emitters.PIECES_MIN_GAIN, "kept": bool(keep), "pilot_s": time.perf_counter() - tb,
+            "why": (f"one piece would have {gain:.2f}× the pieces' relative variance (pilot)"
+                    + (f", ≥ {emitters.PIECES_MIN_GAIN:g}: pieces kept" if keep else
+                       f", < {emitters.PIECES_MIN_GAIN:g}: one piece over the scene's own triangles")),
+        }  # fmt: skip
+        if not keep:
+            tr = time.perf_counter()
+            self._pieces_on = False
+            self._device_scene = None
+            self._pick_key, self._pick_learnt, self._piece_tally, self.piece_factors = None, None, None, None
+            self._piece_pilot = None
+            self._upload()
+            self.pieces_pilot["rebuild_s"] = time.perf_counter() - tr
 
     def _patch_pick_pilot(self, method: str, seed: int, max_depth: int, component: str, ids: np.ndarray) -> None:
         """The per-patch sums of the light pick (kernels.light_pick.tally_patch_pick), on the device:
@@ -660,7 +719,7 @@ class Engine:
             if tally:
                 rec.pick_tally = wp.zeros(n * 2 * int(rec.n_lights), dtype=wp.vec2)
                 if n_pc > 1:
-                    rec.piece_tally = wp.zeros(n * n_pc, dtype=wp.vec2)
+                    rec.piece_tally = wp.zeros(n * n_pc, dtype=wp.vec4)
             shift = wp.empty(n, dtype=wp.vec2d)
             s1 = wp.empty(n, dtype=wp.vec2d)
             s2 = wp.empty(n, dtype=wp.vec2d)
@@ -689,10 +748,17 @@ class Engine:
             if tally:
                 counts = rec.pick_tally.numpy()
                 rec.pick_tally = wp.zeros(1, dtype=wp.vec2)
-                self._piece_tally = None
+                self._piece_tally = self._piece_pilot = None
                 if n_pc > 1:
-                    self._piece_tally = rec.piece_tally.numpy().reshape(n, n_pc, 2).astype(np.float64).sum(axis=0)
-                    rec.piece_tally = wp.zeros(1, dtype=wp.vec2)
+                    per_thread = rec.piece_tally.numpy().reshape(n, n_pc, 4).astype(np.float64)
+                    self._piece_tally = per_thread.sum(axis=0)
+                    rec.piece_tally = wp.zeros(1, dtype=wp.vec4)
+                    # per sensor: the moments' sums and the pilot's own readings, for _choose_pieces
+                    sensors, cnt, mean, m2 = RunningStats.reduce_blocks(t_sensor, t_count, shift.numpy(), s1.numpy(),
+                                                                        s2.numpy())  # fmt: skip
+                    moments = np.zeros((len(self.sensors), n_pc, 2))
+                    np.add.at(moments, t_sensor, per_thread[:, :, 2:])
+                    self._piece_pilot = (sensors, cnt, mean, m2, moments[sensors])
                 return t_sensor, counts
             out = RunningStats.reduce_blocks(t_sensor, t_count, shift.numpy(), s1.numpy(), s2.numpy())
             if params.count_rays:
@@ -837,6 +903,8 @@ class Engine:
         if method not in METHOD_FLAGS:
             raise UserError(f"method {method!r} has no Monte Carlo kernel (expected one of {sorted(METHOD_FLAGS)})")
         n_s = len(self.sensors)
+        if METHOD_FLAGS[method][0] and self.emitter_pieces == "auto" and self.pieces_pilot is None:
+            self._choose_pieces(method, seed, max_depth, component, ids_all)  # before the guide: it may rebuild
         if method in GUIDED_METHODS:
             self.ensure_guide(seed, ids_all, max_depth)
         params = self.trace_params(method, seed, max_depth, component)

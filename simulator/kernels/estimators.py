@@ -335,8 +335,8 @@ def vertex_estimate(
                     if c_v > 0.0:  # the lobes run with probability 1 − c_v
                         pdf_dir = (1.0 - c_v) * pdf_dir
                 got = wp.vec2(0.0, 0.0)
+                w = float(1.0)
                 if ls.value[0] > 0.0 or ls.value[1] > 0.0:
-                    w = float(1.0)
                     if params.mis != 0 and ls.pdf > 0.0:
                         if gl == 0:
                             pdf_dir = (1.0 - c_v) * pdf_cosine_hemisphere(wp.dot(ls.wi, n))
@@ -363,7 +363,7 @@ def vertex_estimate(
                             if params.tally != 0 and depth > 0:
                                 tally_patch(scene, params, prev_row, cur_face, p, c_light)
                 if params.tally_pick != 0:
-                    tally_pick(scene, params, li, p, n, depth, weight, got, ls.tri)
+                    tally_pick(scene, params, li, p, n, depth, weight, got, ls.tri, w)
                     if params.tally_pick == 2 and depth > 0:
                         tally_patch_pick(scene, li, cur_face, p, n, weight, got)
         # -- delta lights seen in flat mirrors: their image sources (kernels.mirrors); light reflected

@@ -327,16 +327,43 @@ def pick_scale(
 
 
 @wp.func
+def piece_moments(v: float, r: float, w: float) -> wp.vec2:
+    """What a light sample x of the emitter pieces tells of the second moment of the vertex's two-sample
+    MIS estimate with the pieces' pick and with a pick ∝ power, (S₁, S₀): over x drawn with the
+    pieces' pdf p, the means of S₁ and S₀ are those second moments (importance reweighting).
+
+    v = f/p is the sample's unweighted contribution, r = p₀/p = π_k/P(k | x) the power pick's pdf
+    over the pieces' at x (the triangle and point picks are the same), and w = p²/(p² + b²) its power
+    heuristic weight against the BSDF's pdf b, so q = b/p = √(1/w − 1) (q = 0 without MIS, w = 1).
+    The light term E_p[(w f/p)²] is v²·w² and the BSDF term E_b[(w_b f/b)²] = E_p[v²·w_b²/q],
+    w_b = q²/(1 + q²); with p₀ = r·p the weights are r²/(r² + q²) and q²/(r² + q²), so
+
+        S₁ = v²·(1 + q³)/(1 + q²)²,   S₀ = v²·(r³ + q³)/(r² + q²)²
+
+    (the light term of S₀: E_p[(w₀ f/p₀)²·p₀/p] = v²·w₀²/r). Without MIS, S₀ = v²/r.
+    """
+    if w <= 1.0e-12 or v <= 0.0:
+        return wp.vec2(0.0, 0.0)
+    q2 = wp.max(1.0 / w - 1.0, 0.0)
+    q3 = q2 * wp.sqrt(q2)
+    a = 1.0 + q2
+    b = r * r + q2
+    return wp.vec2(v * v * (1.0 + q3) / (a * a), v * v * (r * r * r + q3) / (b * b))
+
+
+@wp.func
 def tally_pick(
     scene: SceneRec, params: TraceParams, li: int, p: wp.vec3, n: wp.vec3, depth: int, weight: float, got: wp.vec2,
-    tri: int,
+    tri: int, mis_w: float,
 ):
     """A pilot's sums for light ``li``'s pick factor (light_pick.py): the
     path weight × its estimate ê, and × the value its shadowed sample gave;
     slot 0 for a sensor's first vertex, 1 for the rest. A sample of emissive
     triangle ``tri`` (≥ 0) from piece k also adds to k's sums (one row for
     all vertices): weight × ê_k and weight × value × P(k | x), the piece's
-    shadowed irradiance (the value was divided by P(k | x))."""
+    shadowed irradiance (the value was divided by P(k | x)), and for the
+    pieces' choice (engine.driver.Engine._choose_pieces) :func:`piece_moments`.
+    ``mis_w`` is the sample's MIS weight (1 without MIS)."""
     if is_delta(scene.lights[li]):
         return
     pc = int(-1)
@@ -346,7 +373,11 @@ def tally_pick(
         pr = piece_probability(scene, pc, p, n, piece_totals(scene, p, n))
         j = params.thread * scene.n_pieces + pc
         ek = piece_estimate(scene, pc, p, n)
-        scene.piece_tally[j] = scene.piece_tally[j] + weight * wp.vec2(ek[0], importance(got) * pr)
+        v = weight * importance(got)
+        mo = piece_moments(v, scene.piece_power[pc] / wp.max(pr, 1.0e-30), mis_w)
+        # the first two as weight × (ê_k, value × P): the factors' sums as they were before the moments
+        got_k = weight * (importance(got) * pr)
+        scene.piece_tally[j] = scene.piece_tally[j] + wp.vec4(weight * ek[0], got_k, mo[0], mo[1])
     slot = wp.where(depth == 0 and params.mask_row >= 0, 0, 1)
     k = (params.thread * 2 + slot) * scene.n_lights + li
     e = light_estimate(scene, li, p, n)

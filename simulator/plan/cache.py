@@ -57,7 +57,7 @@ def _rules() -> tuple:
 
     return (planner.AUTO_GUIDED, planner.LARGE_SOURCE_SR, exact_rule.EXACT_MAX_OCCLUDERS,
             exact_rule.EXACT_MAX_SCENE_TRIANGLES, emitters.PIECE_M, emitters.SPLIT_M, emitters.MAX_PIECES,
-            emitters.MAX_SPLIT)
+            emitters.MAX_SPLIT, emitters.PIECES_MIN_GAIN)
 
 
 def cached_plan(make, token: int | None, sensors, requested: str, component: str):

@@ -26,7 +26,8 @@ import numpy as np
 from simulator.scene.model import Geometry
 from simulator.scene.vectors import cross3
 
-__all__ = ["MAX_PIECES", "PIECE_M", "SPLIT_M", "EmitterPieces", "split_emitters", "emitter_pieces", "pieces_note"]
+__all__ = ["MAX_PIECES", "PIECE_M", "PIECES_MIN_GAIN", "SPLIT_M", "EmitterPieces", "split_emitters", "emitter_pieces",
+           "pieces_note"]
 
 #: target size of a piece (bounding-box diagonal, metres) before the cap grows it
 PIECE_M = 1.0
@@ -36,6 +37,12 @@ SPLIT_M = 1.0
 MAX_PIECES = 32
 #: most subdivisions per edge of one emitting triangle
 MAX_SPLIT = 16
+#: pieces are kept where the pick pilot predicts that one piece would have at least this many times
+#: their mean relative variance (engine.driver.Engine._choose_pieces); else the device scene goes back
+#: to the stage's own triangles and one piece. The pieces cost 1.2× the CPU per sample on the emissive
+#: office and 2.5× (cut triangles and the pieces' loop) on the furnace, whose predicted gains are
+#: 2.2 and 1.24 (docs/DESIGN.md §Emissive geometry in pieces)
+PIECES_MIN_GAIN = 1.5
 
 
 @dataclass(frozen=True)
@@ -62,6 +69,9 @@ class EmitterPieces:
         Largest distance of a vertex from ``centre`` (m).
     two_sided : ndarray of bool, shape (K,)
         Some triangle of the piece emits from both faces.
+    power_share : ndarray, shape (K,)
+        The piece's share of all emitted power (the triangle shares' measure):
+        P(k) of a pick ∝ power, which one piece amounts to.
     size_m : float
         The ``h`` used.
     """
@@ -77,6 +87,7 @@ class EmitterPieces:
     reach: np.ndarray
     two_sided: np.ndarray
     size_m: float
+    power_share: np.ndarray | None = None
 
     @property
     def n(self) -> int:
@@ -199,7 +210,8 @@ def emitter_pieces(g: Geometry, h: float = PIECE_M, cap: int = MAX_PIECES) -> Em
     sp = share_power[order]
     total_a = np.bincount(piece_of, a, minlength=len(groups))
     total_pw = np.bincount(piece_of, pw, minlength=len(groups))
-    total_sp = np.bincount(piece_of, sp, minlength=len(groups))[piece_of]
+    piece_sp = np.bincount(piece_of, sp, minlength=len(groups))
+    total_sp = piece_sp[piece_of]
     share = np.where(total_sp > 0, sp / np.where(total_sp > 0, total_sp, 1.0), a / np.maximum(total_a[piece_of], 1e-300))
     centre = np.stack([np.bincount(piece_of, a * centroid[order, k]) for k in range(3)], axis=1) / np.maximum(total_a, 1e-300)[:, None]
     normal = np.stack([np.bincount(piece_of, a * unit[order, k]) for k in range(3)], axis=1) / np.maximum(total_a, 1e-300)[:, None]
@@ -210,6 +222,7 @@ def emitter_pieces(g: Geometry, h: float = PIECE_M, cap: int = MAX_PIECES) -> Em
     return EmitterPieces(
         tris=emit[order].astype(np.int64), first=first, count=count, prob=share, centre=centre, normal=normal,
         area=total_a, radiance=radiance, reach=reach, two_sided=two, size_m=float(h),
+        power_share=piece_sp / piece_sp.sum() if piece_sp.sum() > 0 else total_a / total_a.sum(),
     )  # fmt: skip
 
 
@@ -226,7 +239,9 @@ def pieces_note(g: Geometry) -> str | None:
     if pieces.n == 1:
         return f"emissive geometry: {how}, a triangle picked ∝ its power"
     return (f"emissive geometry: {how}, a piece picked by its estimated irradiance × a visibility a pilot "
-            "learns, then a triangle ∝ its power")
+            f"learns, then a triangle ∝ its power; kept where that pilot predicts one piece would have at least "
+            f"{PIECES_MIN_GAIN:g}× their relative variance, else one piece over the triangles uncut (the run "
+            "record's emitter_pieces says which)")
 
 
 def _corner_uv(uv: np.ndarray, bc: np.ndarray) -> np.ndarray:

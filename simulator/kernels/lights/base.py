@@ -142,7 +142,8 @@ class SceneRec:
     piece_normal: wp.array(dtype=wp.vec3)  # area-weighted mean front normal (length 1 when flat)
     piece_shape: wp.array(dtype=wp.vec4)  # (area m², radiance W + lm/683, reach m, two-sided 0/1)
     piece_factor: wp.array(dtype=float)  # per piece: the learned factor of its pick (a pilot's, 1 before)
-    piece_tally: wp.array(dtype=wp.vec2)  # (threads × n_pieces): a pilot's Σ(ê, shadowed value), TraceParams.tally_pick
+    piece_power: wp.array(dtype=float)  # per piece: its share of the emitted power, π_k (a pick ∝ power's)
+    piece_tally: wp.array(dtype=wp.vec4)  # (threads × n_pieces): a pilot's sums, light_pick.tally_pick
     lights: wp.array(dtype=LightRec)
     n_lights: int
     eps: float  # ray-origin offset relative to max(1 m, |p|∞)
