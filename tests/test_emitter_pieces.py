@@ -143,6 +143,7 @@ def test_piece_pick_reads_lamberts_formula(tmp_path, method):
     sensors = [Sensor(name=f"s{i}", kind=SensorKind.IRRADIANCE, position=np.array(p, float),
                       normal=np.array(n, float) / np.linalg.norm(n)) for i, (p, n) in enumerate(spots)]  # fmt: skip
     eng = Engine(scene, sensors)
+    eng.emitter_pieces = True  # the pieces' pick itself, whatever the pilot would choose
     truth = eng.run("analytic", samples=0, seed=0).mean
     res = eng.run(method, samples=1 << 13, seed=7)
     assert eng._dev.pieces.n > 2 and eng.piece_factors is not None
@@ -181,6 +182,55 @@ def test_office_window_emitter_is_sampled_where_the_room_sees_it(monkeypatch):
     for r in (r_em, r_one):
         se = np.hypot(r.stderr, r_tw.stderr)
         assert np.all(np.abs(r.mean - r_tw.mean) <= 4 * se + 1e-6 * np.abs(r_tw.mean)), (r.mean, r_tw.mean, se)
+
+
+@pytest.mark.parametrize("seed", [7, 8])
+def test_furnace_sets_its_pieces_aside_and_reads_its_closed_form(seed):
+    """The furnace (configs/furnace.toml, ρ = 0.95: every wall emits L_e = 1 W m⁻² sr⁻¹ and is seen
+    whole from everywhere inside) gains little from pieces: the pilot predicts less than
+    PIECES_MIN_GAIN (measured 1.24: one piece had 1.17× the pieces' relative variance, at 0.4× the CPU
+    per sample), so the run goes back to the stage's 12 triangles and one piece. Every irradiance
+    sensor then reads π·L_e/(1 − ρ) = 20π W/m² (closed_forms.furnace_irradiance; docs/REFERENCES.md
+    §Furnace) and the radiance meter L_e/(1 − ρ), within 4 standard errors (+ float32 slack)."""
+    from simulator.pipeline import collect_sensors, load_scene
+    from simulator.reference import closed_forms as cf
+    from simulator.scene import emitters
+
+    cfg = load_config(ROOT / "configs" / "furnace.toml")
+    scene = load_scene(cfg)
+    sensors = [s for s in collect_sensors(cfg, scene) if s.kind in (SensorKind.IRRADIANCE, SensorKind.RADIANCE)]
+    eng = Engine(scene, sensors)
+    res = eng.run("path", samples=4096, seed=seed)
+    pilot = eng.pieces_pilot
+    assert pilot is not None and not pilot["kept"] and pilot["pieces"] > 1, pilot
+    assert pilot["predicted_gain"] < emitters.PIECES_MIN_GAIN
+    assert eng._dev.pieces.n == 1 and eng._dev.rec.tris.shape[0] == 3 * scene.geometry.n_triangles
+    rho = float(scene.geometry.albedo[0])
+    for ch in (0, 1):
+        le = float(scene.geometry.emission[0, ch])
+        for i, s in enumerate(sensors):
+            truth = cf.furnace_radiance(le, rho) if s.kind == SensorKind.RADIANCE else cf.furnace_irradiance(le, rho)
+            bound = 4 * res.stderr[i, ch] + 2e-6 * truth
+            assert abs(res.mean[i, ch] - truth) <= bound, (s.name, ch, res.mean[i], truth)
+
+
+def test_office_keeps_its_pieces_and_reads_its_twin():
+    """The emissive office (a window emitter its wall mostly hides, six diffusers) keeps its pieces
+    under path tracing: the pilot predicts one piece would have at least PIECES_MIN_GAIN times their
+    relative variance (measured 2.2; 3.0 in a run). Its path readings of 12 work-plane sensors equal
+    the same emitters as RectLights (office_rect_twin.usda) within 4 combined standard errors."""
+    from simulator.scene import emitters
+
+    cfg = load_config(ROOT / "configs" / "office_bench.toml")
+    sensors = list(cfg.sensors)[::122]
+    eng = Engine(load_stage(ROOT / "stages" / "office_emissive.usda"), sensors)
+    r_em = eng.run("path", samples=512, seed=3)
+    pilot = eng.pieces_pilot
+    assert pilot is not None and pilot["kept"] and pilot["predicted_gain"] >= emitters.PIECES_MIN_GAIN, pilot
+    assert eng._dev.pieces.n > 6
+    r_tw = Engine(load_stage(ROOT / "stages" / "office_rect_twin.usda"), sensors).run("path", samples=512, seed=3)
+    se = np.hypot(r_em.stderr, r_tw.stderr)
+    assert np.all(np.abs(r_em.mean - r_tw.mean) <= 4 * se + 1e-6 * np.abs(r_tw.mean)), (r_em.mean, r_tw.mean, se)
 
 
 def test_plan_names_the_pieces(tmp_path):
