@@ -82,7 +82,7 @@ from .mirrors import image_source
 from .shaping import shaping_factor
 from .spectral import Reflection, hero_nodes, lane_response, spectral_contribution, spectral_row
 from .spectral_surfaces import (
-    bsdf_lanes, coloured_row, lane_ratio, lanes_before, mirror_lanes, pass_through_traced, shadow_lanes,
+    bsdf_lanes, coloured_row, lane_ratio, mirror_lanes, pass_through_traced, shadow_lanes, walk_before,
     transmittance_lanes,
 )
 
@@ -525,8 +525,10 @@ def vertex_estimate(
         event = int(0)
         tint_before = tint_d  # the lanes of lights met before the first coloured pane on this ray
         t_tint = float(RAY_INF)
-        hit0 = hit  # the walk's start, replayed for a light met past a coloured pane (lanes_before)
+        hit0 = hit  # the walk's start, replayed for a light met past a weighted or coloured pane (walk_before)
         rng0 = rng
+        w_pass = float(1.0)  # the walk's weight (kernels.surfaces.walk): the stop's, and of lights met past t_pass
+        t_pass = float(RAY_INF)
         if scene.surfaces != 0:  # through panes and cut-outs to where the ray stops (kernels.surfaces)
             lp = pass_through_traced(scene, params, o, wi, hit, rng)  # coloured panes: the same draws, per lane
             rng = lp.rng
@@ -534,6 +536,8 @@ def vertex_estimate(
             event = lp.event
             tint_d = wp.cw_mul(tint_d, lp.tint)
             t_tint = lp.t_tint
+            w_pass = lp.weight
+            t_pass = lp.t_weight
         weigh = params.mis != 0 and params.nee != 0 and delta == 0 and mirror_now == 0  # MIS against p's light samples
         t_hit = hit.t
         face = hit.face
@@ -550,10 +554,14 @@ def vertex_estimate(
                     pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1)
                     w = power_heuristic(pdf_b, pdf_l)
                 tint_l = tint_before
-                if t >= t_tint:  # past a coloured pane: the lanes of the panes in front of the light only
-                    tint_l = wp.cw_mul(tint_before, lanes_before(scene, params.hero, o, wi, hit0, rng0, t))
-                total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission,
+                w_l = float(1.0)
+                if t >= wp.min(t_tint, t_pass):  # past a weighted or coloured pane: those in front of the light only
+                    wb = walk_before(scene, params, o, wi, hit0, rng0, t)
+                    tint_l = wp.cw_mul(tint_before, wb.tint)
+                    w_l = wb.weight
+                total += light_contribution(scene, params, li, (w_dir * w_l * w * shaping_factor(l, -wi)) * l.emission,
                                             tint_l)
+        w_dir = w_dir * w_pass  # what the walk stops at, and all past it
         if face < 0:
             for li in range(scene.n_lights):
                 le = escaped_radiance(scene.lights[li], wi)
@@ -570,6 +578,8 @@ def vertex_estimate(
         if event == MIRROR:
             if params.bounces >= 0 and depth >= params.bounces:
                 break
+            beta = beta * w_pass  # the pane's reflection weight R + T, and the passes' before it
+            weight = weight_in * beta
             if gl != 0:  # the glossy vertex's factor, carried through the delta vertex
                 beta = beta * g_dir
                 weight = weight_in * beta
@@ -600,6 +610,7 @@ def vertex_estimate(
         # -- reflect: L_o = ρ/π·E, so the next vertex's weight is w_dir·ρ/π
         #    = weight_in·β·ρ (the roulette comes after that vertex's
         #    next-event estimate, above)
+        beta = beta * w_pass  # the passes on the way (1 without panes)
         if gl != 0:
             beta = beta * g_dir
             gl = 0
@@ -651,8 +662,11 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
     tint_r = params.tint  # × the lanes of coloured panes passed or reflected off (spectral mode)
     tint_before = tint_r  # the lanes before the first coloured pane of the last segment, at distance t_tint
     t_tint = float(RAY_INF)
-    hit0 = hit  # the last segment's walk start, replayed for a light met past a coloured pane
+    hit0 = hit  # the last segment's walk start, replayed for a light met past a weighted or coloured pane
     rng0 = rng
+    wr = float(1.0)  # the weights of the pane events before the last segment (kernels.surfaces.walk)
+    w_seg = float(1.0)  # the last segment's walk weight, and the distance past which it applies
+    t_seg = float(RAY_INF)
     if scene.surfaces != 0:
         # through panes and cut-outs; a mirror reflection off a pane sends the ray on (what it then
         # sees was reflected on the way: indirect), each segment's lights counted as it passes them
@@ -668,6 +682,8 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
             ev = lp.event
             tint_r = wp.cw_mul(tint_r, lp.tint)
             t_tint = lp.t_tint
+            w_seg = lp.weight
+            t_seg = lp.t_weight
             if ev != MIRROR and ev != ABSORB:
                 break
             for li in range(scene.n_lights):
@@ -675,11 +691,17 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
                 t_l = hit_light_before(l, o, d, hit.t)
                 if t_l > 0.0 and direct:
                     tint_l = tint_before
-                    if t_l >= t_tint:  # the panes in front of the light only (lanes_before)
-                        tint_l = wp.cw_mul(tint_before, lanes_before(scene, params.hero, o, d, hit0, rng0, t_l))
-                    total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, tint_l)
+                    w_l = wr
+                    if t_l >= wp.min(t_tint, t_seg):  # the panes in front of the light only (walk_before)
+                        wb = walk_before(scene, params, o, d, hit0, rng0, t_l)
+                        tint_l = wp.cw_mul(tint_before, wb.tint)
+                        w_l = wr * wb.weight
+                    total += light_contribution(scene, params, li, (w_l * shaping_factor(l, -d)) * l.emission, tint_l)
             if ev == ABSORB or k == MAX_MIRRORS - 1:
                 return total
+            wr = wr * w_seg  # the reflection's weight R + T, and the passes' before it
+            w_seg = 1.0
+            t_seg = RAY_INF
             q = o + hit.t * d
             side = wp.where(wp.dot(d, hit.ng) < 0.0, hit.ng, -hit.ng)
             d = mirror(d, hit.ng)
@@ -696,30 +718,34 @@ def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: 
         t_l = hit_light_before(l, o, d, t_hit)
         if t_l > 0.0 and direct:
             tint_l = tint_before
-            if t_l >= t_tint:  # the panes in front of the light only (lanes_before)
-                tint_l = wp.cw_mul(tint_before, lanes_before(scene, params.hero, o, d, hit0, rng0, t_l))
-            total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, tint_l)
+            w_l = wr
+            if t_l >= wp.min(t_tint, t_seg):  # the panes in front of the light only (walk_before)
+                wb = walk_before(scene, params, o, d, hit0, rng0, t_l)
+                tint_l = wp.cw_mul(tint_before, wb.tint)
+                w_l = wr * wb.weight
+            total += light_contribution(scene, params, li, (w_l * shaping_factor(l, -d)) * l.emission, tint_l)
+    wr = wr * w_seg  # what the last segment stops at
     if face < 0:
         if direct:
             for li in range(scene.n_lights):
-                total += light_contribution_dir(scene, params, li, escaped_radiance(scene.lights[li], d), tint_r, d)
+                total += light_contribution_dir(scene, params, li, wr * escaped_radiance(scene.lights[li], d), tint_r, d)
         return total
     cos_view = -wp.dot(d, ng)
     if direct:
         le = tri_emitted(scene, face, cos_view)
         if le[0] > 0.0 or le[1] > 0.0:
-            total += emissive_contribution(scene, params, face, le, tint_r)
+            total += emissive_contribution(scene, params, face, wr * le, tint_r)
     refl = surface_albedo(scene, params, face, tint_r)
     if scene.surfaces != 0 and is_glossy(scene, face):  # L = ∫ f L cos dω: the vertex weighs by π·f
         n = wp.where(cos_view > 0.0, ng, -ng)
         prm = params
         prm.tint = tint_r
-        total += vertex_estimate(scene, o + t_hit * d, n, INV_PI, prm, skip_next, rng, face, -d)
+        total += vertex_estimate(scene, o + t_hit * d, n, wr * INV_PI, prm, skip_next, rng, face, -d)
     elif refl.rho > 0.0:
         n = wp.where(cos_view > 0.0, ng, -ng)
         prm = params
         prm.tint = refl.tint
-        total += vertex_irradiance(scene, o + t_hit * d, n, refl.rho * INV_PI, prm, skip_next, rng)
+        total += vertex_irradiance(scene, o + t_hit * d, n, (wr * refl.rho) * INV_PI, prm, skip_next, rng)
     return total
 
 
