@@ -184,6 +184,7 @@ class DeviceScene:
         rec.albedo = arr(albedo, float)
         rec.emission = arr(emission, wp.vec2)
         rec.two_sided = arr(two_sided, wp.int32)
+        self._lights = scene.lights
         self._upload_surfaces(wp, K, rec, g)
 
         # Emissive triangles in pieces (simulator.scene.emitters): a piece is
@@ -259,8 +260,34 @@ class DeviceScene:
         rec.mirror_planes = wp.array(planes.astype(np.float32) if len(planes) else np.zeros((1, 4), np.float32),
                                      dtype=wp.vec4)
         rec.face_mirror = wp.array(face_plane.astype(np.int32), dtype=wp.int32)
+        self._upload_glints(wp, rec, g if modelled else None)
         self._keep += [rec.surf_id, rec.surf_side, rec.surf, rec.mirror_planes, rec.face_mirror]
         self._upload_textures(wp, rec, g if modelled else None)
+
+    def _upload_glints(self, wp, rec, g) -> None:
+        """The glint pairs (:mod:`simulator.kernels.glints`) on ``rec``: the largest flat glossy planes
+        × the distant lights (lights keep the scene's order on the device), at most MAX_GLINTS."""
+        from simulator.kernels.surface_rec import GlintRec
+        from simulator.scene.model import LightKind
+        from simulator.scene.surfaces import MAX_GLINTS, glint_planes
+
+        recs = []
+        if g is not None:
+            planes, alpha = glint_planes(g.points, g.triangles, g.surface_id, g.surfaces)
+            suns = [k for k, l in enumerate(self._lights) if l.kind == LightKind.DISTANT]
+            for k in range(len(planes)):
+                for li in suns:
+                    r = GlintRec()
+                    r.plane = wp.vec4(*[float(v) for v in planes[k]])
+                    r.alpha = float(alpha[k])
+                    r.light = li
+                    ez = np.asarray(self._lights[li].frame, float)[:, 2]  # the light record's +ez
+                    r.s = wp.vec3(*[float(v) for v in ez / np.linalg.norm(ez)])
+                    recs.append(r)
+        recs = recs[:MAX_GLINTS]
+        rec.n_glints = len(recs)
+        rec.glints = wp.array(recs if recs else [GlintRec()], dtype=GlintRec)
+        self._keep.append(rec.glints)
 
     def _upload_textures(self, wp, rec, g) -> None:
         """The opacity textures read per texel (:mod:`simulator.kernels.coverage`) on ``rec``: one

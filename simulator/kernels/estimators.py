@@ -79,6 +79,8 @@ from .surfaces import ABSORB, MIRROR, mirror, transmittance_along
 from .bsdf import Bsdf, bsdf_f, bsdf_pdf, bsdf_sample, lobe_weights, mirror_reflectance
 from .glossy import face_bsdf, is_glossy, mirror_share
 from .mirrors import image_source
+from .glints import glint_pdf, glint_sample, glint_share
+from .surface_rec import GlintRec
 from .shaping import shaping_factor
 from .spectral import Reflection, hero_nodes, lane_response, spectral_contribution, spectral_row
 from .spectral_surfaces import (
@@ -214,6 +216,14 @@ def to_local(v: wp.vec3, n: wp.vec3) -> wp.vec3:
 
 
 @wp.func
+def matte_dir_pdf(glints: wp.array(dtype=GlintRec), n_glints: int, p: wp.vec3, n: wp.vec3, c_v: float, gw: float,
+                  wi: wp.vec3) -> float:
+    """A matte vertex's direction density p_dir(ω) (sr⁻¹) with the glint strategy drawn with probability
+    gw of its direction samples, which run with 1 − c_v: (1 − c_v)·((1 − gw)·cosθ/π + gw·p_glint(ω))."""
+    return (1.0 - c_v) * ((1.0 - gw) * pdf_cosine_hemisphere(wp.dot(wi, n)) + gw * glint_pdf(glints, n_glints, p, wi))
+
+
+@wp.func
 def vertex_irradiance(
     scene: SceneRec, p_in: wp.vec3, n_in: wp.vec3, weight_in: float, params: TraceParams, skip_first: int, rng_in: wp.uint32
 ) -> wp.vec2:
@@ -303,6 +313,12 @@ def vertex_estimate(
             # vertex's draws that go to that lobe, (1 − p_mirror)·w_diffuse, and the lobes with 1 − c_v
             if c_v > 0.0:
                 c_v = c_v * (1.0 - pm) * lobe_weights(bs, wo_l[2])[2]
+        # a matte vertex draws the glint strategy (kernels.glints) with probability gw of its direction
+        # samples where a glossy plane shows it a distant light's reflection: its direction density is
+        # then p_dir(ω) = (1 − c_v)·((1 − gw)·cosθ/π + gw·p_glint(ω)) in every weight below
+        gw = float(0.0)
+        if scene.n_glints > 0 and gl == 0 and delta == 0:
+            gw = glint_share(scene.glints, scene.n_glints, p, n)
         # -- next-event estimation: each light once, or (pick_light) the
         #    delta lights and one light with area, picked with P(li | x)
         pk = LightPick()
@@ -340,6 +356,8 @@ def vertex_estimate(
                     if params.mis != 0 and ls.pdf > 0.0:
                         if gl == 0:
                             pdf_dir = (1.0 - c_v) * pdf_cosine_hemisphere(wp.dot(ls.wi, n))
+                            if gw > 0.0:
+                                pdf_dir = matte_dir_pdf(scene.glints, scene.n_glints, p, n, c_v, gw, ls.wi)
                         w = power_heuristic(sel * ls.pdf, pdf_dir)
                     if w > 0.0 or params.tally_pick != 0:
                         count_shadow_ray(scene, params)
@@ -436,6 +454,12 @@ def vertex_estimate(
                         if g_lanes != 0:  # the lanes of a coloured glossy vertex (as its direction samples)
                             tint = wp.cw_mul(tint, lane_ratio(bsdf_lanes(scene, g_face, params.hero, gwi, wo_l), f_grey))
                             lanes_set = 1
+                    elif gw > 0.0:  # the guide beside the cosine and glint mixture, at y's area
+                        cos_gx = wp.dot(g.wi, n)
+                        den = c_v * g.density + matte_dir_pdf(scene.glints, scene.n_glints, p, n, c_v, gw, g.wi) * g.jac
+                        if den <= 0.0:
+                            break
+                        beta = beta * (cos_gx * INV_PI * g.jac / den) * g.share
                     else:
                         beta = beta * g.factor
                     if params.spectral != 0 and scene.spectral_panes != 0:  # coloured panes on the segment
@@ -511,12 +535,19 @@ def vertex_estimate(
                     g_dir = g_dir * m
                     tint_d = tint_d / m
         elif delta == 0:
-            local = sample_cosine_hemisphere(wp.vec2(wp.randf(rng), wp.randf(rng)))
+            if gw > 0.0 and wp.randf(rng) < gw:  # the glint strategy
+                wi = glint_sample(scene.glints, scene.n_glints, p, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
+                local = to_local(wi, n)
+            else:
+                local = sample_cosine_hemisphere(wp.vec2(wp.randf(rng), wp.randf(rng)))
+                wi = to_world(local, n)
             if local[2] <= 0.0:
                 break
-            wi = to_world(local, n)
         pdf_b = (1.0 - c_v) * local[2] * INV_PI  # this strategy's density: it runs with probability 1 − c
         w_dir = weight * PI / (1.0 - c_v)
+        if gw > 0.0:  # E ≈ L·cosθ/p_dir(ω)
+            pdf_b = matte_dir_pdf(scene.glints, scene.n_glints, p, n, c_v, gw, wi)
+            w_dir = weight * local[2] / pdf_b
         if gl != 0:
             pdf_b = pdf_g
             w_dir = weight * PI * g_dir
@@ -584,6 +615,9 @@ def vertex_estimate(
                 beta = beta * g_dir
                 weight = weight_in * beta
                 gl = 0
+            elif gw > 0.0:  # as below, with the direction strategies' mixture p_dir: β takes (cosθ/π)/p_dir
+                beta = beta * (local[2] * INV_PI / pdf_b)
+                weight = weight_in * beta
             elif c_v > 0.0:
                 # the guide never draws a path bent by a pane, so only the cosine strategy (probability
                 # 1 − c) weighs it: β takes 1/(1 − c), and no mixture factor at the vertex it reaches
@@ -627,7 +661,13 @@ def vertex_estimate(
         else:
             beta = beta * refl.rho
             tint = refl.tint
-        if c_v > 0.0 and mirror_now == 0:  # one-sample MIS against the guide (a mirror direction: none)
+        if gw > 0.0:  # p_cos,A / (c_v·p_guide,A + p_dir,A): the cosine, glint and guide mixture at y
+            jac = wp.abs(cos_view) / (t_hit * t_hit)
+            pg = float(0.0)
+            if c_v > 0.0:
+                pg = pdf_guide(scene, row, face, o + t_hit * wi)
+            beta = beta * (local[2] * INV_PI * jac / (c_v * pg + pdf_b * jac))
+        elif c_v > 0.0 and mirror_now == 0:  # one-sample MIS against the guide (a mirror direction: none)
             if gl_x != 0:  # the lobes' area density, (1 − c_v)-weighted already, against the guide's
                 beta = beta * glossy_mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
                                                     pdf_g * wp.abs(cos_view) / (t_hit * t_hit))  # fmt: skip
