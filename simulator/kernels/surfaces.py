@@ -21,11 +21,12 @@ two ways:
   keeps the direction, so multiple importance sampling at the vertex the
   ray left still weighs the same two estimates of the same light.
 
-  With q = T/(T + R) both weights are T + R: a pane that absorbs (a
+  Here q = T/(T + R), so both weights are T + R: a pane that absorbs (a
   datasheet transmittance) passes every ray it does not reflect with
-  weight T + R < 1 rather than absorbing a share 1 − R − T of them, which
-  ends no path early (a quarter less variance for the light through a
-  pane of τ = 0.9, 3% of the whole reading in the office).
+  weight T + R < 1 rather than ending a share 1 − R − T of the paths (3%
+  less variance per sample in the office behind a pane of τ = 0.9,
+  docs/DESIGN.md).
+
 Where an opacity texture drives the coverage, c is read at the hit point
 (:mod:`.coverage`), so both expectations hold texel by texel.
 
@@ -201,7 +202,7 @@ class Passage:
     hit: RayHit  # the face where the ray stops (distance from the original origin), face −1: it escaped
     event: int  # what it does there: SCATTER, MIRROR or ABSORB (PASS is followed)
     rng: wp.uint32
-    weight: float  # the product of the events' weights: passes and the stop's (a mirror's R/(1 − q))
+    weight: float  # the product of the events' weights: the passes' and the stop's (a mirror's R + T)
     t_weight: float  # distance of the first face whose weight is not 1 (RAY_INF for none)
 
 
