@@ -145,3 +145,17 @@ def test_glazed_office_reads_the_same_with_and_without_glints():
     z = (a.mean[:, 1] - b.mean[:, 1]) / np.hypot(a.stderr[:, 1], b.stderr[:, 1])
     assert np.all(np.abs(z) < 4.0), z
     assert abs(z.sum()) < 4.0 * math.sqrt(len(z)), z
+
+
+def test_plan_names_the_glints_of_the_glazed_office(capsys):
+    """``probesim plan --variant window=glazed`` reads the variant as ``run`` does and names the pair it
+    samples: the sun in the floor's plane (α = 0.4² = 0.16); the open window has neither."""
+    from simulator.commands.cli import main
+
+    cfg = str(ROOT / "configs" / "office_bench.toml")
+    assert main(["plan", cfg, "--variant", "window=glazed"]) == 0
+    out = capsys.readouterr().out
+    assert "surface /Office/Room/Pane" in out
+    assert "glints: /Office/Sun reflected in the glossy plane n = (0, 0, 1)" in out and "α 0.16" in out
+    assert main(["plan", cfg]) == 0
+    assert "glints" not in capsys.readouterr().out

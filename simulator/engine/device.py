@@ -265,26 +265,20 @@ class DeviceScene:
         self._upload_textures(wp, rec, g if modelled else None)
 
     def _upload_glints(self, wp, rec, g) -> None:
-        """The glint pairs (:mod:`simulator.kernels.glints`) on ``rec``: the largest flat glossy planes
-        × the distant lights (lights keep the scene's order on the device), at most MAX_GLINTS."""
+        """The glint pairs (:func:`simulator.scene.surfaces.glint_pairs`, :mod:`simulator.kernels.glints`)
+        on ``rec``; lights keep the scene's order on the device."""
         from simulator.kernels.surface_rec import GlintRec
-        from simulator.scene.model import LightKind
-        from simulator.scene.surfaces import MAX_GLINTS, glint_planes
+        from simulator.scene.surfaces import glint_pairs
 
         recs = []
-        if g is not None:
-            planes, alpha = glint_planes(g.points, g.triangles, g.surface_id, g.surfaces)
-            suns = [k for k, l in enumerate(self._lights) if l.kind == LightKind.DISTANT]
-            for k in range(len(planes)):
-                for li in suns:
-                    r = GlintRec()
-                    r.plane = wp.vec4(*[float(v) for v in planes[k]])
-                    r.alpha = float(alpha[k])
-                    r.light = li
-                    ez = np.asarray(self._lights[li].frame, float)[:, 2]  # the light record's +ez
-                    r.s = wp.vec3(*[float(v) for v in ez / np.linalg.norm(ez)])
-                    recs.append(r)
-        recs = recs[:MAX_GLINTS]
+        for plane, alpha, li in (glint_pairs(g, self._lights) if g is not None else []):
+            r = GlintRec()
+            r.plane = wp.vec4(*[float(v) for v in plane])
+            r.alpha = float(alpha)
+            r.light = li
+            ez = np.asarray(self._lights[li].frame, float)[:, 2]  # the light record's +ez
+            r.s = wp.vec3(*[float(v) for v in ez / np.linalg.norm(ez)])
+            recs.append(r)
         rec.n_glints = len(recs)
         rec.glints = wp.array(recs if recs else [GlintRec()], dtype=GlintRec)
         self._keep.append(rec.glints)

@@ -52,7 +52,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 __all__ = ["Surface", "CoverageTexture", "WRAP_MODES", "OPACITY_MODES", "fresnel_sp", "slab_rt", "internal_transmittance", "clear_slab_transmittance",
-           "solid_sides", "mirror_planes", "mirror_limits", "glint_planes", "MAX_GLINTS"]
+           "solid_sides", "mirror_planes", "mirror_limits", "glint_planes", "glint_pairs", "MAX_GLINTS"]
 
 #: UsdPreviewSurface ``opacityMode`` tokens
 OPACITY_MODES = ("transparent", "presence")
@@ -361,6 +361,19 @@ def glint_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarr
         by_row = np.bincount(sid, weights=area[mine])
         alpha[k] = float(surfaces[int(np.argmax(by_row))].roughness) ** 2
     return planes, alpha
+
+
+def glint_pairs(geometry, lights: list) -> list[tuple[np.ndarray, float, int]]:
+    """The glint strategy's pairs (:mod:`simulator.kernels.glints`): ``(plane (n, d), α, light index)``
+    for the :func:`glint_planes` × the distant lights, at most :data:`MAX_GLINTS`, largest plane first."""
+    from simulator.scene.model import LightKind
+
+    g = geometry
+    if not g.has_surfaces:
+        return []
+    planes, alpha = glint_planes(g.points, g.triangles, g.surface_id, g.surfaces)
+    suns = [k for k, l in enumerate(lights) if l.kind == LightKind.DISTANT]
+    return [(planes[k], float(alpha[k]), li) for k in range(len(planes)) for li in suns][:MAX_GLINTS]
 
 
 def mirror_limits(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarray | None,
