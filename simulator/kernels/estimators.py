@@ -761,7 +761,13 @@ def make_trace(surfaces: bool) -> Trace:
             rng0 = rng
             w_pass = float(1.0)  # the walk's weight (kernels.surfaces.walk): the stop's, and of lights met past t_pass
             t_pass = float(RAY_INF)
-            if (scene.surfaces != 0) if wp.static(surfaces) else False:  # through panes and cut-outs to where the ray stops
+            # through panes and cut-outs to where the ray stops; a ray that meets a matte face first (most do)
+            # or nothing stops there, with no call down the walk (each call copies the scene record)
+            walks = bool(False)
+            if (scene.surfaces != 0) if wp.static(surfaces) else False:
+                if hit.face >= 0:
+                    walks = scene.surf_id[hit.face] >= 0
+            if walks:
                 lp = pass_through_traced(scene, params, o, wi, hit, rng)  # coloured panes: the same draws, per lane
                 rng = lp.rng
                 hit = lp.hit

@@ -136,6 +136,8 @@ def transmittance_along(scene: SceneRec, o: wp.vec3, wi: wp.vec3, dist: float, t
         h = first_hit(scene, o + start * wi, wi, end - start)
         if h.face < 0 or h.face == tri:
             return f
+        if scene.surf_id[h.face] < 0:  # a matte face blocks it (no call: each copies the scene record)
+            return 0.0
         f = f * pass_factor(scene, h.face, wi, h.ng, o + (start + h.t) * wi)
         if f <= 0.0:
             return 0.0
