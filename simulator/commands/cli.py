@@ -19,6 +19,15 @@ from simulator.errors import UserError
 __all__ = ["main"]
 
 
+def _stage_flags(parser: argparse.ArgumentParser) -> None:
+    """The flags that change what is read from the stage (``run`` and ``plan`` read it alike)."""
+    parser.add_argument("--variant", action="append", metavar="SET=VARIANT",
+                        help="select a USD variant before reading, on every prim with the set, or on one prim as "
+                             "/PRIM/PATH:SET=VARIANT (repeatable; overrides the config's variants)")
+    parser.add_argument("--time", type=float, metavar="T",
+                        help="USD time code to read the stage at (overrides the config's time; default: its earliest sample)")
+
+
 def _parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="probesim", description="Radiometric light-probe sensor simulator.")
     p.add_argument("--version", action="version", version=f"probesim {__version__}")
@@ -31,11 +40,7 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("--samples", type=int, help="samples per sensor (overrides [simulation] samples)")
     r.add_argument("--method", help=f"estimator: {', '.join(METHODS[:-1])} or {METHODS[-1]}")
     r.add_argument("--rel-error", type=float, metavar="R", help="adaptive: stop each sensor when its confidence half-width is under R × its reading")
-    r.add_argument("--variant", action="append", metavar="SET=VARIANT",
-                   help="select a USD variant before reading, on every prim with the set, or on one prim as "
-                        "/PRIM/PATH:SET=VARIANT (repeatable; overrides the config's variants)")
-    r.add_argument("--time", type=float, metavar="T",
-                   help="USD time code to read the stage at (overrides the config's time; default: its earliest sample)")
+    _stage_flags(r)
     r.add_argument("--confidence", type=float, metavar="C", help="confidence of that interval (default 0.95; 0.999 for a guarantee over many sensors)")
     r.add_argument("--device", choices=("cpu", "cuda", "auto"), help="Warp device (auto: CUDA when present)")
     r.add_argument("-q", "--quiet", action="store_true", help="print no table")
@@ -43,6 +48,7 @@ def _parser() -> argparse.ArgumentParser:
     pl = sub.add_parser("plan", help="print how each sensor of a config would be read, and why")
     pl.add_argument("config", help="run config (.toml)")
     pl.add_argument("--method", help="an explicit method instead of the config's")
+    _stage_flags(pl)
 
     b = sub.add_parser("bench", help="speed of every estimator on the bundled stages")
     b.add_argument("configs", nargs="*", help="configs to benchmark (default: the bundled ones)")
@@ -155,7 +161,7 @@ def _cmd_plan(args) -> int:
     from simulator.plan.planner import format_plan, make_plan
     from simulator.pipeline import collect_sensors, load_scene
 
-    cfg = apply_overrides(load_config(args.config), method=args.method)
+    cfg = apply_overrides(load_config(args.config), method=args.method, variants=args.variant, time=args.time)
     scene = load_scene(cfg)
     for w in scene.warnings:
         print(f"warning: {w}", file=sys.stderr)

@@ -311,6 +311,13 @@ class Engine:
         return self._dev.rec
 
     @property
+    def trace_variant(self):
+        """The kernels this stage is traced with (``kernels.estimators.Trace``): those compiled without
+        the surface model where ``SceneRec.surfaces`` is 0 (no pane, cut-out or glossy face), else those
+        with it (``kernels.estimators.trace_for``; docs/DESIGN.md §Trace variants)."""
+        return self._K.trace_for(self._dev.rec.surfaces)
+
+    @property
     def emissive_light(self) -> int:
         """Index of the light record standing for all emissive triangles, −1 if none."""
         return self._dev.emissive_light
@@ -733,10 +740,11 @@ class Engine:
             width = LightGroups.width_of(n_g, bool(params.group_batch))
             if params.group_tally:
                 params.group_state = wp.zeros(n * width, dtype=wp.vec2d)
+            kernel = self.trace_variant.estimate_kernel
 
             def run(offset: int, dim: int):
                 wp.launch(
-                    self._K.estimate_kernel,
+                    kernel,
                     dim=dim,
                     inputs=[rec, self._dev.sensors, params, a_sensor, a_first, a_count, offset],
                     outputs=[shift, s1, s2, bad, r_shift, r_s1, r_s2],
@@ -1096,6 +1104,7 @@ class Engine:
         pix_per_launch = max(1, THREADS_PER_LAUNCH // blocks)
         counts = np.full(n_pix, n_passes, np.int64)
         rec_scene = self._dev.rec
+        probe_kernel = self._KP.probe_kernel_for(rec_scene.surfaces)  # the stage's trace variant
         means = np.empty((n_pix, width))
         m2s = np.empty((n_pix, width))
         bad_total = 0
@@ -1112,7 +1121,7 @@ class Engine:
 
                 def run(offset: int, dim: int):
                     wp.launch(
-                        self._KP.probe_kernel,
+                        probe_kernel,
                         dim=dim,
                         inputs=[rec_scene, rec, params, 0, first_pass, n_passes, PASS_BLOCK, blocks, p0, offset],
                         outputs=[shift, s1, s2, bad],
@@ -1137,8 +1146,8 @@ class Engine:
             d_sum = wp.zeros((1, width), dtype=wp.float64)
             d_sq = wp.zeros((1, width), dtype=wp.float64)
             d_bad = wp.zeros(1, dtype=wp.int32)
-            wp.launch(self._KP.probe_kernel, dim=1, inputs=[self._dev.rec, rec, params, 1, 0, 0, 1, 1, 0, 0],
-                      outputs=[d_shift, d_sum, d_sq, d_bad])  # fmt: skip
+            wp.launch(self._KP.probe_kernel_for(self._dev.rec.surfaces), dim=1,
+                      inputs=[self._dev.rec, rec, params, 1, 0, 0, 1, 1, 0, 0], outputs=[d_shift, d_sum, d_sq, d_bad])
             return d_sum.numpy()[0][: P.N_QUANTITIES * P.N_CHANNELS].reshape(P.N_QUANTITIES, P.N_CHANNELS)
 
     def run_probes(

@@ -2,7 +2,9 @@
 
 One kernel, :func:`estimate_kernel`, serves every sensor kind and every
 sampling method; :class:`TraceParams` switches the strategies, so the module
-compiles once and the kernel cache serves every run.
+compiles once and the kernel cache serves every run. It comes in two
+variants built from the same source (:func:`make_trace`): with the surface
+model (panes, cut-outs, glossy faces) and without it, for all-matte stages.
 
 Measured quantity per sample (both radiometric and photometric channels):
 
@@ -36,6 +38,7 @@ J. Arvo, D. Kirk, "Particle transport and image synthesis", SIGGRAPH 1990
 (Russian roulette).
 """
 
+import functools
 import math
 from dataclasses import dataclass
 from typing import Any, Callable
@@ -45,7 +48,7 @@ import warp as wp
 from simulator.scene.model import Sensor, SensorKind
 
 from .group_tally import clear_group_sample, fold_group_sample, tally_group, tregenza_patch
-from .guide import glossy_mixture_factor, guide_fraction, guide_row, guided_step, mixture_factor, pdf_guide, tally_patch
+from .guide import glossy_mixture_factor, guide_fraction, guide_row, make_guided_step, mixture_factor, pdf_guide, tally_patch
 from .light_pick import LightPick, is_delta, pick_light, pick_light_at, pick_scale, picks_at, tally_patch_pick, tally_pick
 from .lights import (  # noqa: F401  (GuideRec, LightRec, SceneRec re-exported for the engine)
     RAY_INF,
@@ -79,10 +82,12 @@ from .surfaces import ABSORB, MIRROR, mirror, transmittance_along
 from .bsdf import Bsdf, bsdf_f, bsdf_pdf, bsdf_sample, lobe_weights, mirror_reflectance
 from .glossy import face_bsdf, is_glossy, mirror_share
 from .mirrors import image_source
+from .glints import glint_pdf, glint_sample, glint_share
+from .surface_rec import GlintRec
 from .shaping import shaping_factor
 from .spectral import Reflection, hero_nodes, lane_response, spectral_contribution, spectral_row
 from .spectral_surfaces import (
-    bsdf_lanes, coloured_row, lane_ratio, lanes_before, mirror_lanes, pass_through_traced, shadow_lanes,
+    bsdf_lanes, coloured_row, lane_ratio, mirror_lanes, pass_through_traced, shadow_lanes, walk_before,
     transmittance_lanes,
 )
 
@@ -214,577 +219,17 @@ def to_local(v: wp.vec3, n: wp.vec3) -> wp.vec3:
 
 
 @wp.func
-def vertex_irradiance(
-    scene: SceneRec, p_in: wp.vec3, n_in: wp.vec3, weight_in: float, params: TraceParams, skip_first: int, rng_in: wp.uint32
-) -> wp.vec2:
-    """:func:`vertex_estimate` from a sensor or a matte face: weight_in × an estimate of the irradiance."""
-    return vertex_estimate(scene, p_in, n_in, weight_in, params, skip_first, rng_in, -1, wp.vec3(0.0, 0.0, 1.0))
-
-
-@wp.func
-def vertex_estimate(
-    scene: SceneRec, p_in: wp.vec3, n_in: wp.vec3, weight_in: float, params: TraceParams, skip_first: int,
-    rng_in: wp.uint32, face_in: int, wo_in: wp.vec3
-) -> wp.vec2:
-    """weight_in × an estimate of the irradiance on (p, n), following bounces
-    when ``params.bounces`` allows (see module docstring). With ``skip_first``
-    the light arriving at this first vertex straight from emitters is left
-    out (the indirect component); the paths still go on from it.
-
-    Guided paths (``params.guide_c`` > 0, see :func:`guide_fraction`): at a
-    vertex the next one is drawn with probability c by the surface guide
-    (:func:`guided_step`), otherwise by the cosine direction, and either way
-    the throughput takes ρ·p_cos,A/p_mix (:func:`mixture_factor`). Direct
-    light stays next-event estimation plus the emitters cosine rays meet;
-    the cosine strategy now runs with probability 1 − c, so its solid-angle
-    density is (1 − c)·cosθ/π in both MIS weights and in the hit's estimate
-    π·L/(1 − c). Emitters, escapes and emission along guided segments are
-    not counted: those two strategies already cover all direct light.
-
-    Glossy faces (``scene.surfaces``, :mod:`.glossy`): a vertex on one (the
-    first when ``face_in`` is glossy, seen from ``wo_in``) weighs its light
-    samples by π·f(wi, wo), draws the next direction by the BSDF (β takes
-    f·cosθ/pdf) and weighs both by MIS with the BSDF's pdf; its mirror part
-    is a direction chosen with probability :func:`mirror_share`, whose rays
-    no light sample weighs against. With the guide, a glossy vertex draws
-    it with c·(1 − P_mirror)·w_diffuse (it stands in for the diffuse lobe)
-    and its lobes with the rest, every MIS weight over those real
-    densities; a delta vertex (a pane's or a mirror part's reflection)
-    never draws it, and the path it starts takes 1/(1 − c) instead of a
-    mixture factor (docs/DESIGN.md §Surface guide)."""
-    rng = rng_in
-    p = p_in
-    n = n_in
-    weight = weight_in  # weight_in × the path throughput β
-    beta = float(1.0)
-    tint = params.tint  # spectral throughput / β per hero lane (spectral mode; see surface_albedo)
-    total = wp.vec2(0.0, 0.0)
-    depth = int(0)
-    cur_face = int(-1)  # the triangle p lies on (depth ≥ 1)
-    prev_row = int(0)  # the guide row of the vertex before p
-    # a mirror reflection off a pane (scene.surfaces only, see kernels.surfaces): the next vertex p is
-    # that delta vertex; the ray leaves it along spec_d, with no light sample there and no MIS weight on
-    # what that ray meets (no light sample could have found it); β and the weight are unchanged, since
-    # the reflection was chosen with the probability R it weighs
-    delta = int(0)
-    spec_d = wp.vec3(0.0, 0.0, 1.0)
-    # the vertex on a glossy face: its BSDF, and the direction toward the vertex before it
-    gl = int(0)
-    bs = Bsdf()
-    wo_g = wo_in
-    g_face = int(-1)  # the glossy vertex's triangle
-    g_lanes = int(0)  # 1: its BSDF is evaluated per hero lane (spectral mode, a coloured row)
-    if scene.surfaces != 0 and is_glossy(scene, face_in):
-        gl = 1
-        bs = face_bsdf(scene, face_in)
-        g_face = face_in
-        if params.spectral != 0:
-            g_lanes = coloured_row(scene, face_in)[0]
-    while depth < MAX_VERTICES:
-        row = guide_row(scene, depth, cur_face)
-        c_v = guide_fraction(scene, params, depth, row)
-        if delta != 0:  # a mirror vertex on a pane follows its one direction: no guide there
-            c_v = 0.0
-        # Rays leave a surface from o, pushed off it (see offset_length). A
-        # sensor within that push of a UsdLux light starts them at p itself:
-        # lights are not geometry, and first_hit (plane_distance) still keeps
-        # the surface a sensor may lie on from shadowing it.
-        o = p
-        off = offset_length(scene, p)
-        if scene.has_mesh != 0 and (depth > 0 or not near_light(scene, p, off)):
-            o = p + off * n
-        count = not (skip_first != 0 and depth == 0)
-        wo_l = wp.vec3(0.0, 0.0, 1.0)
-        pm = float(0.0)  # probability of the glossy vertex's mirror part
-        if gl != 0:
-            wo_l = to_local(wo_g, n)
-            pm = mirror_share(bs, wo_l[2])
-            # the guide is a strategy for the diffuse lobe: it is drawn with c times the share of the
-            # vertex's draws that go to that lobe, (1 − p_mirror)·w_diffuse, and the lobes with 1 − c_v
-            if c_v > 0.0:
-                c_v = c_v * (1.0 - pm) * lobe_weights(bs, wo_l[2])[2]
-        # -- next-event estimation: each light once, or (pick_light) the
-        #    delta lights and one light with area, picked with P(li | x)
-        pk = LightPick()
-        if params.nee != 0 and count and delta == 0:
-            if picks_at(params, depth):
-                pk = pick_light_at(scene, p, n, params.mask_row, depth, cur_face, rng)
-                rng = pk.rng
-            for li in range(scene.n_lights):
-                u = wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng))
-                # a light the plan proved wholly behind the sensor adds nothing there
-                if depth == 0 and params.mask_row >= 0:
-                    if scene.light_mask[params.mask_row * scene.n_lights + li] == 0:
-                        continue
-                sel = float(1.0)
-                if picks_at(params, depth) and not is_delta(scene.lights[li]):
-                    if li != pk.li:
-                        continue
-                    sel = pk.prob
-                ls = sample_light(scene, li, p, n, u)  # geometry from the true point; only rays start at o
-                ls.value = ls.value * (shaping_factor(scene.lights[li], -ls.wi) / sel)
-                pdf_dir = float(0.0)
-                tint_l = tint  # this sample's lanes: × each lane's BSDF and visibility over the grey ones
-                if gl != 0:  # the BSDF's value and the density its direction samples give wi
-                    wi_l = to_local(ls.wi, n)
-                    f_grey = bsdf_f(bs, wi_l, wo_l)
-                    ls.value = ls.value * (PI * f_grey)
-                    pdf_dir = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
-                    if g_lanes != 0:
-                        tint_l = wp.cw_mul(tint_l, lane_ratio(bsdf_lanes(scene, g_face, params.hero, wi_l, wo_l), f_grey))
-                    if c_v > 0.0:  # the lobes run with probability 1 − c_v
-                        pdf_dir = (1.0 - c_v) * pdf_dir
-                got = wp.vec2(0.0, 0.0)
-                w = float(1.0)
-                if ls.value[0] > 0.0 or ls.value[1] > 0.0:
-                    if params.mis != 0 and ls.pdf > 0.0:
-                        if gl == 0:
-                            pdf_dir = (1.0 - c_v) * pdf_cosine_hemisphere(wp.dot(ls.wi, n))
-                        w = power_heuristic(sel * ls.pdf, pdf_dir)
-                    if w > 0.0 or params.tally_pick != 0:
-                        count_shadow_ray(scene, params)
-                        clear = bool(True)
-                        if scene.surfaces != 0:  # through panes and cut-outs, at their transmittance
-                            vis = shadow_ray_pass(scene, o, p, li, ls)
-                            if params.spectral != 0 and scene.spectral_panes != 0 and vis > 0.0:
-                                tint_l = wp.cw_mul(tint_l, lane_ratio(shadow_lanes(scene, params.hero, o, p, li, ls), vis))
-                            ls.value = ls.value * vis
-                            clear = vis > 0.0
-                        else:
-                            clear = shadow_ray_clear(scene, o, p, li, ls)
-                        if clear:
-                            got = ls.value
-                            c_light = wp.vec2(0.0, 0.0)
-                            if params.spectral != 0 and li == params.emissive_light:
-                                c_light = emissive_contribution(scene, params, ls.tri, (weight * w) * ls.value, tint_l)
-                            else:
-                                c_light = light_contribution_dir(scene, params, li, (weight * w) * ls.value, tint_l, ls.wi)
-                            total += c_light
-                            if params.tally != 0 and depth > 0:
-                                tally_patch(scene, params, prev_row, cur_face, p, c_light)
-                if params.tally_pick != 0:
-                    tally_pick(scene, params, li, p, n, depth, weight, got, ls.tri, w)
-                    if params.tally_pick == 2 and depth > 0:
-                        tally_patch_pick(scene, li, cur_face, p, n, weight, got)
-        # -- delta lights seen in flat mirrors: their image sources (kernels.mirrors); light reflected
-        #    on the way, so indirect (counted at a sensor's vertex even without its direct light)
-        if params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes > 0:
-            for li in range(scene.n_lights):
-                if not is_delta(scene.lights[li]):
-                    continue
-                for k in range(scene.n_mirror_planes):
-                    count_shadow_ray(scene, params)
-                    im = image_source(scene, li, k, p, n, o)
-                    v = im.value
-                    tint_m = tint
-                    if gl != 0:
-                        f_grey = bsdf_f(bs, to_local(im.wi, n), wo_l)
-                        v = v * (PI * f_grey)
-                        if g_lanes != 0:
-                            f4 = bsdf_lanes(scene, g_face, params.hero, to_local(im.wi, n), wo_l)
-                            tint_m = wp.cw_mul(tint_m, lane_ratio(f4, f_grey))
-                    if params.spectral != 0 and (v[0] > 0.0 or v[1] > 0.0):  # the mirror's and the panes' lanes
-                        if coloured_row(scene, im.face)[0] != 0:
-                            tint_m = wp.cw_mul(tint_m, lane_ratio(mirror_lanes(scene, im.face, params.hero, im.cos_m),
-                                                                  im.refl))
-                        if scene.spectral_panes != 0:
-                            vis4 = transmittance_lanes(scene, params.hero, im.m_off, im.to_l, im.dist_l, -1)
-                            tint_m = wp.cw_mul(tint_m, lane_ratio(vis4, im.vis))
-                    if v[0] > 0.0 or v[1] > 0.0:
-                        total += light_contribution_dir(scene, params, li, weight * v, tint_m, im.wi)
-        if params.bsdf == 0:
-            break
-        # -- Russian roulette (a weight window): below the threshold t the path
-        #    survives with probability q = β/t and β is divided by q
-        #    (unbiased: E[β'] = β). It comes after this vertex's next-event
-        #    estimate, not before it: that light is then gathered at weight
-        #    β rather than 0 or t, which cost one shadow ray per ended path
-        #    and measured 1.5× less variance × time in the integrating
-        #    sphere, 1.1–1.3× in the office, within 4% elsewhere (docs/DESIGN.md
-        #    §Russian roulette); and a guided step toward a bright patch
-        #    far off takes a small factor, which rouletting before that
-        #    patch's own light is gathered would turn back into noise
-        if depth > 0 and beta < params.rr_threshold:
-            q_late = beta / params.rr_threshold
-            if wp.randf(rng) >= q_late:
-                break
-            beta = beta / q_late
-            weight = weight_in * beta
-        # -- guided paths: with probability c the surface guide picks the next vertex
-        if c_v > 0.0:
-            if wp.randf(rng) < c_v:
-                count_ray(scene, params)
-                g = guided_step(scene, row, o, n, c_v, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
-                if g.face < 0:
-                    break
-                if scene.surfaces == 0:
-                    refl = surface_albedo(scene, params, g.face, tint)
-                    beta = beta * refl.rho * g.factor
-                    tint = refl.tint
-                else:
-                    lanes_set = int(0)  # 1: the tint took a lane factor at this step (then renormalised)
-                    if gl != 0:
-                        # a glossy vertex: f·cosθx·jac / (p_lobes,A + c_v·p_guide,A), the lobes' density
-                        # (1 − c_v)(1 − p_mirror)·pdf_bsdf·jac, times the segment's share
-                        gwi = to_local(g.wi, n)
-                        p_lobes = (1.0 - c_v) * (1.0 - pm) * bsdf_pdf(bs, gwi, wo_l) * g.jac
-                        den = p_lobes + c_v * g.density
-                        if den <= 0.0:
-                            break
-                        f_grey = bsdf_f(bs, gwi, wo_l)
-                        beta = beta * (f_grey * gwi[2] * g.jac / den) * g.share
-                        if g_lanes != 0:  # the lanes of a coloured glossy vertex (as its direction samples)
-                            tint = wp.cw_mul(tint, lane_ratio(bsdf_lanes(scene, g_face, params.hero, gwi, wo_l), f_grey))
-                            lanes_set = 1
-                    else:
-                        beta = beta * g.factor
-                    if params.spectral != 0 and scene.spectral_panes != 0:  # coloured panes on the segment
-                        seg = g.y - o
-                        d_seg = wp.length(seg)
-                        off_y = offset_length(scene, g.y)
-                        if d_seg > off_y:
-                            t_grey = transmittance_along(scene, o, g.wi, d_seg - off_y, -1)
-                            tint = wp.cw_mul(tint, lane_ratio(transmittance_lanes(scene, params.hero, o, g.wi,
-                                                                                  d_seg - off_y, -1), t_grey))
-                            lanes_set = 1
-                    if lanes_set != 0:  # β takes the lanes' mean, the tint keeps mean 1
-                        m = 0.25 * (tint[0] + tint[1] + tint[2] + tint[3])
-                        if m > 0.0:
-                            beta = beta * m
-                            tint = tint / m
-                    gl = 0
-                    if is_glossy(scene, g.face):  # y scatters by its BSDF, seen from x
-                        gl = 1
-                        bs = face_bsdf(scene, g.face)
-                        wo_g = -g.wi
-                        g_face = g.face
-                        if params.spectral != 0:
-                            g_lanes = coloured_row(scene, g.face)[0]
-                    else:
-                        refl = surface_albedo(scene, params, g.face, tint)
-                        beta = beta * refl.rho
-                        tint = refl.tint
-                    if beta <= 0.0:
-                        break
-                weight = weight_in * beta
-                p = g.y
-                n = g.n
-                cur_face = g.face
-                prev_row = row
-                depth += 1
-                continue
-        # -- a cosine-weighted direction: E ≈ π·L(ω)
-        local = wp.vec3(0.0, 0.0, 1.0)
-        wi = spec_d
-        g_dir = float(1.0)  # a glossy vertex's f·cosθ/pdf for this direction (β takes it at the hit)
-        tint_d = tint  # the lanes along this direction (a coloured glossy vertex's: see below)
-        mirror_now = int(0)
-        pdf_g = float(0.0)
-        gl_x = gl  # whether this vertex is glossy (gl then follows the next one)
-        if delta == 0 and gl != 0:
-            if pm > 0.0 and wp.randf(rng) < pm:  # the mirror part: reflectance F over its probability
-                wi = mirror(-wo_g, n)
-                f_grey = mirror_reflectance(bs, wo_l[2])
-                g_dir = f_grey / pm
-                if c_v > 0.0:  # ... which is (1 − c_v)·p_mirror beside the guide
-                    g_dir = g_dir / (1.0 - c_v)
-                mirror_now = 1
-                if g_lanes != 0:
-                    tint_d = wp.cw_mul(tint, lane_ratio(mirror_lanes(scene, g_face, params.hero, wo_l[2]), f_grey))
-            else:
-                wi_l = bsdf_sample(bs, wo_l, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
-                if wi_l[2] <= 0.0:
-                    break
-                pdf_g = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
-                if c_v > 0.0:
-                    pdf_g = (1.0 - c_v) * pdf_g
-                if pdf_g <= 0.0:
-                    break
-                f_grey = bsdf_f(bs, wi_l, wo_l)
-                g_dir = f_grey * wi_l[2] / pdf_g
-                wi = to_world(wi_l, n)
-                if g_lanes != 0:
-                    tint_d = wp.cw_mul(tint, lane_ratio(bsdf_lanes(scene, g_face, params.hero, wi_l, wo_l), f_grey))
-            if g_lanes != 0:  # β takes the lanes' mean, the tint keeps mean 1 (as surface_albedo)
-                m = 0.25 * (tint_d[0] + tint_d[1] + tint_d[2] + tint_d[3])
-                if m > 0.0:
-                    g_dir = g_dir * m
-                    tint_d = tint_d / m
-        elif delta == 0:
-            local = sample_cosine_hemisphere(wp.vec2(wp.randf(rng), wp.randf(rng)))
-            if local[2] <= 0.0:
-                break
-            wi = to_world(local, n)
-        pdf_b = (1.0 - c_v) * local[2] * INV_PI  # this strategy's density: it runs with probability 1 − c
-        w_dir = weight * PI / (1.0 - c_v)
-        if gl != 0:
-            pdf_b = pdf_g
-            w_dir = weight * PI * g_dir
-        count_ray(scene, params)
-        hit = first_hit(scene, o, wi, RAY_INF)
-        event = int(0)
-        tint_before = tint_d  # the lanes of lights met before the first coloured pane on this ray
-        t_tint = float(RAY_INF)
-        hit0 = hit  # the walk's start, replayed for a light met past a coloured pane (lanes_before)
-        rng0 = rng
-        if scene.surfaces != 0:  # through panes and cut-outs to where the ray stops (kernels.surfaces)
-            lp = pass_through_traced(scene, params, o, wi, hit, rng)  # coloured panes: the same draws, per lane
-            rng = lp.rng
-            hit = lp.hit
-            event = lp.event
-            tint_d = wp.cw_mul(tint_d, lp.tint)
-            t_tint = lp.t_tint
-        weigh = params.mis != 0 and params.nee != 0 and delta == 0 and mirror_now == 0  # MIS against p's light samples
-        t_hit = hit.t
-        face = hit.face
-        ng = hit.ng
-        # UsdLux area lights in front of the hit (they do not block), met
-        # along the same ray as the mesh: a light tested along another line
-        # (from p, parallel) was seen past a shade the mesh ray hit.
-        for li in range(scene.n_lights):
-            l = scene.lights[li]
-            t = hit_light_before(l, o, wi, t_hit)  # −1 for lights with no surface
-            if t > 0.0 and count:
-                w = float(1.0)
-                if weigh:
-                    pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1)
-                    w = power_heuristic(pdf_b, pdf_l)
-                tint_l = tint_before
-                if t >= t_tint:  # past a coloured pane: the lanes of the panes in front of the light only
-                    tint_l = wp.cw_mul(tint_before, lanes_before(scene, params.hero, o, wi, hit0, rng0, t))
-                total += light_contribution(scene, params, li, (w_dir * w * shaping_factor(l, -wi)) * l.emission,
-                                            tint_l)
-        if face < 0:
-            for li in range(scene.n_lights):
-                le = escaped_radiance(scene.lights[li], wi)
-                if (le[0] > 0.0 or le[1] > 0.0) and count:
-                    w = float(1.0)
-                    if weigh:
-                        pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, RAY_INF, -1)
-                        w = power_heuristic(pdf_b, pdf_l)
-                    total += light_contribution_dir(scene, params, li, (w_dir * w) * le, tint_d, wi)
-            break
-        cos_view = -wp.dot(wi, ng)
-        if event == ABSORB:
-            break
-        if event == MIRROR:
-            if params.bounces >= 0 and depth >= params.bounces:
-                break
-            if gl != 0:  # the glossy vertex's factor, carried through the delta vertex
-                beta = beta * g_dir
-                weight = weight_in * beta
-                gl = 0
-            elif c_v > 0.0:
-                # the guide never draws a path bent by a pane, so only the cosine strategy (probability
-                # 1 − c) weighs it: β takes 1/(1 − c), and no mixture factor at the vertex it reaches
-                beta = beta / (1.0 - c_v)
-                weight = weight_in * beta
-            tint = tint_d
-            p = o + t_hit * wi
-            n = wp.where(cos_view > 0.0, ng, -ng)
-            spec_d = mirror(wi, ng)
-            delta = 1
-            cur_face = face
-            depth += 1
-            continue
-        delta = 0
-        le = tri_emitted(scene, face, cos_view)
-        if (le[0] > 0.0 or le[1] > 0.0) and count:
-            w = float(1.0)
-            if weigh and params.emissive_light >= 0:
-                w = power_heuristic(pdf_b, pick_scale(scene, params, pk, params.emissive_light, p, n, depth)
-                                    * pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
-            total += emissive_contribution(scene, params, face, (w_dir * w) * le, tint_d)
-        if params.bounces >= 0 and depth >= params.bounces:
-            break
-        # -- reflect: L_o = ρ/π·E, so the next vertex's weight is w_dir·ρ/π
-        #    = weight_in·β·ρ (the roulette comes after that vertex's
-        #    next-event estimate, above)
-        if gl != 0:
-            beta = beta * g_dir
-            gl = 0
-        tint = tint_d
-        refl = surface_albedo(scene, params, face, tint)
-        if scene.surfaces != 0 and is_glossy(scene, face):
-            # the glossy vertex takes its f·cosθ/pdf when it draws the next direction (grey: tint kept)
-            gl = 1
-            bs = face_bsdf(scene, face)
-            g_face = face
-            if params.spectral != 0:
-                g_lanes = coloured_row(scene, face)[0]
-            wo_g = -wi
-        else:
-            beta = beta * refl.rho
-            tint = refl.tint
-        if c_v > 0.0 and mirror_now == 0:  # one-sample MIS against the guide (a mirror direction: none)
-            if gl_x != 0:  # the lobes' area density, (1 − c_v)-weighted already, against the guide's
-                beta = beta * glossy_mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
-                                                    pdf_g * wp.abs(cos_view) / (t_hit * t_hit))  # fmt: skip
-            else:
-                beta = beta * mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
-                                             local[2] * wp.abs(cos_view) * INV_PI / (t_hit * t_hit))  # fmt: skip
-        weight = weight_in * beta
-        p = o + t_hit * wi
-        n = wp.where(cos_view > 0.0, ng, -ng)
-        cur_face = face
-        prev_row = row
-        depth += 1
-    return total
-
-
-@wp.func
-def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
-    """One estimate of the radiance arriving at the meter from within its cone."""
-    rng = rng_in
-    d = s.normal
-    if s.one_minus_cos > 0.0:
-        d = to_world(sample_uniform_cone(wp.vec2(wp.randf(rng), wp.randf(rng)), s.one_minus_cos), s.normal)
-    o = s.position
-    count_ray(scene, params)
-    hit = first_hit(scene, o, d, RAY_INF)
-    # Emitters seen straight along the meter's ray, and the first surface's
-    # reflection of the light reaching it straight from emitters, are the
-    # direct component; with skip_direct both are left out.
-    direct = params.skip_direct == 0
-    total = wp.vec2(0.0, 0.0)
-    skip_next = params.skip_direct
-    tint_r = params.tint  # × the lanes of coloured panes passed or reflected off (spectral mode)
-    tint_before = tint_r  # the lanes before the first coloured pane of the last segment, at distance t_tint
-    t_tint = float(RAY_INF)
-    hit0 = hit  # the last segment's walk start, replayed for a light met past a coloured pane
-    rng0 = rng
-    if scene.surfaces != 0:
-        # through panes and cut-outs; a mirror reflection off a pane sends the ray on (what it then
-        # sees was reflected on the way: indirect), each segment's lights counted as it passes them
-        for k in range(MAX_MIRRORS):
-            ev = int(0)
-            tint_before = tint_r
-            t_tint = float(RAY_INF)
-            hit0 = hit
-            rng0 = rng
-            lp = pass_through_traced(scene, params, o, d, hit, rng)
-            rng = lp.rng
-            hit = lp.hit
-            ev = lp.event
-            tint_r = wp.cw_mul(tint_r, lp.tint)
-            t_tint = lp.t_tint
-            if ev != MIRROR and ev != ABSORB:
-                break
-            for li in range(scene.n_lights):
-                l = scene.lights[li]
-                t_l = hit_light_before(l, o, d, hit.t)
-                if t_l > 0.0 and direct:
-                    tint_l = tint_before
-                    if t_l >= t_tint:  # the panes in front of the light only (lanes_before)
-                        tint_l = wp.cw_mul(tint_before, lanes_before(scene, params.hero, o, d, hit0, rng0, t_l))
-                    total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, tint_l)
-            if ev == ABSORB or k == MAX_MIRRORS - 1:
-                return total
-            q = o + hit.t * d
-            side = wp.where(wp.dot(d, hit.ng) < 0.0, hit.ng, -hit.ng)
-            d = mirror(d, hit.ng)
-            o = q + offset_length(scene, q) * side
-            direct = True
-            skip_next = 0
-            count_ray(scene, params)
-            hit = first_hit(scene, o, d, RAY_INF)
-    t_hit = hit.t
-    face = hit.face
-    ng = hit.ng
-    for li in range(scene.n_lights):
-        l = scene.lights[li]
-        t_l = hit_light_before(l, o, d, t_hit)
-        if t_l > 0.0 and direct:
-            tint_l = tint_before
-            if t_l >= t_tint:  # the panes in front of the light only (lanes_before)
-                tint_l = wp.cw_mul(tint_before, lanes_before(scene, params.hero, o, d, hit0, rng0, t_l))
-            total += light_contribution(scene, params, li, shaping_factor(l, -d) * l.emission, tint_l)
-    if face < 0:
-        if direct:
-            for li in range(scene.n_lights):
-                total += light_contribution_dir(scene, params, li, escaped_radiance(scene.lights[li], d), tint_r, d)
-        return total
-    cos_view = -wp.dot(d, ng)
-    if direct:
-        le = tri_emitted(scene, face, cos_view)
-        if le[0] > 0.0 or le[1] > 0.0:
-            total += emissive_contribution(scene, params, face, le, tint_r)
-    refl = surface_albedo(scene, params, face, tint_r)
-    if scene.surfaces != 0 and is_glossy(scene, face):  # L = ∫ f L cos dω: the vertex weighs by π·f
-        n = wp.where(cos_view > 0.0, ng, -ng)
-        prm = params
-        prm.tint = tint_r
-        total += vertex_estimate(scene, o + t_hit * d, n, INV_PI, prm, skip_next, rng, face, -d)
-    elif refl.rho > 0.0:
-        n = wp.where(cos_view > 0.0, ng, -ng)
-        prm = params
-        prm.tint = refl.tint
-        total += vertex_irradiance(scene, o + t_hit * d, n, refl.rho * INV_PI, prm, skip_next, rng)
-    return total
-
-
-@wp.func
-def split_irradiance(scene: SceneRec, p: wp.vec3, n: wp.vec3, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
-    """One estimate of the irradiance on (p, n): with ``params.split_indirect`` = K ≥ 2 (paths, total
-    light) the direct light once (next-event estimation and the cosine ray's emitters, bounces 0) plus
-    the mean of K indirect paths (each skipping the sensor's own direct light), every part from a
-    stream of its own: E = E_d + E_i, so the sum is unbiased, and its variance is v_d + v_i/K for the
-    cost c_d + K·c_i (the Neyman allocation of samples between the two, in one pass)."""
-    if params.split_indirect <= 1 or params.bounces == 0 or params.skip_direct != 0:
-        return vertex_irradiance(scene, p, n, 1.0, params, params.skip_direct, rng_in)
-    rng = rng_in
-    seed = wp.randi(rng)
-    prm = params
-    prm.bounces = 0
-    total = vertex_irradiance(scene, p, n, 1.0, prm, 0, wp.rand_init(seed, 0))
-    inv_k = 1.0 / float(params.split_indirect)
-    for k in range(params.split_indirect):
-        total += vertex_irradiance(scene, p, n, inv_k, params, 1, wp.rand_init(seed, k + 1))
-    return total
-
-
-@wp.func
-def sample_irradiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
-    """One estimate of the irradiance on the sensor's side."""
-    return split_irradiance(scene, s.position, s.normal, params, rng_in)
-
-
-@wp.func
-def sample_patch(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
-    """One estimate of the irradiance at a point drawn uniformly on the patch."""
-    rng = rng_in
-    u = wp.vec2(wp.randf(rng), wp.randf(rng))
-    p = s.position + ((u[0] - 0.5) * s.width) * s.right + ((u[1] - 0.5) * s.height) * s.up
-    return vertex_irradiance(scene, p, s.normal, 1.0, params, params.skip_direct, rng)
+def matte_dir_pdf(glints: wp.array(dtype=GlintRec), n_glints: int, p: wp.vec3, n: wp.vec3, c_v: float, gw: float,
+                  wi: wp.vec3) -> float:
+    """A matte vertex's direction density p_dir(ω) (sr⁻¹) with the glint strategy drawn with probability
+    gw of its direction samples, which run with 1 − c_v: (1 − c_v)·((1 − gw)·cosθ/π + gw·p_glint(ω))."""
+    return (1.0 - c_v) * ((1.0 - gw) * pdf_cosine_hemisphere(wp.dot(wi, n)) + gw * glint_pdf(glints, n_glints, p, wi))
 
 
 @wp.func
 def cylinder_normal(s: SensorRec, phi: float) -> wp.vec3:
     """The outward normal at azimuth ``phi`` about the axis ``s.up``, from ``s.right`` (the facing) toward ``up × right``."""
     return wp.cos(phi) * s.right + wp.sin(phi) * wp.cross(s.up, s.right)
-
-
-@wp.func
-def sample_cylindrical(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
-    """One estimate of the mean irradiance on a small cylinder's curved surface.
-
-    The mean over the surface is the mean over its outward normals n(φ), φ
-    uniform on [0, 2π): E_z = (1/2π)∫E(n(φ))dφ = (1/π)∫L sinθ dω (θ from the
-    axis). So a sample draws φ, then one irradiance sample on (p, n(φ)): the
-    directions it draws have density sinθ/π² over the sphere when cosine
-    sampled, the weight E_z carries."""
-    rng = rng_in
-    n = cylinder_normal(s, 2.0 * PI * wp.randf(rng))
-    return vertex_irradiance(scene, s.position, n, 1.0, params, params.skip_direct, rng)
-
-
-@wp.func
-def sample_semicylindrical(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
-    """One estimate of the mean irradiance on the half cylinder facing ``s.right``: φ uniform on
-    [−π/2, π/2], E_sc = (1/π)∫E(n(φ))dφ = (1/π)∫L sinθ (1 + cos φ_ω) dω (φ_ω the direction's azimuth from the facing)."""
-    rng = rng_in
-    n = cylinder_normal(s, PI * (wp.randf(rng) - 0.5))
-    return vertex_irradiance(scene, s.position, n, 1.0, params, params.skip_direct, rng)
 
 
 @wp.func
@@ -867,24 +312,29 @@ def _upload_patch(rec, sensor: Sensor) -> None:
 class SensorKernel:
     """One sensor kind's device side (its other facts: ``SensorKindSpec``).
 
-    ``sample(scene, s, params, rng) -> vec2`` draws one sample of the
-    reading; ``analytic(scene, s) -> vec2`` is its closed form, if any;
-    ``upload(rec, sensor)`` fills its fields of the :class:`SensorRec`."""
+    ``sample`` names the function ``(scene, s, params, rng) -> vec2`` that
+    draws one sample of the reading, among the samplers :func:`make_trace`
+    writes (``Trace.samplers``: one per trace variant); ``analytic(scene,
+    s) -> vec2`` is its closed form, if any; ``upload(rec, sensor)`` fills
+    its fields of the :class:`SensorRec`."""
 
     kind: SensorKind
-    sample: Any
+    sample: str
     analytic: Any = None
     upload: Callable | None = None
 
 
 #: sensor kinds read by :func:`estimate_kernel` (probes have their own kernel)
 SENSOR_KERNELS = (
-    SensorKernel(SensorKind.IRRADIANCE, sample_irradiance, analytic=analytic_irradiance),
-    SensorKernel(SensorKind.RADIANCE, sample_radiance, upload=_upload_radiance),
-    SensorKernel(SensorKind.PATCH, sample_patch, analytic=analytic_patch, upload=_upload_patch),
-    SensorKernel(SensorKind.CYLINDRICAL, sample_cylindrical, analytic=analytic_cylindrical, upload=_upload_cylinder),
-    SensorKernel(SensorKind.SEMICYLINDRICAL, sample_semicylindrical, analytic=analytic_semicylindrical, upload=_upload_cylinder),
+    SensorKernel(SensorKind.IRRADIANCE, "sample_irradiance", analytic=analytic_irradiance),
+    SensorKernel(SensorKind.RADIANCE, "sample_radiance", upload=_upload_radiance),
+    SensorKernel(SensorKind.PATCH, "sample_patch", analytic=analytic_patch, upload=_upload_patch),
+    SensorKernel(SensorKind.CYLINDRICAL, "sample_cylindrical", analytic=analytic_cylindrical, upload=_upload_cylinder),
+    SensorKernel(SensorKind.SEMICYLINDRICAL, "sample_semicylindrical", analytic=analytic_semicylindrical,
+                 upload=_upload_cylinder),
 )
+
+
 def _sample_link(k, hook, rest):
     @wp.func
     def sample_kind(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
@@ -915,16 +365,9 @@ def _no_analytic(scene: SceneRec, s: SensorRec) -> wp.vec2:
     return wp.vec2(0.0, 0.0)
 
 
-_sample_chain = kind_chain(tuple((int(k.kind), k.sample) for k in SENSOR_KERNELS), _sample_link, _no_sample)
 _analytic_chain = kind_chain(
     tuple((int(k.kind), k.analytic) for k in SENSOR_KERNELS if k.analytic is not None), _analytic_link, _no_analytic
 )
-
-
-@wp.func
-def sample_sensor(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
-    """One sample of sensor ``s``'s reading (dispatch over ``SENSOR_KERNELS``)."""
-    return _sample_chain(scene, s, params, rng_in)
 
 
 @wp.func
@@ -947,92 +390,778 @@ def sensor_record(sensor: Sensor) -> SensorRec:
     return r
 
 
-@wp.kernel
-def estimate_kernel(
-    scene: SceneRec,
-    sensors: wp.array(dtype=SensorRec),
-    params: TraceParams,
-    thread_sensor: wp.array(dtype=wp.int32),
-    thread_first_sample: wp.array(dtype=wp.int32),
-    thread_count: wp.array(dtype=wp.int32),
-    offset: int,
-    out_shift: wp.array(dtype=wp.vec2d),
-    out_sum: wp.array(dtype=wp.vec2d),
-    out_sumsq: wp.array(dtype=wp.vec2d),
-    out_bad: wp.array(dtype=wp.int32),
-    response_shift: wp.array2d(dtype=wp.float64),
-    response_sum: wp.array2d(dtype=wp.float64),
-    response_sumsq: wp.array2d(dtype=wp.float64),
-):
-    """Each thread draws ``thread_count[t]`` samples of one sensor and
-    writes shifted sums Σ(x − K) and Σ(x − K)² with K its first sample, so
-    that a constant estimator (a lone point light) has exactly zero variance
-    and float64 accumulation does not cancel. Non-finite samples are counted
-    in ``out_bad`` and left out of the sums (the host reports them).
+# ---------------------------------------------------------------- trace variants
 
-    Spectral mode: each sample first draws its hero wavelengths from the
-    sensor's wavelength stream (:func:`hero_stream_key`); its lanes are
-    projected on every response r of ``scene.response_weights`` and tallied
-    likewise in ``response_*[t, r]`` (rows 0 and 1, radiometric and
-    photopic, are also the W and lm channels).
 
-    With ``params.group_tally`` the same samples are also summed per light
-    group (:func:`fold_group_sample`); off, that costs one branch a sample."""
-    t = wp.tid() + offset
-    sid = thread_sensor[t]
-    first = thread_first_sample[t]
-    key = sensor_stream_key(params.seed, sid)
-    shift = wp.vec2d(wp.float64(0.0), wp.float64(0.0))
-    s1 = wp.vec2d(wp.float64(0.0), wp.float64(0.0))
-    s2 = wp.vec2d(wp.float64(0.0), wp.float64(0.0))
-    bad = int(0)
-    s = sensors[sid]
-    prm = params
-    prm.thread = t
-    prm.mask_row = wp.where(s.cull != 0, sid, -1)
-    n_resp = int(0)
-    if params.spectral != 0:
-        n_resp = scene.response_weights.shape[0]
-    for r in range(n_resp):
-        response_sum[t, r] = wp.float64(0.0)
-        response_sumsq[t, r] = wp.float64(0.0)
-    for j in range(thread_count[t]):
+@dataclass(frozen=True)
+class Trace:
+    """The path functions and the estimator kernel of one trace variant (:func:`make_trace`)."""
+
+    surfaces: bool  # whether the surface model (panes, cut-outs, glossy faces) is compiled in
+    vertex_estimate: Any
+    vertex_irradiance: Any
+    sample_radiance: Any  # also the probe kernel's (kernels.probe)
+    samplers: dict  # the per-sample entries by name (SensorKernel.sample)
+    sample_sensor: Any
+    estimate_kernel: Any
+
+
+@functools.cache
+def make_trace(surfaces: bool) -> Trace:
+    """The trace functions and :func:`estimate_kernel`, with the surface
+    model (``SceneRec.surfaces``: panes, cut-outs and glossy faces,
+    :mod:`.surfaces`, :mod:`.glossy`) compiled in or not.
+
+    Every test of ``scene.surfaces`` below reads ``(test) if
+    wp.static(surfaces) else <its all-matte value>``. With ``surfaces`` True
+    that is the runtime test as written, and the kernel is the one every
+    stage ran before the variants (it still reads ``scene.surfaces``, so it
+    is right on any stage). With False Warp folds the condition to a
+    constant and leaves the untaken branch out of the generated code: the
+    BSDF record, flags and directions a glossy vertex carries are then no
+    live state in the vertex loop of an all-matte stage, which takes the
+    same branches, the same draws and so the same bytes either way. The
+    engine launches the matte variant where ``SceneRec.surfaces`` is 0
+    (:func:`trace_for`).
+
+    Both variants are built at import (:data:`TRACES`, in a fixed order),
+    in this module, so the module's hash does not change once it is loaded
+    and Warp's kernel cache serves both (docs/DESIGN.md §Trace variants)."""
+    guided_step = make_guided_step(surfaces)
+
+    @wp.func
+    def vertex_estimate(
+        scene: SceneRec, p_in: wp.vec3, n_in: wp.vec3, weight_in: float, params: TraceParams, skip_first: int,
+        rng_in: wp.uint32, face_in: int, wo_in: wp.vec3
+    ) -> wp.vec2:
+        """weight_in × an estimate of the irradiance on (p, n), following bounces
+        when ``params.bounces`` allows (see module docstring). With ``skip_first``
+        the light arriving at this first vertex straight from emitters is left
+        out (the indirect component); the paths still go on from it.
+
+        Guided paths (``params.guide_c`` > 0, see :func:`guide_fraction`): at a
+        vertex the next one is drawn with probability c by the surface guide
+        (:func:`guided_step`), otherwise by the cosine direction, and either way
+        the throughput takes ρ·p_cos,A/p_mix (:func:`mixture_factor`). Direct
+        light stays next-event estimation plus the emitters cosine rays meet;
+        the cosine strategy now runs with probability 1 − c, so its solid-angle
+        density is (1 − c)·cosθ/π in both MIS weights and in the hit's estimate
+        π·L/(1 − c). Emitters, escapes and emission along guided segments are
+        not counted: those two strategies already cover all direct light.
+
+        Glossy faces (``scene.surfaces``, :mod:`.glossy`): a vertex on one (the
+        first when ``face_in`` is glossy, seen from ``wo_in``) weighs its light
+        samples by π·f(wi, wo), draws the next direction by the BSDF (β takes
+        f·cosθ/pdf) and weighs both by MIS with the BSDF's pdf; its mirror part
+        is a direction chosen with probability :func:`mirror_share`, whose rays
+        no light sample weighs against. With the guide, a glossy vertex draws
+        it with c·(1 − P_mirror)·w_diffuse (it stands in for the diffuse lobe)
+        and its lobes with the rest, every MIS weight over those real
+        densities; a delta vertex (a pane's or a mirror part's reflection)
+        never draws it, and the path it starts takes 1/(1 − c) instead of a
+        mixture factor (docs/DESIGN.md §Surface guide)."""
+        rng = rng_in
+        p = p_in
+        n = n_in
+        weight = weight_in  # weight_in × the path throughput β
+        beta = float(1.0)
+        tint = params.tint  # spectral throughput / β per hero lane (spectral mode; see surface_albedo)
+        total = wp.vec2(0.0, 0.0)
+        depth = int(0)
+        cur_face = int(-1)  # the triangle p lies on (depth ≥ 1)
+        prev_row = int(0)  # the guide row of the vertex before p
+        # a mirror reflection off a pane (scene.surfaces only, see kernels.surfaces): the next vertex p is
+        # that delta vertex; the ray leaves it along spec_d, with no light sample there and no MIS weight on
+        # what that ray meets (no light sample could have found it); β and the weight are unchanged, since
+        # the reflection was chosen with the probability R it weighs
+        delta = int(0)
+        spec_d = wp.vec3(0.0, 0.0, 1.0)
+        # the vertex on a glossy face: its BSDF, and the direction toward the vertex before it
+        gl = int(0)
+        bs = Bsdf()
+        wo_g = wo_in
+        g_face = int(-1)  # the glossy vertex's triangle
+        g_lanes = int(0)  # 1: its BSDF is evaluated per hero lane (spectral mode, a coloured row)
+        if (scene.surfaces != 0 and is_glossy(scene, face_in)) if wp.static(surfaces) else False:
+            gl = 1
+            bs = face_bsdf(scene, face_in)
+            g_face = face_in
+            if params.spectral != 0:
+                g_lanes = coloured_row(scene, face_in)[0]
+        while depth < MAX_VERTICES:
+            row = guide_row(scene, depth, cur_face)
+            c_v = guide_fraction(scene, params, depth, row)
+            if delta != 0:  # a mirror vertex on a pane follows its one direction: no guide there
+                c_v = 0.0
+            # Rays leave a surface from o, pushed off it (see offset_length). A
+            # sensor within that push of a UsdLux light starts them at p itself:
+            # lights are not geometry, and first_hit (plane_distance) still keeps
+            # the surface a sensor may lie on from shadowing it.
+            o = p
+            off = offset_length(scene, p)
+            if scene.has_mesh != 0 and (depth > 0 or not near_light(scene, p, off)):
+                o = p + off * n
+            count = not (skip_first != 0 and depth == 0)
+            wo_l = wp.vec3(0.0, 0.0, 1.0)
+            pm = float(0.0)  # probability of the glossy vertex's mirror part
+            if gl != 0:
+                wo_l = to_local(wo_g, n)
+                pm = mirror_share(bs, wo_l[2])
+                # the guide is a strategy for the diffuse lobe: it is drawn with c times the share of the
+                # vertex's draws that go to that lobe, (1 − p_mirror)·w_diffuse, and the lobes with 1 − c_v
+                if c_v > 0.0:
+                    c_v = c_v * (1.0 - pm) * lobe_weights(bs, wo_l[2])[2]
+            # a matte vertex draws the glint strategy (kernels.glints) with probability gw of its direction
+            # samples where a glossy plane shows it a distant light's reflection: its direction density is
+            # then p_dir(ω) = (1 − c_v)·((1 − gw)·cosθ/π + gw·p_glint(ω)) in every weight below
+            gw = float(0.0)
+            if (scene.n_glints > 0 and gl == 0 and delta == 0) if wp.static(surfaces) else False:
+                gw = glint_share(scene.glints, scene.n_glints, p, n)
+            # -- next-event estimation: each light once, or (pick_light) the
+            #    delta lights and one light with area, picked with P(li | x)
+            pk = LightPick()
+            if params.nee != 0 and count and delta == 0:
+                if picks_at(params, depth):
+                    pk = pick_light_at(scene, p, n, params.mask_row, depth, cur_face, rng)
+                    rng = pk.rng
+                for li in range(scene.n_lights):
+                    u = wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng))
+                    # a light the plan proved wholly behind the sensor adds nothing there
+                    if depth == 0 and params.mask_row >= 0:
+                        if scene.light_mask[params.mask_row * scene.n_lights + li] == 0:
+                            continue
+                    sel = float(1.0)
+                    if picks_at(params, depth) and not is_delta(scene.lights[li]):
+                        if li != pk.li:
+                            continue
+                        sel = pk.prob
+                    ls = sample_light(scene, li, p, n, u)  # geometry from the true point; only rays start at o
+                    ls.value = ls.value * (shaping_factor(scene.lights[li], -ls.wi) / sel)
+                    pdf_dir = float(0.0)
+                    tint_l = tint  # this sample's lanes: × each lane's BSDF and visibility over the grey ones
+                    if gl != 0:  # the BSDF's value and the density its direction samples give wi
+                        wi_l = to_local(ls.wi, n)
+                        f_grey = bsdf_f(bs, wi_l, wo_l)
+                        ls.value = ls.value * (PI * f_grey)
+                        pdf_dir = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
+                        if g_lanes != 0:
+                            tint_l = wp.cw_mul(tint_l, lane_ratio(bsdf_lanes(scene, g_face, params.hero, wi_l, wo_l), f_grey))
+                        if c_v > 0.0:  # the lobes run with probability 1 − c_v
+                            pdf_dir = (1.0 - c_v) * pdf_dir
+                    got = wp.vec2(0.0, 0.0)
+                    w = float(1.0)
+                    if ls.value[0] > 0.0 or ls.value[1] > 0.0:
+                        if params.mis != 0 and ls.pdf > 0.0:
+                            if gl == 0:
+                                pdf_dir = (1.0 - c_v) * pdf_cosine_hemisphere(wp.dot(ls.wi, n))
+                                if (gw > 0.0) if wp.static(surfaces) else False:
+                                    pdf_dir = matte_dir_pdf(scene.glints, scene.n_glints, p, n, c_v, gw, ls.wi)
+                            w = power_heuristic(sel * ls.pdf, pdf_dir)
+                        if w > 0.0 or params.tally_pick != 0:
+                            count_shadow_ray(scene, params)
+                            clear = bool(True)
+                            if (scene.surfaces != 0) if wp.static(surfaces) else False:  # through panes, cut-outs: their share
+                                vis = shadow_ray_pass(scene, o, p, li, ls)
+                                if params.spectral != 0 and scene.spectral_panes != 0 and vis > 0.0:
+                                    tint_l = wp.cw_mul(tint_l, lane_ratio(shadow_lanes(scene, params.hero, o, p, li, ls), vis))
+                                ls.value = ls.value * vis
+                                clear = vis > 0.0
+                            else:
+                                clear = shadow_ray_clear(scene, o, p, li, ls)
+                            if clear:
+                                got = ls.value
+                                c_light = wp.vec2(0.0, 0.0)
+                                if params.spectral != 0 and li == params.emissive_light:
+                                    c_light = emissive_contribution(scene, params, ls.tri, (weight * w) * ls.value, tint_l)
+                                else:
+                                    c_light = light_contribution_dir(scene, params, li, (weight * w) * ls.value, tint_l, ls.wi)
+                                total += c_light
+                                if params.tally != 0 and depth > 0:
+                                    tally_patch(scene, params, prev_row, cur_face, p, c_light)
+                    if params.tally_pick != 0:
+                        tally_pick(scene, params, li, p, n, depth, weight, got, ls.tri, w)
+                        if params.tally_pick == 2 and depth > 0:
+                            tally_patch_pick(scene, li, cur_face, p, n, weight, got)
+            # -- delta lights seen in flat mirrors: their image sources (kernels.mirrors); light reflected
+            #    on the way, so indirect (counted at a sensor's vertex even without its direct light)
+            if params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes > 0:
+                for li in range(scene.n_lights):
+                    if not is_delta(scene.lights[li]):
+                        continue
+                    for k in range(scene.n_mirror_planes):
+                        count_shadow_ray(scene, params)
+                        im = image_source(scene, li, k, p, n, o)
+                        v = im.value
+                        tint_m = tint
+                        if gl != 0:
+                            f_grey = bsdf_f(bs, to_local(im.wi, n), wo_l)
+                            v = v * (PI * f_grey)
+                            if g_lanes != 0:
+                                f4 = bsdf_lanes(scene, g_face, params.hero, to_local(im.wi, n), wo_l)
+                                tint_m = wp.cw_mul(tint_m, lane_ratio(f4, f_grey))
+                        if params.spectral != 0 and (v[0] > 0.0 or v[1] > 0.0):  # the mirror's and the panes' lanes
+                            if coloured_row(scene, im.face)[0] != 0:
+                                tint_m = wp.cw_mul(tint_m, lane_ratio(mirror_lanes(scene, im.face, params.hero, im.cos_m),
+                                                                      im.refl))
+                            if scene.spectral_panes != 0:
+                                vis4 = transmittance_lanes(scene, params.hero, im.m_off, im.to_l, im.dist_l, -1)
+                                tint_m = wp.cw_mul(tint_m, lane_ratio(vis4, im.vis))
+                        if v[0] > 0.0 or v[1] > 0.0:
+                            total += light_contribution_dir(scene, params, li, weight * v, tint_m, im.wi)
+            if params.bsdf == 0:
+                break
+            # -- Russian roulette (a weight window): below the threshold t the path
+            #    survives with probability q = β/t and β is divided by q
+            #    (unbiased: E[β'] = β). It comes after this vertex's next-event
+            #    estimate, not before it: that light is then gathered at weight
+            #    β rather than 0 or t, which cost one shadow ray per ended path
+            #    and measured 1.5× less variance × time in the integrating
+            #    sphere, 1.1–1.3× in the office, within 4% elsewhere (docs/DESIGN.md
+            #    §Russian roulette); and a guided step toward a bright patch
+            #    far off takes a small factor, which rouletting before that
+            #    patch's own light is gathered would turn back into noise
+            if depth > 0 and beta < params.rr_threshold:
+                q_late = beta / params.rr_threshold
+                if wp.randf(rng) >= q_late:
+                    break
+                beta = beta / q_late
+                weight = weight_in * beta
+            # -- guided paths: with probability c the surface guide picks the next vertex
+            if c_v > 0.0:
+                if wp.randf(rng) < c_v:
+                    count_ray(scene, params)
+                    g = guided_step(scene, row, o, n, c_v, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
+                    if g.face < 0:
+                        break
+                    if (scene.surfaces == 0) if wp.static(surfaces) else True:
+                        refl = surface_albedo(scene, params, g.face, tint)
+                        beta = beta * refl.rho * g.factor
+                        tint = refl.tint
+                    else:
+                        lanes_set = int(0)  # 1: the tint took a lane factor at this step (then renormalised)
+                        if gl != 0:
+                            # a glossy vertex: f·cosθx·jac / (p_lobes,A + c_v·p_guide,A), the lobes' density
+                            # (1 − c_v)(1 − p_mirror)·pdf_bsdf·jac, times the segment's share
+                            gwi = to_local(g.wi, n)
+                            p_lobes = (1.0 - c_v) * (1.0 - pm) * bsdf_pdf(bs, gwi, wo_l) * g.jac
+                            den = p_lobes + c_v * g.density
+                            if den <= 0.0:
+                                break
+                            f_grey = bsdf_f(bs, gwi, wo_l)
+                            beta = beta * (f_grey * gwi[2] * g.jac / den) * g.share
+                            if g_lanes != 0:  # the lanes of a coloured glossy vertex (as its direction samples)
+                                tint = wp.cw_mul(tint, lane_ratio(bsdf_lanes(scene, g_face, params.hero, gwi, wo_l), f_grey))
+                                lanes_set = 1
+                        elif gw > 0.0:  # the guide beside the cosine and glint mixture, at y's area
+                            cos_gx = wp.dot(g.wi, n)
+                            den = c_v * g.density + matte_dir_pdf(scene.glints, scene.n_glints, p, n, c_v, gw, g.wi) * g.jac
+                            if den <= 0.0:
+                                break
+                            beta = beta * (cos_gx * INV_PI * g.jac / den) * g.share
+                        else:
+                            beta = beta * g.factor
+                        if params.spectral != 0 and scene.spectral_panes != 0:  # coloured panes on the segment
+                            seg = g.y - o
+                            d_seg = wp.length(seg)
+                            off_y = offset_length(scene, g.y)
+                            if d_seg > off_y:
+                                t_grey = transmittance_along(scene, o, g.wi, d_seg - off_y, -1)
+                                tint = wp.cw_mul(tint, lane_ratio(transmittance_lanes(scene, params.hero, o, g.wi,
+                                                                                      d_seg - off_y, -1), t_grey))
+                                lanes_set = 1
+                        if lanes_set != 0:  # β takes the lanes' mean, the tint keeps mean 1
+                            m = 0.25 * (tint[0] + tint[1] + tint[2] + tint[3])
+                            if m > 0.0:
+                                beta = beta * m
+                                tint = tint / m
+                        gl = 0
+                        if is_glossy(scene, g.face):  # y scatters by its BSDF, seen from x
+                            gl = 1
+                            bs = face_bsdf(scene, g.face)
+                            wo_g = -g.wi
+                            g_face = g.face
+                            if params.spectral != 0:
+                                g_lanes = coloured_row(scene, g.face)[0]
+                        else:
+                            refl = surface_albedo(scene, params, g.face, tint)
+                            beta = beta * refl.rho
+                            tint = refl.tint
+                        if beta <= 0.0:
+                            break
+                    weight = weight_in * beta
+                    p = g.y
+                    n = g.n
+                    cur_face = g.face
+                    prev_row = row
+                    depth += 1
+                    continue
+            # -- a cosine-weighted direction: E ≈ π·L(ω)
+            local = wp.vec3(0.0, 0.0, 1.0)
+            wi = spec_d
+            g_dir = float(1.0)  # a glossy vertex's f·cosθ/pdf for this direction (β takes it at the hit)
+            tint_d = tint  # the lanes along this direction (a coloured glossy vertex's: see below)
+            mirror_now = int(0)
+            pdf_g = float(0.0)
+            gl_x = gl  # whether this vertex is glossy (gl then follows the next one)
+            if delta == 0 and gl != 0:
+                if pm > 0.0 and wp.randf(rng) < pm:  # the mirror part: reflectance F over its probability
+                    wi = mirror(-wo_g, n)
+                    f_grey = mirror_reflectance(bs, wo_l[2])
+                    g_dir = f_grey / pm
+                    if c_v > 0.0:  # ... which is (1 − c_v)·p_mirror beside the guide
+                        g_dir = g_dir / (1.0 - c_v)
+                    mirror_now = 1
+                    if g_lanes != 0:
+                        tint_d = wp.cw_mul(tint, lane_ratio(mirror_lanes(scene, g_face, params.hero, wo_l[2]), f_grey))
+                else:
+                    wi_l = bsdf_sample(bs, wo_l, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
+                    if wi_l[2] <= 0.0:
+                        break
+                    pdf_g = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
+                    if c_v > 0.0:
+                        pdf_g = (1.0 - c_v) * pdf_g
+                    if pdf_g <= 0.0:
+                        break
+                    f_grey = bsdf_f(bs, wi_l, wo_l)
+                    g_dir = f_grey * wi_l[2] / pdf_g
+                    wi = to_world(wi_l, n)
+                    if g_lanes != 0:
+                        tint_d = wp.cw_mul(tint, lane_ratio(bsdf_lanes(scene, g_face, params.hero, wi_l, wo_l), f_grey))
+                if g_lanes != 0:  # β takes the lanes' mean, the tint keeps mean 1 (as surface_albedo)
+                    m = 0.25 * (tint_d[0] + tint_d[1] + tint_d[2] + tint_d[3])
+                    if m > 0.0:
+                        g_dir = g_dir * m
+                        tint_d = tint_d / m
+            elif delta == 0:
+                glint_now = bool(False)
+                if (gw > 0.0) if wp.static(surfaces) else False:
+                    glint_now = wp.randf(rng) < gw
+                if glint_now:  # the glint strategy
+                    wi = glint_sample(scene.glints, scene.n_glints, p, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
+                    local = to_local(wi, n)
+                else:
+                    local = sample_cosine_hemisphere(wp.vec2(wp.randf(rng), wp.randf(rng)))
+                    wi = to_world(local, n)
+                if local[2] <= 0.0:
+                    break
+            pdf_b = (1.0 - c_v) * local[2] * INV_PI  # this strategy's density: it runs with probability 1 − c
+            w_dir = weight * PI / (1.0 - c_v)
+            if (gw > 0.0) if wp.static(surfaces) else False:  # E ≈ L·cosθ/p_dir(ω)
+                pdf_b = matte_dir_pdf(scene.glints, scene.n_glints, p, n, c_v, gw, wi)
+                w_dir = weight * local[2] / pdf_b
+            if gl != 0:
+                pdf_b = pdf_g
+                w_dir = weight * PI * g_dir
+            count_ray(scene, params)
+            hit = first_hit(scene, o, wi, RAY_INF)
+            event = int(0)
+            tint_before = tint_d  # the lanes of lights met before the first coloured pane on this ray
+            t_tint = float(RAY_INF)
+            hit0 = hit  # the walk's start, replayed for a light met past a weighted or coloured pane (walk_before)
+            rng0 = rng
+            w_pass = float(1.0)  # the walk's weight (kernels.surfaces.walk): the stop's, and of lights met past t_pass
+            t_pass = float(RAY_INF)
+            # through panes and cut-outs to where the ray stops; a ray that meets a matte face first (most do)
+            # or nothing stops there, with no call down the walk (each call copies the scene record)
+            walks = bool(False)
+            if (scene.surfaces != 0) if wp.static(surfaces) else False:
+                if hit.face >= 0:
+                    walks = scene.surf_id[hit.face] >= 0
+            if walks:
+                lp = pass_through_traced(scene, params, o, wi, hit, rng)  # coloured panes: the same draws, per lane
+                rng = lp.rng
+                hit = lp.hit
+                event = lp.event
+                tint_d = wp.cw_mul(tint_d, lp.tint)
+                t_tint = lp.t_tint
+                w_pass = lp.weight
+                t_pass = lp.t_weight
+            weigh = params.mis != 0 and params.nee != 0 and delta == 0 and mirror_now == 0  # MIS against p's light samples
+            t_hit = hit.t
+            face = hit.face
+            ng = hit.ng
+            # UsdLux area lights in front of the hit (they do not block), met
+            # along the same ray as the mesh: a light tested along another line
+            # (from p, parallel) was seen past a shade the mesh ray hit.
+            for li in range(scene.n_lights):
+                l = scene.lights[li]
+                t = hit_light_before(l, o, wi, t_hit)  # −1 for lights with no surface
+                if t > 0.0 and count:
+                    w = float(1.0)
+                    if weigh:
+                        pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1)
+                        w = power_heuristic(pdf_b, pdf_l)
+                    tint_l = tint_before
+                    w_l = float(1.0)
+                    if t >= wp.min(t_tint, t_pass):  # past a weighted or coloured pane: those in front of the light only
+                        wb = walk_before(scene, params, o, wi, hit0, rng0, t)
+                        tint_l = wp.cw_mul(tint_before, wb.tint)
+                        w_l = wb.weight
+                    total += light_contribution(scene, params, li, (w_dir * w_l * w * shaping_factor(l, -wi)) * l.emission,
+                                                tint_l)
+            w_dir = w_dir * w_pass  # what the walk stops at, and all past it
+            if face < 0:
+                for li in range(scene.n_lights):
+                    le = escaped_radiance(scene.lights[li], wi)
+                    if (le[0] > 0.0 or le[1] > 0.0) and count:
+                        w = float(1.0)
+                        if weigh:
+                            pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, RAY_INF, -1)
+                            w = power_heuristic(pdf_b, pdf_l)
+                        total += light_contribution_dir(scene, params, li, (w_dir * w) * le, tint_d, wi)
+                break
+            cos_view = -wp.dot(wi, ng)
+            if event == ABSORB:
+                break
+            if event == MIRROR:
+                if params.bounces >= 0 and depth >= params.bounces:
+                    break
+                beta = beta * w_pass  # the pane's reflection weight R + T, and the passes' before it
+                weight = weight_in * beta
+                if gl != 0:  # the glossy vertex's factor, carried through the delta vertex
+                    beta = beta * g_dir
+                    weight = weight_in * beta
+                    gl = 0
+                elif (gw > 0.0) if wp.static(surfaces) else False:
+                    # as below, with the direction strategies' mixture p_dir: β takes (cosθ/π)/p_dir
+                    beta = beta * (local[2] * INV_PI / pdf_b)
+                    weight = weight_in * beta
+                elif c_v > 0.0:
+                    # the guide never draws a path bent by a pane, so only the cosine strategy (probability
+                    # 1 − c) weighs it: β takes 1/(1 − c), and no mixture factor at the vertex it reaches
+                    beta = beta / (1.0 - c_v)
+                    weight = weight_in * beta
+                tint = tint_d
+                p = o + t_hit * wi
+                n = wp.where(cos_view > 0.0, ng, -ng)
+                spec_d = mirror(wi, ng)
+                delta = 1
+                cur_face = face
+                depth += 1
+                continue
+            delta = 0
+            le = tri_emitted(scene, face, cos_view)
+            if (le[0] > 0.0 or le[1] > 0.0) and count:
+                w = float(1.0)
+                if weigh and params.emissive_light >= 0:
+                    w = power_heuristic(pdf_b, pick_scale(scene, params, pk, params.emissive_light, p, n, depth)
+                                        * pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
+                total += emissive_contribution(scene, params, face, (w_dir * w) * le, tint_d)
+            if params.bounces >= 0 and depth >= params.bounces:
+                break
+            # -- reflect: L_o = ρ/π·E, so the next vertex's weight is w_dir·ρ/π
+            #    = weight_in·β·ρ (the roulette comes after that vertex's
+            #    next-event estimate, above)
+            beta = beta * w_pass  # the passes on the way (1 without panes)
+            if gl != 0:
+                beta = beta * g_dir
+                gl = 0
+            tint = tint_d
+            refl = surface_albedo(scene, params, face, tint)
+            if (scene.surfaces != 0 and is_glossy(scene, face)) if wp.static(surfaces) else False:
+                # the glossy vertex takes its f·cosθ/pdf when it draws the next direction (grey: tint kept)
+                gl = 1
+                bs = face_bsdf(scene, face)
+                g_face = face
+                if params.spectral != 0:
+                    g_lanes = coloured_row(scene, face)[0]
+                wo_g = -wi
+            else:
+                beta = beta * refl.rho
+                tint = refl.tint
+            if (gw > 0.0) if wp.static(surfaces) else False:
+                # p_cos,A / (c_v·p_guide,A + p_dir,A): the cosine, glint and guide mixture at y
+                jac = wp.abs(cos_view) / (t_hit * t_hit)
+                pg = float(0.0)
+                if c_v > 0.0:
+                    pg = pdf_guide(scene, row, face, o + t_hit * wi)
+                beta = beta * (local[2] * INV_PI * jac / (c_v * pg + pdf_b * jac))
+            elif c_v > 0.0 and mirror_now == 0:  # one-sample MIS against the guide (a mirror direction: none)
+                if gl_x != 0:  # the lobes' area density, (1 − c_v)-weighted already, against the guide's
+                    beta = beta * glossy_mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
+                                                        pdf_g * wp.abs(cos_view) / (t_hit * t_hit))  # fmt: skip
+                else:
+                    beta = beta * mixture_factor(c_v, pdf_guide(scene, row, face, o + t_hit * wi),
+                                                 local[2] * wp.abs(cos_view) * INV_PI / (t_hit * t_hit))  # fmt: skip
+            weight = weight_in * beta
+            p = o + t_hit * wi
+            n = wp.where(cos_view > 0.0, ng, -ng)
+            cur_face = face
+            prev_row = row
+            depth += 1
+        return total
+
+    @wp.func
+    def vertex_irradiance(
+        scene: SceneRec, p_in: wp.vec3, n_in: wp.vec3, weight_in: float, params: TraceParams, skip_first: int, rng_in: wp.uint32
+    ) -> wp.vec2:
+        """:func:`vertex_estimate` from a sensor or a matte face: weight_in × an estimate of the irradiance."""
+        return vertex_estimate(scene, p_in, n_in, weight_in, params, skip_first, rng_in, -1, wp.vec3(0.0, 0.0, 1.0))
+
+    @wp.func
+    def sample_radiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+        """One estimate of the radiance arriving at the meter from within its cone."""
+        rng = rng_in
+        d = s.normal
+        if s.one_minus_cos > 0.0:
+            d = to_world(sample_uniform_cone(wp.vec2(wp.randf(rng), wp.randf(rng)), s.one_minus_cos), s.normal)
+        o = s.position
+        count_ray(scene, params)
+        hit = first_hit(scene, o, d, RAY_INF)
+        # Emitters seen straight along the meter's ray, and the first surface's
+        # reflection of the light reaching it straight from emitters, are the
+        # direct component; with skip_direct both are left out.
+        direct = params.skip_direct == 0
+        total = wp.vec2(0.0, 0.0)
+        skip_next = params.skip_direct
+        tint_r = params.tint  # × the lanes of coloured panes passed or reflected off (spectral mode)
+        tint_before = tint_r  # the lanes before the first coloured pane of the last segment, at distance t_tint
+        t_tint = float(RAY_INF)
+        hit0 = hit  # the last segment's walk start, replayed for a light met past a weighted or coloured pane
+        rng0 = rng
+        wr = float(1.0)  # the weights of the pane events before the last segment (kernels.surfaces.walk)
+        w_seg = float(1.0)  # the last segment's walk weight, and the distance past which it applies
+        t_seg = float(RAY_INF)
+        if (scene.surfaces != 0) if wp.static(surfaces) else False:
+            # through panes and cut-outs; a mirror reflection off a pane sends the ray on (what it then
+            # sees was reflected on the way: indirect), each segment's lights counted as it passes them
+            for k in range(MAX_MIRRORS):
+                ev = int(0)
+                tint_before = tint_r
+                t_tint = float(RAY_INF)
+                hit0 = hit
+                rng0 = rng
+                lp = pass_through_traced(scene, params, o, d, hit, rng)
+                rng = lp.rng
+                hit = lp.hit
+                ev = lp.event
+                tint_r = wp.cw_mul(tint_r, lp.tint)
+                t_tint = lp.t_tint
+                w_seg = lp.weight
+                t_seg = lp.t_weight
+                if ev != MIRROR and ev != ABSORB:
+                    break
+                for li in range(scene.n_lights):
+                    l = scene.lights[li]
+                    t_l = hit_light_before(l, o, d, hit.t)
+                    if t_l > 0.0 and direct:
+                        tint_l = tint_before
+                        w_l = wr
+                        if t_l >= wp.min(t_tint, t_seg):  # the panes in front of the light only (walk_before)
+                            wb = walk_before(scene, params, o, d, hit0, rng0, t_l)
+                            tint_l = wp.cw_mul(tint_before, wb.tint)
+                            w_l = wr * wb.weight
+                        total += light_contribution(scene, params, li, (w_l * shaping_factor(l, -d)) * l.emission, tint_l)
+                if ev == ABSORB or k == MAX_MIRRORS - 1:
+                    return total
+                wr = wr * w_seg  # the reflection's weight R + T, and the passes' before it
+                w_seg = 1.0
+                t_seg = RAY_INF
+                q = o + hit.t * d
+                side = wp.where(wp.dot(d, hit.ng) < 0.0, hit.ng, -hit.ng)
+                d = mirror(d, hit.ng)
+                o = q + offset_length(scene, q) * side
+                direct = True
+                skip_next = 0
+                count_ray(scene, params)
+                hit = first_hit(scene, o, d, RAY_INF)
+        t_hit = hit.t
+        face = hit.face
+        ng = hit.ng
+        for li in range(scene.n_lights):
+            l = scene.lights[li]
+            t_l = hit_light_before(l, o, d, t_hit)
+            if t_l > 0.0 and direct:
+                tint_l = tint_before
+                w_l = wr
+                if t_l >= wp.min(t_tint, t_seg):  # the panes in front of the light only (walk_before)
+                    wb = walk_before(scene, params, o, d, hit0, rng0, t_l)
+                    tint_l = wp.cw_mul(tint_before, wb.tint)
+                    w_l = wr * wb.weight
+                total += light_contribution(scene, params, li, (w_l * shaping_factor(l, -d)) * l.emission, tint_l)
+        wr = wr * w_seg  # what the last segment stops at
+        if face < 0:
+            if direct:
+                for li in range(scene.n_lights):
+                    total += light_contribution_dir(scene, params, li, wr * escaped_radiance(scene.lights[li], d), tint_r, d)
+            return total
+        cos_view = -wp.dot(d, ng)
+        if direct:
+            le = tri_emitted(scene, face, cos_view)
+            if le[0] > 0.0 or le[1] > 0.0:
+                total += emissive_contribution(scene, params, face, wr * le, tint_r)
+        refl = surface_albedo(scene, params, face, tint_r)
+        if (scene.surfaces != 0 and is_glossy(scene, face)) if wp.static(surfaces) else False:  # L = ∫ f L cos dω: π·f
+            n = wp.where(cos_view > 0.0, ng, -ng)
+            prm = params
+            prm.tint = tint_r
+            total += vertex_estimate(scene, o + t_hit * d, n, wr * INV_PI, prm, skip_next, rng, face, -d)
+        elif refl.rho > 0.0:
+            n = wp.where(cos_view > 0.0, ng, -ng)
+            prm = params
+            prm.tint = refl.tint
+            total += vertex_irradiance(scene, o + t_hit * d, n, (wr * refl.rho) * INV_PI, prm, skip_next, rng)
+        return total
+
+    @wp.func
+    def split_irradiance(scene: SceneRec, p: wp.vec3, n: wp.vec3, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+        """One estimate of the irradiance on (p, n): with ``params.split_indirect`` = K ≥ 2 (paths, total
+        light) the direct light once (next-event estimation and the cosine ray's emitters, bounces 0) plus
+        the mean of K indirect paths (each skipping the sensor's own direct light), every part from a
+        stream of its own: E = E_d + E_i, so the sum is unbiased, and its variance is v_d + v_i/K for the
+        cost c_d + K·c_i (the Neyman allocation of samples between the two, in one pass)."""
+        if params.split_indirect <= 1 or params.bounces == 0 or params.skip_direct != 0:
+            return vertex_irradiance(scene, p, n, 1.0, params, params.skip_direct, rng_in)
+        rng = rng_in
+        seed = wp.randi(rng)
+        prm = params
+        prm.bounces = 0
+        total = vertex_irradiance(scene, p, n, 1.0, prm, 0, wp.rand_init(seed, 0))
+        inv_k = 1.0 / float(params.split_indirect)
+        for k in range(params.split_indirect):
+            total += vertex_irradiance(scene, p, n, inv_k, params, 1, wp.rand_init(seed, k + 1))
+        return total
+
+    @wp.func
+    def sample_irradiance(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+        """One estimate of the irradiance on the sensor's side."""
+        return split_irradiance(scene, s.position, s.normal, params, rng_in)
+
+    @wp.func
+    def sample_patch(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+        """One estimate of the irradiance at a point drawn uniformly on the patch."""
+        rng = rng_in
+        u = wp.vec2(wp.randf(rng), wp.randf(rng))
+        p = s.position + ((u[0] - 0.5) * s.width) * s.right + ((u[1] - 0.5) * s.height) * s.up
+        return vertex_irradiance(scene, p, s.normal, 1.0, params, params.skip_direct, rng)
+
+    @wp.func
+    def sample_cylindrical(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+        """One estimate of the mean irradiance on a small cylinder's curved surface.
+
+        The mean over the surface is the mean over its outward normals n(φ), φ
+        uniform on [0, 2π): E_z = (1/2π)∫E(n(φ))dφ = (1/π)∫L sinθ dω (θ from the
+        axis). So a sample draws φ, then one irradiance sample on (p, n(φ)): the
+        directions it draws have density sinθ/π² over the sphere when cosine
+        sampled, the weight E_z carries."""
+        rng = rng_in
+        n = cylinder_normal(s, 2.0 * PI * wp.randf(rng))
+        return vertex_irradiance(scene, s.position, n, 1.0, params, params.skip_direct, rng)
+
+    @wp.func
+    def sample_semicylindrical(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+        """One estimate of the mean irradiance on the half cylinder facing ``s.right``: φ uniform on
+        [−π/2, π/2], E_sc = (1/π)∫E(n(φ))dφ = (1/π)∫L sinθ (1 + cos φ_ω) dω (φ_ω the direction's azimuth from the facing)."""
+        rng = rng_in
+        n = cylinder_normal(s, PI * (wp.randf(rng) - 0.5))
+        return vertex_irradiance(scene, s.position, n, 1.0, params, params.skip_direct, rng)
+
+    samplers = {"sample_irradiance": sample_irradiance, "sample_radiance": sample_radiance, "sample_patch": sample_patch,
+                "sample_cylindrical": sample_cylindrical, "sample_semicylindrical": sample_semicylindrical}
+    sample_chain = kind_chain(tuple((int(k.kind), samplers[k.sample]) for k in SENSOR_KERNELS), _sample_link, _no_sample)
+
+    @wp.func
+    def sample_sensor(scene: SceneRec, s: SensorRec, params: TraceParams, rng_in: wp.uint32) -> wp.vec2:
+        """One sample of sensor ``s``'s reading (dispatch over ``SENSOR_KERNELS``)."""
+        return sample_chain(scene, s, params, rng_in)
+
+    @wp.kernel
+    def estimate_kernel(
+        scene: SceneRec,
+        sensors: wp.array(dtype=SensorRec),
+        params: TraceParams,
+        thread_sensor: wp.array(dtype=wp.int32),
+        thread_first_sample: wp.array(dtype=wp.int32),
+        thread_count: wp.array(dtype=wp.int32),
+        offset: int,
+        out_shift: wp.array(dtype=wp.vec2d),
+        out_sum: wp.array(dtype=wp.vec2d),
+        out_sumsq: wp.array(dtype=wp.vec2d),
+        out_bad: wp.array(dtype=wp.int32),
+        response_shift: wp.array2d(dtype=wp.float64),
+        response_sum: wp.array2d(dtype=wp.float64),
+        response_sumsq: wp.array2d(dtype=wp.float64),
+    ):
+        """Each thread draws ``thread_count[t]`` samples of one sensor and
+        writes shifted sums Σ(x − K) and Σ(x − K)² with K its first sample, so
+        that a constant estimator (a lone point light) has exactly zero variance
+        and float64 accumulation does not cancel. Non-finite samples are counted
+        in ``out_bad`` and left out of the sums (the host reports them).
+
+        Spectral mode: each sample first draws its hero wavelengths from the
+        sensor's wavelength stream (:func:`hero_stream_key`); its lanes are
+        projected on every response r of ``scene.response_weights`` and tallied
+        likewise in ``response_*[t, r]`` (rows 0 and 1, radiometric and
+        photopic, are also the W and lm channels).
+
+        With ``params.group_tally`` the same samples are also summed per light
+        group (:func:`fold_group_sample`); off, that costs one branch a sample."""
+        t = wp.tid() + offset
+        sid = thread_sensor[t]
+        first = thread_first_sample[t]
+        key = sensor_stream_key(params.seed, sid)
+        shift = wp.vec2d(wp.float64(0.0), wp.float64(0.0))
+        s1 = wp.vec2d(wp.float64(0.0), wp.float64(0.0))
+        s2 = wp.vec2d(wp.float64(0.0), wp.float64(0.0))
+        bad = int(0)
+        s = sensors[sid]
+        prm = params
+        prm.thread = t
+        prm.mask_row = wp.where(s.cull != 0, sid, -1)
+        n_resp = int(0)
         if params.spectral != 0:
-            prm.hero = hero_nodes(wp.randf(wp.rand_init(hero_stream_key(key), first + j)))
-            scene.response_lanes[t] = wp.vec4(0.0, 0.0, 0.0, 0.0)
-        if prm.group_tally != 0:
-            clear_group_sample(prm, t)
-        v = sample_sensor(scene, s, prm, wp.rand_init(key, first + j))
-        keep = int(1)
-        ok = wp.isfinite(v[0]) and wp.isfinite(v[1])
-        lanes = wp.vec4(0.0, 0.0, 0.0, 0.0)
-        if n_resp > 0:
-            lanes = scene.response_lanes[t]
-            ok = ok and wp.isfinite(wp.dot(lanes, lanes))
-        if not ok:
-            bad += 1
-            keep = 0
-            v = wp.vec2(0.0, 0.0)
-            lanes = wp.vec4(0.0, 0.0, 0.0, 0.0)
-        if prm.group_tally != 0:
-            fold_group_sample(prm, t, wp.where(j == 0, 1, 0), keep)
-        x = wp.vec2d(wp.float64(v[0]), wp.float64(v[1]))
-        if j == 0:
-            shift = x
-        dx = x - shift
-        s1 += dx
-        s2 += wp.cw_mul(dx, dx)
+            n_resp = scene.response_weights.shape[0]
         for r in range(n_resp):
-            xr = wp.float64(lane_response(scene, r, prm.hero, lanes))
+            response_sum[t, r] = wp.float64(0.0)
+            response_sumsq[t, r] = wp.float64(0.0)
+        for j in range(thread_count[t]):
+            if params.spectral != 0:
+                prm.hero = hero_nodes(wp.randf(wp.rand_init(hero_stream_key(key), first + j)))
+                scene.response_lanes[t] = wp.vec4(0.0, 0.0, 0.0, 0.0)
+            if prm.group_tally != 0:
+                clear_group_sample(prm, t)
+            v = sample_sensor(scene, s, prm, wp.rand_init(key, first + j))
+            keep = int(1)
+            ok = wp.isfinite(v[0]) and wp.isfinite(v[1])
+            lanes = wp.vec4(0.0, 0.0, 0.0, 0.0)
+            if n_resp > 0:
+                lanes = scene.response_lanes[t]
+                ok = ok and wp.isfinite(wp.dot(lanes, lanes))
+            if not ok:
+                bad += 1
+                keep = 0
+                v = wp.vec2(0.0, 0.0)
+                lanes = wp.vec4(0.0, 0.0, 0.0, 0.0)
+            if prm.group_tally != 0:
+                fold_group_sample(prm, t, wp.where(j == 0, 1, 0), keep)
+            x = wp.vec2d(wp.float64(v[0]), wp.float64(v[1]))
             if j == 0:
-                response_shift[t, r] = xr
-            dr = xr - response_shift[t, r]
-            response_sum[t, r] = response_sum[t, r] + dr
-            response_sumsq[t, r] = response_sumsq[t, r] + dr * dr
-    out_shift[t] = shift
-    out_sum[t] = s1
-    out_sumsq[t] = s2
-    out_bad[t] = bad
+                shift = x
+            dx = x - shift
+            s1 += dx
+            s2 += wp.cw_mul(dx, dx)
+            for r in range(n_resp):
+                xr = wp.float64(lane_response(scene, r, prm.hero, lanes))
+                if j == 0:
+                    response_shift[t, r] = xr
+                dr = xr - response_shift[t, r]
+                response_sum[t, r] = response_sum[t, r] + dr
+                response_sumsq[t, r] = response_sumsq[t, r] + dr * dr
+        out_shift[t] = shift
+        out_sum[t] = s1
+        out_sumsq[t] = s2
+        out_bad[t] = bad
+
+    return Trace(surfaces, vertex_estimate, vertex_irradiance, sample_radiance, samplers, sample_sensor, estimate_kernel)
+
+
+#: the two trace variants, all-matte (False) and with the surface model (True), built in this order at import
+TRACES = {flag: make_trace(flag) for flag in (False, True)}
+
+
+def trace_for(surfaces: int) -> Trace:
+    """The trace variant for a stage whose ``SceneRec.surfaces`` is ``surfaces``: the matte one for 0."""
+    return TRACES[surfaces != 0]
 
 
 # ---------------------------------------------------------------- analytic

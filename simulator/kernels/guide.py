@@ -4,6 +4,8 @@ Host side: :mod:`simulator.scene.patches` (the layout) and
 :mod:`simulator.engine.guide` (the pilot and the tables).
 """
 
+import functools
+
 import warp as wp
 
 from .lights import SceneRec, tri_params, tri_vertex
@@ -198,65 +200,73 @@ def glossy_mixture_factor(c: float, pdf_guide_area: float, pdf_dir_area: float) 
     return pdf_dir_area / den
 
 
-@wp.func
-def guided_step(scene: SceneRec, row: int, o: wp.vec3, n: wp.vec3, c: float, u: wp.vec3) -> GuideStep:
-    """The guide strategy at a vertex with ray origin o and normal n: a point
-    y from :func:`sample_guide`, kept when it faces o, o sees its side, and
-    the segment o → y first meets y's triangle (within the ray offset of y:
-    a coplanar neighbour met at y by rounding does not block it).
+@functools.cache
+def make_guided_step(surfaces: bool):
+    """:func:`guided_step` of one trace variant (:func:`.estimators.make_trace`): with
+    ``surfaces`` False its tests of ``scene.surfaces`` fold to the all-matte branch and the
+    pane and cut-out code is left out of the generated code."""
 
-    On a stage with panes or cut-outs (``scene.surfaces``) the segment is not
-    blocked by what passes light: it takes the share T(x → y)·s(y), T the
-    product of the pass factors on it (:func:`.surfaces.transmittance_along`,
-    as a shadow ray) and s(y) the probability that a ray meeting y's face
-    scatters there (:func:`scatter_share`). A cosine ray reaches y as a
-    scattering vertex with probability T·s and weight 1, so both strategies
-    estimate the same ∫ L·G·T·s dA; their one-sample MIS weights
-    (:func:`mixture_factor`) depend on y alone and still sum to 1, so the
-    pair stays unbiased (Veach 1997 §9.2.4 needs no more than that)."""
-    g = GuideStep()
-    g.face = -1
-    gs = sample_guide(scene, row, u)
-    d = gs.y - o
-    dist = wp.length(d)
-    if dist <= 0.0:
-        return g
-    wi = d / dist
-    cos_x = wp.dot(wi, n)
-    a = tri_vertex(scene, gs.face, 0)
-    ng = wp.cross(tri_vertex(scene, gs.face, 1) - a, tri_vertex(scene, gs.face, 2) - a)
-    if cos_x <= 0.0 or wp.length(ng) <= 0.0:
-        return g
-    ng = wp.normalize(ng)
-    cos_y = -wp.dot(wi, ng)
-    if cos_y < 0.0:
-        ng = -ng
-        cos_y = -cos_y
-    if cos_y <= 0.0:
-        return g
-    off = offset_length(scene, gs.y)
-    share = float(1.0)
-    if scene.surfaces != 0:
-        share = scatter_share(scene, gs.face, wi, ng, gs.y)
-        if share > 0.0 and dist > off:
-            share = share * transmittance_along(scene, o, wi, dist - off, -1)
-        if share <= 0.0:
+    @wp.func
+    def guided_step(scene: SceneRec, row: int, o: wp.vec3, n: wp.vec3, c: float, u: wp.vec3) -> GuideStep:
+        """The guide strategy at a vertex with ray origin o and normal n: a point
+        y from :func:`sample_guide`, kept when it faces o, o sees its side, and
+        the segment o → y first meets y's triangle (within the ray offset of y:
+        a coplanar neighbour met at y by rounding does not block it).
+
+        On a stage with panes or cut-outs (``scene.surfaces``) the segment is not
+        blocked by what passes light: it takes the share T(x → y)·s(y), T the
+        product of the pass factors on it (:func:`.surfaces.transmittance_along`,
+        as a shadow ray) and s(y) the probability that a ray meeting y's face
+        scatters there (:func:`scatter_share`). A cosine ray reaches y as a
+        scattering vertex with probability T·s and weight 1, so both strategies
+        estimate the same ∫ L·G·T·s dA; their one-sample MIS weights
+        (:func:`mixture_factor`) depend on y alone and still sum to 1, so the
+        pair stays unbiased (Veach 1997 §9.2.4 needs no more than that)."""
+        g = GuideStep()
+        g.face = -1
+        gs = sample_guide(scene, row, u)
+        d = gs.y - o
+        dist = wp.length(d)
+        if dist <= 0.0:
             return g
-    else:
-        h = first_hit(scene, o, wi, dist + off)
-        if h.face >= 0 and h.face != gs.face and h.t < dist - off:
+        wi = d / dist
+        cos_x = wp.dot(wi, n)
+        a = tri_vertex(scene, gs.face, 0)
+        ng = wp.cross(tri_vertex(scene, gs.face, 1) - a, tri_vertex(scene, gs.face, 2) - a)
+        if cos_x <= 0.0 or wp.length(ng) <= 0.0:
             return g
-    g.y = gs.y
-    g.n = ng
-    g.face = gs.face
-    g.factor = mixture_factor(c, gs.density, cos_x * cos_y * INV_PI / (dist * dist))
-    if scene.surfaces != 0:
-        g.factor = g.factor * share
-    g.wi = wi
-    g.jac = cos_y / (dist * dist)
-    g.density = gs.density
-    g.share = share
-    return g
+        ng = wp.normalize(ng)
+        cos_y = -wp.dot(wi, ng)
+        if cos_y < 0.0:
+            ng = -ng
+            cos_y = -cos_y
+        if cos_y <= 0.0:
+            return g
+        off = offset_length(scene, gs.y)
+        share = float(1.0)
+        if (scene.surfaces != 0) if wp.static(surfaces) else False:
+            share = scatter_share(scene, gs.face, wi, ng, gs.y)
+            if share > 0.0 and dist > off:
+                share = share * transmittance_along(scene, o, wi, dist - off, -1)
+            if share <= 0.0:
+                return g
+        else:
+            h = first_hit(scene, o, wi, dist + off)
+            if h.face >= 0 and h.face != gs.face and h.t < dist - off:
+                return g
+        g.y = gs.y
+        g.n = ng
+        g.face = gs.face
+        g.factor = mixture_factor(c, gs.density, cos_x * cos_y * INV_PI / (dist * dist))
+        if (scene.surfaces != 0) if wp.static(surfaces) else False:
+            g.factor = g.factor * share
+        g.wi = wi
+        g.jac = cos_y / (dist * dist)
+        g.density = gs.density
+        g.share = share
+        return g
+
+    return guided_step
 
 
 @wp.func

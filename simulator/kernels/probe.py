@@ -1,8 +1,9 @@
 """Light probes: incident radiance over the whole sphere, one lat-long pixel at a time.
 
-One kernel, :func:`probe_kernel`, estimates for every pixel of a probe's
-lat-long map the mean radiance arriving from the pixel's solid angle, and
-alongside it the per-sample integrands of the probe's sphere integrals:
+One kernel, :func:`probe_kernel` (one per trace variant, :func:`make_probe_kernel`),
+estimates for every pixel of a probe's lat-long map the mean radiance
+arriving from the pixel's solid angle, and alongside it the per-sample
+integrands of the probe's sphere integrals:
 
 =====  ==========================  ===============================================
 q      integrand f(ω)·L(ω)          its integral over the sphere
@@ -21,10 +22,11 @@ direction in each pixel, uniform in solid angle within it (longitude uniform,
 sine of latitude uniform: pdf 1/Ω_pixel, :func:`sample_latlong_pixel` and
 :func:`pdf_latlong_pixel`). A pass is therefore an unbiased estimate
 Σ_pixels Ω·f(ω)·L(ω) of each integral, and the passes are independent. The
-radiance along a direction is :func:`~simulator.kernels.estimators.sample_radiance`
-of a zero-width radiance meter: emitters seen straight along it, and at the
-first surface its emission plus ρ/π times an estimate of its irradiance by
-the run's method (light, bsdf, mis or path).
+radiance along a direction is the trace variant's ``sample_radiance``
+(:func:`~simulator.kernels.estimators.make_trace`) of a zero-width
+radiance meter: emitters seen straight along it, and at the first surface
+its emission plus ρ/π times an estimate of its irradiance by the run's
+method (light, bsdf, mis or path).
 
 Delta lights (point lights, angle-0 distant lights) fill no solid angle, so
 no direction sample sees them. With ``mode = 1`` the kernel instead adds
@@ -46,11 +48,13 @@ Environment Maps", SIGGRAPH 2001, eq. 3; P.-P. Sloan, "Stupid Spherical
 Harmonics (SH) Tricks", GDC 2008, appendix).
 """
 
+import functools
+
 import warp as wp
 
 from simulator.scene.model import LightKind, SensorKind
 
-from .estimators import SensorRec, TraceParams, hero_nodes, sample_radiance, shaping_factor, spectral_row, unoccluded
+from .estimators import SensorRec, TraceParams, hero_nodes, make_trace, shaping_factor, spectral_row, unoccluded
 from .lights import SceneRec
 from .spectral_surfaces import transmittance_lanes
 from .surfaces import transmittance_along
@@ -175,47 +179,6 @@ def probe_weight(q: int, w: wp.vec3) -> float:
 
 
 @wp.func
-def delta_visibility(scene: SceneRec, p: wp.vec3, w: wp.vec3, dist: float) -> float:
-    """1 or 0 for an open or blocked segment; through panes and cut-outs the share they pass."""
-    if scene.surfaces != 0:
-        return transmittance_along(scene, p, w, dist, -1)
-    if unoccluded(scene, p, w, dist, -1):
-        return 1.0
-    return 0.0
-
-
-@wp.func
-def delta_incident(scene: SceneRec, li: int, p: wp.vec3, open_segment: int) -> wp.vec4:
-    """(ω, E⊥) of delta light ``li`` at p: the unit direction toward it in the
-    first three components and the normal irradiance it gives (radiometric)
-    in the fourth; use :func:`delta_scale` for the photometric twin. Zero if
-    the light is not a delta light or is blocked. With ``open_segment`` 1 the
-    segment is not traced (E⊥ as if open: :func:`delta_responses` then takes
-    what it passes)."""
-    l = scene.lights[li]
-    if l.kind == _POINT:
-        d = l.position - p
-        dist = wp.length(d)
-        if dist <= 0.0:
-            return wp.vec4(0.0)
-        w = d / dist
-        vis = float(1.0)
-        if open_segment == 0:
-            vis = delta_visibility(scene, p, w, dist)
-        if vis <= 0.0:
-            return wp.vec4(0.0)
-        return wp.vec4(w[0], w[1], w[2], vis * shaping_factor(l, -w) / (dist * dist))  # E⊥ = I(ω)/d²
-    if l.kind == _DISTANT and l.one_minus_cos <= 0.0:
-        vis = float(1.0)
-        if open_segment == 0:
-            vis = delta_visibility(scene, p, l.ez, 1.0e30)
-        if vis <= 0.0:
-            return wp.vec4(0.0)
-        return wp.vec4(l.ez[0], l.ez[1], l.ez[2], vis)  # E⊥ is the emission itself (× what panes pass)
-    return wp.vec4(0.0)
-
-
-@wp.func
 def delta_responses(scene: SceneRec, li: int, p: wp.vec3, w: wp.vec3, panes: int) -> wp.vec2:
     """A spectral run's (radiometric, photopic) responses to delta light ``li`` at p (toward ω = w) per
     unit of its radiometric value, as the hero lanes take them (:func:`.spectral.spectral_contribution`)
@@ -279,102 +242,159 @@ def accumulate_one(t: int, k: int, first: int, x: wp.float64, out_shift: wp.arra
     out_sumsq[t, k] = out_sumsq[t, k] + dx * dx
 
 
-@wp.kernel
-def probe_kernel(
-    scene: SceneRec,
-    probe: ProbeRec,
-    params: TraceParams,
-    mode: int,
-    first_pass: int,
-    n_passes: int,
-    pass_block: int,
-    blocks: int,
-    pixel_first: int,
-    offset: int,
-    out_shift: wp.array2d(dtype=wp.float64),
-    out_sum: wp.array2d(dtype=wp.float64),
-    out_sumsq: wp.array2d(dtype=wp.float64),
-    out_bad: wp.array(dtype=wp.int32),
-):
-    """``mode`` 0: thread t (= tid + offset) draws passes
-    [first_pass + b·pass_block, …) (at most ``pass_block``, within
-    ``n_passes``) of pixel pixel_first + t // blocks, b = t mod blocks, and
-    writes the shifted sums of the 22 integrands (row t, column 2q + channel). Sample k of pixel p always uses the random stream
-    ``rand_init(sensor_stream_key(probe.key, p), k)``, whatever the batch
-    layout. ``mode`` 1 (one thread): writes the delta lights' exact
-    contributions to the integrals in ``out_sum[0]`` (shift and squares 0).
+@functools.cache
+def make_probe_kernel(surfaces: bool):
+    """:func:`probe_kernel` of one trace variant (:func:`.estimators.make_trace`): its radiance
+    samples are that variant's ``sample_radiance``, and with ``surfaces`` False the panes and
+    cut-outs on a delta light's segment are left out of the generated code."""
+    sample_radiance = make_trace(surfaces).sample_radiance
 
-    Spectral transport (``params.spectral``): each direction carries hero
-    wavelengths drawn from the pixel's wavelength stream
-    (``hero_stream_key``), the integrands are its radiometric and photopic
-    responses, and columns 2·N_QUANTITIES + c (c = 0, 1, 2) take its linear
-    sRGB radiance (``scene.colour_weights``, cd/m²); delta lights, which the
-    map cannot show, add nothing there."""
-    t = wp.tid() + offset
-    if mode == 1:
-        for k in range(out_shift.shape[1]):
-            out_shift[t, k] = wp.float64(0.0)
-            out_sum[t, k] = wp.float64(0.0)
-            out_sumsq[t, k] = wp.float64(0.0)
-        out_bad[t] = 0
-        # delta lights are direct light; method bsdf cannot see them (as for every sensor)
-        if params.nee == 0 or params.skip_direct != 0:
+    @wp.func
+    def delta_visibility(scene: SceneRec, p: wp.vec3, w: wp.vec3, dist: float) -> float:
+        """1 or 0 for an open or blocked segment; through panes and cut-outs the share they pass."""
+        if (scene.surfaces != 0) if wp.static(surfaces) else False:
+            return transmittance_along(scene, p, w, dist, -1)
+        if unoccluded(scene, p, w, dist, -1):
+            return 1.0
+        return 0.0
+
+    @wp.func
+    def delta_incident(scene: SceneRec, li: int, p: wp.vec3, open_segment: int) -> wp.vec4:
+        """(ω, E⊥) of delta light ``li`` at p: the unit direction toward it in the
+        first three components and the normal irradiance it gives (radiometric)
+        in the fourth; use :func:`delta_scale` for the photometric twin. Zero if
+        the light is not a delta light or is blocked. With ``open_segment`` 1 the
+        segment is not traced (E⊥ as if open: :func:`delta_responses` then takes
+        what it passes)."""
+        l = scene.lights[li]
+        if l.kind == _POINT:
+            d = l.position - p
+            dist = wp.length(d)
+            if dist <= 0.0:
+                return wp.vec4(0.0)
+            w = d / dist
+            vis = float(1.0)
+            if open_segment == 0:
+                vis = delta_visibility(scene, p, w, dist)
+            if vis <= 0.0:
+                return wp.vec4(0.0)
+            return wp.vec4(w[0], w[1], w[2], vis * shaping_factor(l, -w) / (dist * dist))  # E⊥ = I(ω)/d²
+        if l.kind == _DISTANT and l.one_minus_cos <= 0.0:
+            vis = float(1.0)
+            if open_segment == 0:
+                vis = delta_visibility(scene, p, l.ez, 1.0e30)
+            if vis <= 0.0:
+                return wp.vec4(0.0)
+            return wp.vec4(l.ez[0], l.ez[1], l.ez[2], vis)  # E⊥ is the emission itself (× what panes pass)
+        return wp.vec4(0.0)
+
+    @wp.kernel
+    def probe_kernel(
+        scene: SceneRec,
+        probe: ProbeRec,
+        params: TraceParams,
+        mode: int,
+        first_pass: int,
+        n_passes: int,
+        pass_block: int,
+        blocks: int,
+        pixel_first: int,
+        offset: int,
+        out_shift: wp.array2d(dtype=wp.float64),
+        out_sum: wp.array2d(dtype=wp.float64),
+        out_sumsq: wp.array2d(dtype=wp.float64),
+        out_bad: wp.array(dtype=wp.int32),
+    ):
+        """``mode`` 0: thread t (= tid + offset) draws passes
+        [first_pass + b·pass_block, …) (at most ``pass_block``, within
+        ``n_passes``) of pixel pixel_first + t // blocks, b = t mod blocks, and
+        writes the shifted sums of the 22 integrands (row t, column 2q + channel). Sample k of pixel p always uses the random stream
+        ``rand_init(sensor_stream_key(probe.key, p), k)``, whatever the batch
+        layout. ``mode`` 1 (one thread): writes the delta lights' exact
+        contributions to the integrals in ``out_sum[0]`` (shift and squares 0).
+
+        Spectral transport (``params.spectral``): each direction carries hero
+        wavelengths drawn from the pixel's wavelength stream
+        (``hero_stream_key``), the integrands are its radiometric and photopic
+        responses, and columns 2·N_QUANTITIES + c (c = 0, 1, 2) take its linear
+        sRGB radiance (``scene.colour_weights``, cd/m²); delta lights, which the
+        map cannot show, add nothing there."""
+        t = wp.tid() + offset
+        if mode == 1:
+            for k in range(out_shift.shape[1]):
+                out_shift[t, k] = wp.float64(0.0)
+                out_sum[t, k] = wp.float64(0.0)
+                out_sumsq[t, k] = wp.float64(0.0)
+            out_bad[t] = 0
+            # delta lights are direct light; method bsdf cannot see them (as for every sensor)
+            if params.nee == 0 or params.skip_direct != 0:
+                return
+            # spectral runs: each channel the response to the light's spectrum (through coloured panes at
+            # every wavelength), as the lanes of every other sensor read it
+            per_lane = wp.where(params.spectral != 0 and scene.spectral_panes != 0, 1, 0)
+            for li in range(scene.n_lights):
+                inc = delta_incident(scene, li, probe.position, per_lane)
+                if inc[3] > 0.0:
+                    w = wp.vec3(inc[0], inc[1], inc[2])
+                    e = scene.lights[li].emission * inc[3]
+                    if params.spectral != 0:
+                        e = (scene.lights[li].emission[0] * inc[3]) * delta_responses(scene, li, probe.position, w,
+                                                                                       per_lane)
+                    for q in range(N_QUANTITIES):
+                        f = probe_weight(q, w)
+                        for c in range(2):
+                            out_sum[t, 2 * q + c] = out_sum[t, 2 * q + c] + wp.float64(f * e[c])
             return
-        # spectral runs: each channel the response to the light's spectrum (through coloured panes at
-        # every wavelength), as the lanes of every other sensor read it
-        per_lane = wp.where(params.spectral != 0 and scene.spectral_panes != 0, 1, 0)
-        for li in range(scene.n_lights):
-            inc = delta_incident(scene, li, probe.position, per_lane)
-            if inc[3] > 0.0:
-                w = wp.vec3(inc[0], inc[1], inc[2])
-                e = scene.lights[li].emission * inc[3]
-                if params.spectral != 0:
-                    e = (scene.lights[li].emission[0] * inc[3]) * delta_responses(scene, li, probe.position, w,
-                                                                                   per_lane)
-                for q in range(N_QUANTITIES):
-                    f = probe_weight(q, w)
-                    for c in range(2):
-                        out_sum[t, 2 * q + c] = out_sum[t, 2 * q + c] + wp.float64(f * e[c])
-        return
-    b = t % blocks
-    pix = pixel_first + t // blocks
-    i = pix % probe.width
-    j = pix // probe.width
-    start = first_pass + b * pass_block
-    end = wp.min(start + pass_block, first_pass + n_passes)
-    lon_a = probe.lon0 + float(i) * probe.dlon
-    lat_a = probe.lat0 + float(j) * probe.dlat
-    key = sensor_stream_key(probe.key, pix)
-    s = SensorRec()
-    s.kind = _RADIANCE
-    s.position = probe.position
-    s.one_minus_cos = 0.0
-    bad = int(0)
-    prm = params
-    prm.thread = t
-    for k in range(start, end):
-        rng = wp.rand_init(key, k)
-        loc = sample_latlong_pixel(wp.vec2(wp.randf(rng), wp.randf(rng)), lon_a, lon_a + probe.dlon, lat_a, lat_a + probe.dlat)
-        w = wp.normalize(loc[0] * probe.ex + loc[1] * probe.ey + loc[2] * probe.ez)
-        s.normal = w
-        if params.spectral != 0:
-            prm.hero = hero_nodes(wp.randf(wp.rand_init(hero_stream_key(key), k)))
-            scene.response_lanes[t] = wp.vec4(0.0, 0.0, 0.0, 0.0)
-        v = sample_radiance(scene, s, prm, rng)
-        lanes = wp.vec4(0.0, 0.0, 0.0, 0.0)
-        ok = wp.isfinite(v[0]) and wp.isfinite(v[1])
-        if params.spectral != 0:
-            lanes = scene.response_lanes[t]
-            ok = ok and wp.isfinite(wp.dot(lanes, lanes))
-        if not ok:
-            bad += 1
-            v = wp.vec2(0.0, 0.0)
+        b = t % blocks
+        pix = pixel_first + t // blocks
+        i = pix % probe.width
+        j = pix // probe.width
+        start = first_pass + b * pass_block
+        end = wp.min(start + pass_block, first_pass + n_passes)
+        lon_a = probe.lon0 + float(i) * probe.dlon
+        lat_a = probe.lat0 + float(j) * probe.dlat
+        key = sensor_stream_key(probe.key, pix)
+        s = SensorRec()
+        s.kind = _RADIANCE
+        s.position = probe.position
+        s.one_minus_cos = 0.0
+        bad = int(0)
+        prm = params
+        prm.thread = t
+        for k in range(start, end):
+            rng = wp.rand_init(key, k)
+            loc = sample_latlong_pixel(wp.vec2(wp.randf(rng), wp.randf(rng)), lon_a, lon_a + probe.dlon, lat_a, lat_a + probe.dlat)
+            w = wp.normalize(loc[0] * probe.ex + loc[1] * probe.ey + loc[2] * probe.ez)
+            s.normal = w
+            if params.spectral != 0:
+                prm.hero = hero_nodes(wp.randf(wp.rand_init(hero_stream_key(key), k)))
+                scene.response_lanes[t] = wp.vec4(0.0, 0.0, 0.0, 0.0)
+            v = sample_radiance(scene, s, prm, rng)
             lanes = wp.vec4(0.0, 0.0, 0.0, 0.0)
-        first = wp.where(k == start, 1, 0)
-        for q in range(N_QUANTITIES):
-            accumulate(t, q, first, probe_weight(q, w) * v, out_shift, out_sum, out_sumsq)
-        if params.spectral != 0:
-            for c in range(N_COLOUR):
-                x = 0.25 * wp.dot(spectral_row(scene.colour_weights, c, prm.hero), lanes)
-                accumulate_one(t, 2 * N_QUANTITIES + c, first, wp.float64(x), out_shift, out_sum, out_sumsq)
-    out_bad[t] = bad
+            ok = wp.isfinite(v[0]) and wp.isfinite(v[1])
+            if params.spectral != 0:
+                lanes = scene.response_lanes[t]
+                ok = ok and wp.isfinite(wp.dot(lanes, lanes))
+            if not ok:
+                bad += 1
+                v = wp.vec2(0.0, 0.0)
+                lanes = wp.vec4(0.0, 0.0, 0.0, 0.0)
+            first = wp.where(k == start, 1, 0)
+            for q in range(N_QUANTITIES):
+                accumulate(t, q, first, probe_weight(q, w) * v, out_shift, out_sum, out_sumsq)
+            if params.spectral != 0:
+                for c in range(N_COLOUR):
+                    x = 0.25 * wp.dot(spectral_row(scene.colour_weights, c, prm.hero), lanes)
+                    accumulate_one(t, 2 * N_QUANTITIES + c, first, wp.float64(x), out_shift, out_sum, out_sumsq)
+        out_bad[t] = bad
+
+    return probe_kernel
+
+
+#: the probe kernel of each trace variant (:data:`.estimators.TRACES`), built in this order at import
+PROBE_KERNELS = {flag: make_probe_kernel(flag) for flag in (False, True)}
+
+
+def probe_kernel_for(surfaces: int):
+    """The probe kernel for a stage whose ``SceneRec.surfaces`` is ``surfaces`` (:func:`.estimators.trace_for`)."""
+    return PROBE_KERNELS[surfaces != 0]

@@ -34,8 +34,8 @@ from .lights import RAY_INF, LightSample, SceneRec
 from .rays import RayHit, first_hit, offset_length
 from .shadows import shadow_segment
 from .records import TraceParams
-from .surfaces import (ABSORB, MAX_PASSES, MIRROR, PASS, SCATTER, next_hit_past, pane_rt, pass_factor, pass_through,
-                       slab_rt, surface_event)
+from .surfaces import (ABSORB, MAX_PASSES, MIRROR, PASS, SCATTER, Passage, next_hit_past, pane_rt, pass_factor,
+                       pass_through, slab_rt, surface_event, walk)
 
 
 @wp.func
@@ -181,17 +181,34 @@ class LanePassage:
     rng: wp.uint32
     tint: wp.vec4  # per hero lane: each pass and reflection's lane value over the grey one it was drawn by
     t_tint: float  # distance (from o) of the first coloured pane that set a lane factor; RAY_INF for none
+    weight: float  # the grey weights, as Passage (kernels.surfaces.walk)
+    t_weight: float
+
+
+@wp.func
+def grey_lanes(pas: Passage) -> LanePassage:
+    """The grey walk ``pas`` with lane factor 1 and no coloured pane (``t_tint`` RAY_INF)."""
+    out = LanePassage()
+    out.hit = pas.hit
+    out.event = pas.event
+    out.rng = pas.rng
+    out.tint = wp.vec4(1.0, 1.0, 1.0, 1.0)
+    out.t_tint = RAY_INF
+    out.weight = pas.weight
+    out.t_weight = pas.t_weight
+    return out
 
 
 @wp.func
 def walk_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, first: RayHit, rng_in: wp.uint32,
                t_cut: float) -> LanePassage:
-    """:func:`pass_through_lanes` up to the distance ``t_cut`` along the ray: the same draws (one uniform
-    per face, in order), the lane factors of the faces nearer than ``t_cut`` only, and the walk ends at
-    the first face at or past it (its hit and event are then those of that face, not followed)."""
+    """:func:`.surfaces.walk` (the same draws: one uniform per face, in order, and the same grey weights)
+    which also returns the lane factors of the faces nearer than ``t_cut``."""
     out = LanePassage()
     out.tint = wp.vec4(1.0, 1.0, 1.0, 1.0)
     out.t_tint = RAY_INF
+    out.weight = 1.0
+    out.t_weight = RAY_INF
     rng = rng_in
     h = first
     out.event = SCATTER
@@ -201,23 +218,21 @@ def walk_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, first: R
             out.rng = rng
             return out
         p = o + h.t * d
-        u = wp.randf(rng)
-        ev = surface_event(scene, h.face, d, h.ng, p, u)
-        rows = coloured_row(scene, h.face)
-        if rows[2] >= 0 and (ev == PASS or ev == MIRROR):
-            s = scene.surf[scene.surf_id[h.face]]
-            c = coverage_at(scene, s, h.face, p)
-            if u < c:  # the pane's part (surface_event drew the slab with u/c): its lane weights
+        ev = surface_event(scene, h.face, d, h.ng, p, wp.randf(rng))
+        if ev.slab != 0:  # the pane's slab: its grey weight, and its lane weights on a coloured pane
+            out.weight = out.weight * ev.weight
+            out.t_weight = wp.min(out.t_weight, h.t)
+            if coloured_row(scene, h.face)[2] >= 0:
                 rt = pane_rt(scene, h.face, d, h.ng)
                 lanes = pane_lanes(scene, h.face, hero, d, h.ng)
-                if ev == MIRROR:
+                if ev.kind == MIRROR:
                     out.tint = wp.cw_mul(out.tint, lane_ratio(lanes.r, rt[0]))
                 else:
                     out.tint = wp.cw_mul(out.tint, lane_ratio(lanes.t, rt[1]))
                 out.t_tint = wp.min(out.t_tint, h.t)
-        if ev != PASS:
+        if ev.kind != PASS:
             out.hit = h
-            out.event = ev
+            out.event = ev.kind
             out.rng = rng
             return out
         h = next_hit_past(scene, o, d, h)
@@ -235,7 +250,7 @@ def pass_through_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, 
     T(λ_k)/T through a pane's slab, R(λ_k)/R off it (the pane's lanes, :func:`pane_lanes`), and where
     along the ray the first such factor applies. A light met before that distance is seen with the
     lanes as they were; one met past it takes the factors of the panes in front of it only
-    (:func:`lanes_before`)."""
+    (:func:`walk_before`)."""
     return walk_lanes(scene, hero, o, d, first, rng_in, RAY_INF)
 
 
@@ -243,25 +258,22 @@ def pass_through_lanes(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, 
 def pass_through_traced(scene: SceneRec, params: TraceParams, o: wp.vec3, d: wp.vec3, first: RayHit,
                         rng_in: wp.uint32) -> LanePassage:
     """The walk a traced ray takes through panes and cut-outs: :func:`pass_through_lanes` in a spectral
-    run with coloured panes, else :func:`.surfaces.pass_through` with lane factor 1 and no coloured
-    pane (``t_tint`` RAY_INF), so callers keep one set of lanes either way."""
+    run with coloured panes, else :func:`.surfaces.pass_through` with lane factor 1 (:func:`grey_lanes`),
+    so callers keep one set of lanes either way."""
     if params.spectral != 0 and scene.spectral_panes != 0:
         return pass_through_lanes(scene, params.hero, o, d, first, rng_in)
-    pas = pass_through(scene, o, d, first, rng_in)
-    out = LanePassage()
-    out.hit = pas.hit
-    out.event = pas.event
-    out.rng = pas.rng
-    out.tint = wp.vec4(1.0, 1.0, 1.0, 1.0)
-    out.t_tint = RAY_INF
-    return out
+    return grey_lanes(pass_through(scene, o, d, first, rng_in))
 
 
 @wp.func
-def lanes_before(scene: SceneRec, hero: wp.vec4i, o: wp.vec3, d: wp.vec3, first: RayHit, rng_in: wp.uint32,
-                 t_light: float) -> wp.vec4:
-    """The lane factor of the panes between o and a light met at ``t_light`` along the ray that
-    :func:`pass_through_lanes` followed from ``first`` with ``rng_in``: the walk replayed with the same
-    uniforms, so its events are the same, and cut at ``t_light`` (panes past the light pass or reflect
-    light that never reached it)."""
-    return walk_lanes(scene, hero, o, d, first, rng_in, t_light).tint
+def walk_before(scene: SceneRec, params: TraceParams, o: wp.vec3, d: wp.vec3, first: RayHit, rng_in: wp.uint32,
+                t_light: float) -> LanePassage:
+    """The walk :func:`pass_through_traced` took from ``first`` with ``rng_in``, replayed with the same
+    uniforms (so its events are the same) and cut at a light met at ``t_light``: its lane factors
+    (``tint``) and grey weight are those of the faces between o and the light only (faces past it pass
+    or reflect light that never reached it)."""
+    if params.spectral != 0 and scene.spectral_panes != 0:
+        return walk_lanes(scene, params.hero, o, d, first, rng_in, t_light)
+    return grey_lanes(walk(scene, o, d, first, rng_in, t_light))
+
+

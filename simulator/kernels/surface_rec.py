@@ -41,3 +41,14 @@ class TexRec:
     wrap_s: int
     wrap_t: int
     border: float
+
+
+@wp.struct
+class GlintRec:
+    """One glint pair (:mod:`.glints`): a flat glossy plane n·x = d and a distant light whose glossy
+    reflection in it the glint strategy samples; ``alpha`` the plane's GGX α."""
+
+    plane: wp.vec4  # (n, d), n unit
+    alpha: float
+    light: int  # index into scene.lights (a distant light)
+    s: wp.vec3  # the unit direction toward that light (its +ez), kept here so no light record is read

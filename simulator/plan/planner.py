@@ -340,6 +340,12 @@ def surface_needs(scene: Scene) -> list[str]:
         if s.unmodelled:
             line += f"; read, not modelled: {', '.join(s.unmodelled)}"
         out.append(line)
+    from simulator.scene.surfaces import glint_pairs
+
+    for plane, alpha, li in glint_pairs(g, scene.lights):
+        n, d = plane[:3], plane[3]
+        out.append(f"glints: {scene.lights[li].name} reflected in the glossy plane n = ({n[0]:.3g}, {n[1]:.3g}, "
+                   f"{n[2]:.3g}), n·x = {d:.4g} m (GGX α {alpha:.3g}), sampled at matte vertices that face it")
     return out
 
 

@@ -52,7 +52,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 __all__ = ["Surface", "CoverageTexture", "WRAP_MODES", "OPACITY_MODES", "fresnel_sp", "slab_rt", "internal_transmittance", "clear_slab_transmittance",
-           "solid_sides"]
+           "solid_sides", "mirror_planes", "mirror_limits", "glint_planes", "glint_pairs", "MAX_GLINTS"]
 
 #: UsdPreviewSurface ``opacityMode`` tokens
 OPACITY_MODES = ("transparent", "presence")
@@ -283,23 +283,13 @@ def solid_sides(points: np.ndarray, triangles: np.ndarray, prim: np.ndarray, pan
 MAX_MIRROR_PLANES = 16
 
 
-def mirror_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarray | None,
-                  surfaces: list) -> tuple[np.ndarray, np.ndarray, int]:
-    """The flat planes of the mirror faces (a delta specular lobe): ``(planes (K, 4) as (n, d) with
-    n·x = d, per triangle its plane or -1, planes left out beyond MAX_MIRROR_PLANES)``.
+def _flat_planes(points: np.ndarray, triangles: np.ndarray, faces: np.ndarray, keep: int):
+    """Group ``faces`` by their plane: ``(planes (K, 4) as (n, d) with n·x = d, group per face (−1 past
+    the kept ones), area per kept plane, groups found)``, the ``keep`` largest by area first.
 
-    Triangles are grouped by their unit normal (sign made canonical: the
-    first non-zero component positive) and offset, rounded to 1e-6 (of a
-    metre, or of the scene's extent when larger); the largest planes (by
-    area) are kept first.
+    Triangles are grouped by their unit normal (sign made canonical: the first non-zero component
+    positive) and offset, rounded to 1e-6 (of a metre, or of the scene's extent when larger).
     """
-    face_plane = np.full(len(triangles), -1, np.int32)
-    if surface_id is None:
-        return np.zeros((0, 4)), face_plane, 0
-    delta = np.array([getattr(s, "delta", False) for s in surfaces] + [False], bool)[surface_id]
-    faces = np.flatnonzero(delta)
-    if not len(faces):
-        return np.zeros((0, 4)), face_plane, 0
     p = points[triangles[faces]]
     cr = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
     area = 0.5 * np.linalg.norm(cr, axis=1)
@@ -312,15 +302,78 @@ def mirror_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndar
     uniq, inv = np.unique(key, axis=0, return_inverse=True)
     inv = inv.ravel()
     size = np.bincount(inv, weights=area)
-    order = np.argsort(-size, kind="stable")[:MAX_MIRROR_PLANES]
+    order = np.argsort(-size, kind="stable")[:keep]
     planes = np.zeros((len(order), 4))
+    group = np.full(len(faces), -1, np.int64)
     for k, u in enumerate(order):
         mine = inv == u
         nn = n[mine].mean(axis=0)
         nn /= np.linalg.norm(nn)
         planes[k] = [*nn, float(np.mean(p[mine][:, 0] @ nn))]
-        face_plane[faces[mine]] = k
-    return planes, face_plane, max(0, len(uniq) - len(order))
+        group[mine] = k
+    return planes, group, size[order], len(uniq)
+
+
+def mirror_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarray | None,
+                  surfaces: list) -> tuple[np.ndarray, np.ndarray, int]:
+    """The flat planes of the mirror faces (a delta specular lobe): ``(planes (K, 4) as (n, d) with
+    n·x = d, per triangle its plane or -1, planes left out beyond MAX_MIRROR_PLANES)``, grouped by
+    :func:`_flat_planes`, the largest (by area) kept first.
+    """
+    face_plane = np.full(len(triangles), -1, np.int32)
+    if surface_id is None:
+        return np.zeros((0, 4)), face_plane, 0
+    delta = np.array([getattr(s, "delta", False) for s in surfaces] + [False], bool)[surface_id]
+    faces = np.flatnonzero(delta)
+    if not len(faces):
+        return np.zeros((0, 4)), face_plane, 0
+    planes, group, _, found = _flat_planes(points, triangles, faces, MAX_MIRROR_PLANES)
+    face_plane[faces] = group
+    return planes, face_plane, max(0, found - len(planes))
+
+
+#: most glint pairs (a flat glossy plane × a distant light) the glint strategy draws among
+MAX_GLINTS = 4
+
+
+def glint_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarray | None,
+                 surfaces: list) -> tuple[np.ndarray, np.ndarray]:
+    """The flat planes of glossy, non-mirror faces, for the glint strategy (:mod:`simulator.kernels.
+    glints`): ``(planes (K, 4) as (n, d), GGX α per plane)``, the :data:`MAX_GLINTS` largest first.
+
+    A plane's α is roughness² of the material covering most of its area.
+    """
+    if surface_id is None:
+        return np.zeros((0, 4)), np.zeros(0)
+    rows = [k for k, s in enumerate(surfaces) if s.glossy and not s.delta and not s.pane]
+    if not rows:
+        return np.zeros((0, 4)), np.zeros(0)
+    faces = np.flatnonzero(np.isin(surface_id, rows))
+    if not len(faces):
+        return np.zeros((0, 4)), np.zeros(0)
+    planes, group, _, _ = _flat_planes(points, triangles, faces, MAX_GLINTS)
+    p = points[triangles[faces]]
+    area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+    alpha = np.zeros(len(planes))
+    for k in range(len(planes)):
+        mine = group == k
+        sid = surface_id[faces[mine]]
+        by_row = np.bincount(sid, weights=area[mine])
+        alpha[k] = float(surfaces[int(np.argmax(by_row))].roughness) ** 2
+    return planes, alpha
+
+
+def glint_pairs(geometry, lights: list) -> list[tuple[np.ndarray, float, int]]:
+    """The glint strategy's pairs (:mod:`simulator.kernels.glints`): ``(plane (n, d), α, light index)``
+    for the :func:`glint_planes` × the distant lights, at most :data:`MAX_GLINTS`, largest plane first."""
+    from simulator.scene.model import LightKind
+
+    g = geometry
+    if not g.has_surfaces:
+        return []
+    planes, alpha = glint_planes(g.points, g.triangles, g.surface_id, g.surfaces)
+    suns = [k for k, l in enumerate(lights) if l.kind == LightKind.DISTANT]
+    return [(planes[k], float(alpha[k]), li) for k in range(len(planes)) for li in suns][:MAX_GLINTS]
 
 
 def mirror_limits(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarray | None,

@@ -33,7 +33,7 @@ import warp as wp
 
 from simulator.scene.model import LightKind
 
-from ..surface_rec import SurfRec, TexRec
+from ..surface_rec import GlintRec, SurfRec, TexRec
 
 #: length of a ray that leaves the scene, metres
 RAY_INF = wp.constant(1.0e30)
@@ -122,6 +122,9 @@ class SceneRec:
     surf_id: wp.array(dtype=wp.int32)  # per triangle: its row of surf, −1 for a matte face
     surf_side: wp.array(dtype=wp.int32)  # per triangle: 0 open pane (thin slab); ±1 closed pane mesh, front out / in
     surf: wp.array(dtype=SurfRec)
+    # glint pairs (kernels.glints): flat glossy planes × distant lights, whose reflection matte vertices sample
+    n_glints: int
+    glints: wp.array(dtype=GlintRec)
     # opacity textures read per texel (kernels.coverage); unread unless a row of surf is textured
     tex_id: wp.array(dtype=wp.int32)  # per triangle: its texture, −1: its row's coverage
     tex_uv: wp.array(dtype=wp.vec2)  # 3 per triangle: st at its corners
