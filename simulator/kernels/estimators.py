@@ -63,7 +63,7 @@ from .lights import (  # noqa: F401  (GuideRec, LightRec, SceneRec re-exported f
     sample_light,
     tri_emitted,
 )
-from .rays import count_ray, count_shadow_ray, first_hit, near_light, offset_length, unoccluded  # noqa: F401  (unoccluded: probes)
+from .rays import RayHit, count_ray, count_shadow_ray, first_hit, near_light, offset_length, unoccluded  # noqa: F401  (unoccluded: probes)
 from .records import SensorRec, TraceParams
 from .sampling import (
     INV_PI,
@@ -216,6 +216,29 @@ def surface_albedo(scene: SceneRec, params: TraceParams, face: int, tint: wp.vec
 def to_local(v: wp.vec3, n: wp.vec3) -> wp.vec3:
     """v in the frame of :func:`to_world` about n (its inverse)."""
     return wp.vec3(wp.dot(v, frame_x(n)), wp.dot(v, frame_y(n)), wp.dot(v, n))
+
+
+@wp.func
+def lights_seen_along(scene: SceneRec, params: TraceParams, total_in: wp.vec2, o: wp.vec3, d: wp.vec3, t_stop: float,
+                      first: RayHit, rng0: wp.uint32, w: float, t_w: float, tint: wp.vec4, t_tint: float) -> wp.vec2:
+    """``total_in`` plus the radiance a meter's ray (o, d) receives from the UsdLux area lights it meets before ``t_stop``
+    (they do not block), each × ``w`` and the lanes ``tint`` its segment carried in, and × the weights
+    and lanes of the faces between o and the light when it lies past the first weighted face (``t_w``)
+    or coloured pane (``t_tint``) of the walk from ``first`` (:func:`.spectral_surfaces.walk_before`
+    replays it with the same uniforms), added light by light."""
+    total = total_in
+    for li in range(scene.n_lights):
+        l = scene.lights[li]
+        t_l = hit_light_before(l, o, d, t_stop)
+        if t_l > 0.0:
+            tint_l = tint
+            w_l = w
+            if t_l >= wp.min(t_tint, t_w):
+                wb = walk_before(scene, params, o, d, first, rng0, t_l)
+                tint_l = wp.cw_mul(tint, wb.tint)
+                w_l = w * wb.weight
+            total += light_contribution(scene, params, li, (w_l * shaping_factor(l, -d)) * l.emission, tint_l)
+    return total
 
 
 @wp.func
@@ -941,17 +964,8 @@ def make_trace(surfaces: bool) -> Trace:
                 t_seg = lp.t_weight
                 if ev != MIRROR and ev != ABSORB:
                     break
-                for li in range(scene.n_lights):
-                    l = scene.lights[li]
-                    t_l = hit_light_before(l, o, d, hit.t)
-                    if t_l > 0.0 and direct:
-                        tint_l = tint_before
-                        w_l = wr
-                        if t_l >= wp.min(t_tint, t_seg):  # the panes in front of the light only (walk_before)
-                            wb = walk_before(scene, params, o, d, hit0, rng0, t_l)
-                            tint_l = wp.cw_mul(tint_before, wb.tint)
-                            w_l = wr * wb.weight
-                        total += light_contribution(scene, params, li, (w_l * shaping_factor(l, -d)) * l.emission, tint_l)
+                if direct:
+                    total = lights_seen_along(scene, params, total, o, d, hit.t, hit0, rng0, wr, t_seg, tint_before, t_tint)
                 if ev == ABSORB or k == MAX_MIRRORS - 1:
                     return total
                 wr = wr * w_seg  # the reflection's weight R + T, and the passes' before it
@@ -968,17 +982,8 @@ def make_trace(surfaces: bool) -> Trace:
         t_hit = hit.t
         face = hit.face
         ng = hit.ng
-        for li in range(scene.n_lights):
-            l = scene.lights[li]
-            t_l = hit_light_before(l, o, d, t_hit)
-            if t_l > 0.0 and direct:
-                tint_l = tint_before
-                w_l = wr
-                if t_l >= wp.min(t_tint, t_seg):  # the panes in front of the light only (walk_before)
-                    wb = walk_before(scene, params, o, d, hit0, rng0, t_l)
-                    tint_l = wp.cw_mul(tint_before, wb.tint)
-                    w_l = wr * wb.weight
-                total += light_contribution(scene, params, li, (w_l * shaping_factor(l, -d)) * l.emission, tint_l)
+        if direct:
+            total = lights_seen_along(scene, params, total, o, d, t_hit, hit0, rng0, wr, t_seg, tint_before, t_tint)
         wr = wr * w_seg  # what the last segment stops at
         if face < 0:
             if direct:
