@@ -499,8 +499,8 @@ class Engine:
         n = np.maximum(cnt, 1).astype(np.float64)
         delta = (moments[..., 1].sum(axis=1) - moments[..., 0].sum(axis=1)) / n  # < 0: one piece would do better
         var = m2 / np.maximum(n - 1, 1)[:, None]
-        m = mean[:, 0] + mean[:, 1] / 683.0
-        v = (np.sqrt(var[:, 0]) + np.sqrt(var[:, 1]) / 683.0) ** 2  # the channels' errors move together
+        m = mean[:, 0] + mean[:, 1] / emitters.PICK_LM_PER_W
+        v = (np.sqrt(var[:, 0]) + np.sqrt(var[:, 1]) / emitters.PICK_LM_PER_W) ** 2  # the channels' errors move together
         ok = m > 0
         base = float(np.sum(v[ok] / m[ok] ** 2))
         with_one = float(np.sum((v[ok] + delta[ok]) / m[ok] ** 2))

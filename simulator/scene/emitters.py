@@ -94,10 +94,14 @@ class EmitterPieces:
         return int(len(self.first))
 
 
+#: lumens per watt in the light pick's one number per light, W + lm/PICK_LM_PER_W (a sampling weight, as
+#: in kernels/light_pick.py: any fixed scale between the channels serves, so it is not K_m's conversion)
+PICK_LM_PER_W = 683.0
+
+
 def _importance(emission: np.ndarray) -> np.ndarray:
-    """W + lm/683 per row of (W, lm), the light pick's one number per light (a sampling weight, as in
-    kernels/light_pick.py: any fixed scale between the channels serves, so it is not K_m's conversion)."""
-    return np.maximum(emission[:, 0], 0.0) + np.maximum(emission[:, 1], 0.0) / 683.0
+    """W + lm/:data:`PICK_LM_PER_W` per row of (W, lm), the light pick's one number per light."""
+    return np.maximum(emission[:, 0], 0.0) + np.maximum(emission[:, 1], 0.0) / PICK_LM_PER_W
 
 
 def split_emitters(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> tuple[Geometry, np.ndarray]:
