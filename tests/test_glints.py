@@ -28,7 +28,7 @@ from simulator.kernels.glints import glint_density, glint_direction
 from simulator.reference.microfacet import directional_albedo, preview_lobes
 from simulator.scene.model import Sensor, SensorKind
 from simulator.scene.usd import load_stage
-from tests.test_samplers import assert_fits, gauss_legendre, hist2d, launch
+from tests.test_samplers import assert_fits, hemisphere_bins, hist2d, launch
 from tests.test_surfaces import E_SUN, material, quad, stage, sun
 
 wp.set_module_options({"enable_backward": False})
@@ -69,18 +69,8 @@ def test_glint_directions_match_their_density(alpha, zenith):
     d, pdf = launch(k_glint, N, [17 + int(zenith), wp.vec3(*s), float(alpha)], [wp.vec3, float])
     ok = np.linalg.norm(d, axis=1) > 0
     assert np.all(d[ok, 2] < 0.0)
-    nmu, nphi, order = 16, 16, 24
-    mu_edges = np.linspace(0.0, 1.0, nmu + 1)
-    phi_edges = np.linspace(0.0, 2 * np.pi, nphi + 1)
-    mus, wmus = zip(*(gauss_legendre(order, a, b) for a, b in zip(mu_edges[:-1], mu_edges[1:])))
-    phis, wphis = zip(*(gauss_legendre(order, a, b) for a, b in zip(phi_edges[:-1], phi_edges[1:])))
-    mu_n, wmu_n = np.concatenate(mus), np.concatenate(wmus)
-    phi_n, wphi_n = np.concatenate(phis), np.concatenate(wphis)
-    M, P = np.meshgrid(mu_n, phi_n, indexing="ij")
-    r = np.sqrt(1 - M * M)
-    w = np.stack([r * np.cos(P), r * np.sin(P), -M], -1).reshape(-1, 3)
-    cell = _pdf(s, alpha, w).reshape(len(mu_n), len(phi_n)) * wmu_n[:, None] * wphi_n[None, :]
-    expected = cell.reshape(nmu, order, nphi, order).sum(axis=(1, 3))
+    nmu, nphi = 16, 16
+    expected = hemisphere_bins(lambda w: _pdf(s, alpha, w), nmu, nphi, 24, z_sign=-1.0)
     total = expected.sum()
     assert total <= 1.0 + 1e-3
     phi = (np.arctan2(d[ok, 1], d[ok, 0]) / (2 * np.pi)) % 1.0

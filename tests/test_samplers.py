@@ -190,6 +190,23 @@ def gauss_legendre(n: int, a: float, b: float):
     return 0.5 * (b - a) * x + 0.5 * (a + b), 0.5 * (b - a) * w
 
 
+def hemisphere_bins(pdf_of, nmu: int, nphi: int, order: int, z_sign: float = 1.0) -> np.ndarray:
+    """Each (μ, φ) bin's ∫ pdf dω over the hemisphere z_sign·z > 0 (μ = z_sign·z in [0, 1] in ``nmu``
+    bins, φ in [0, 2π) in ``nphi``), by Gauss–Legendre with ``order`` nodes per bin and axis;
+    ``pdf_of`` maps unit directions (M, 3) to their solid-angle densities (M,). Shape (nmu, nphi)."""
+    mu_edges = np.linspace(0.0, 1.0, nmu + 1)
+    phi_edges = np.linspace(0.0, 2 * np.pi, nphi + 1)
+    mus, wmus = zip(*(gauss_legendre(order, a, b) for a, b in zip(mu_edges[:-1], mu_edges[1:])))
+    phis, wphis = zip(*(gauss_legendre(order, a, b) for a, b in zip(phi_edges[:-1], phi_edges[1:])))
+    mu_n, wmu_n = np.concatenate(mus), np.concatenate(wmus)
+    phi_n, wphi_n = np.concatenate(phis), np.concatenate(wphis)
+    M, P = np.meshgrid(mu_n, phi_n, indexing="ij")
+    r = np.sqrt(1 - M * M)
+    dirs = np.stack([r * np.cos(P), r * np.sin(P), z_sign * M], -1).reshape(-1, 3)
+    cell = np.asarray(pdf_of(dirs)).reshape(len(mu_n), len(phi_n)) * wmu_n[:, None] * wphi_n[None, :]
+    return cell.reshape(nmu, order, nphi, order).sum(axis=(1, 3))
+
+
 def hist2d(u: np.ndarray, v: np.ndarray, nu: int, nv: int) -> np.ndarray:
     iu = np.clip((u * nu).astype(int), 0, nu - 1)
     iv = np.clip((v * nv).astype(int), 0, nv - 1)
