@@ -26,6 +26,14 @@ Glint pairs (``scene.glints``, host: :func:`simulator.scene.surfaces.
 glint_planes`) are the largest flat glossy planes (roughness above the
 mirror limit) with the distant lights; at most :data:`MAX_GLINTS`, each
 drawn with probability 1/n.
+
+References
+----------
+B. Walter, S. R. Marschner, H. Li, K. E. Torrance, "Microfacet models for
+refraction through rough surfaces", EGSR 2007 (sampling h ∝ D(h)·cosθ_h, and
+the reflected direction's density D(h)·cosθ_h / (4 |wo·h|)).
+E. Veach, "Robust Monte Carlo Methods for Light Transport Simulation", PhD
+thesis, Stanford, 1997, §9.2.4 (one-sample MIS over a mixture of strategies).
 """
 
 import warp as wp
