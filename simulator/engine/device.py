@@ -192,8 +192,7 @@ class DeviceScene:
         rec.albedo = arr(albedo, float)
         rec.emission = arr(emission, wp.vec2)
         rec.two_sided = arr(two_sided, wp.int32)
-        self._lights = scene.lights
-        self._upload_surfaces(wp, K, rec, g)
+        self._upload_surfaces(wp, K, rec, g, scene.lights)
 
         # Emissive triangles in pieces (simulator.scene.emitters): a piece is
         # picked by its estimate × learned factor, a triangle of it ∝ its
@@ -229,7 +228,7 @@ class DeviceScene:
                        rec.emit_prob, rec.lights]  # fmt: skip
         return rec
 
-    def _upload_surfaces(self, wp, K, rec, g) -> None:
+    def _upload_surfaces(self, wp, K, rec, g, lights: list) -> None:
         """The surfaces beyond Lambert (``Geometry.surfaces``, :mod:`simulator.kernels.surfaces`) on
         ``rec``; an all-matte stage gets ``surfaces = 0`` and one-element placeholders the kernels never
         read, so its trace is today's matte trace."""
@@ -269,23 +268,23 @@ class DeviceScene:
         rec.mirror_planes = wp.array(planes.astype(np.float32) if len(planes) else np.zeros((1, 4), np.float32),
                                      dtype=wp.vec4)
         rec.face_mirror = wp.array(face_plane.astype(np.int32), dtype=wp.int32)
-        self._upload_glints(wp, rec, g if modelled else None)
+        self._upload_glints(wp, rec, g if modelled else None, lights)
         self._keep += [rec.surf_id, rec.surf_side, rec.surf, rec.mirror_planes, rec.face_mirror]
         self._upload_textures(wp, rec, g if modelled else None)
 
-    def _upload_glints(self, wp, rec, g) -> None:
+    def _upload_glints(self, wp, rec, g, lights: list) -> None:
         """The glint pairs (:func:`simulator.scene.surfaces.glint_pairs`, :mod:`simulator.kernels.glints`)
         on ``rec``; lights keep the scene's order on the device."""
         from simulator.kernels.surface_rec import GlintRec
         from simulator.scene.surfaces import glint_pairs
 
         recs = []
-        for plane, alpha, li in (glint_pairs(g, self._lights) if g is not None else []):
+        for plane, alpha, li in (glint_pairs(g, lights) if g is not None else []):
             r = GlintRec()
             r.plane = wp.vec4(*[float(v) for v in plane])
             r.alpha = float(alpha)
             r.light = li
-            ez = np.asarray(self._lights[li].frame, float)[:, 2]  # the light record's +ez
+            ez = np.asarray(lights[li].frame, float)[:, 2]  # the light record's +ez
             r.s = wp.vec3(*[float(v) for v in ez / np.linalg.norm(ez)])
             recs.append(r)
         rec.n_glints = len(recs)
