@@ -7,7 +7,7 @@ name the file and the key, in the style of ``probesim run``, e.g.
 Cross-references (a zone naming a candidate set, a scenario naming a group)
 are checked here too; what needs the stage (prim paths, light patterns,
 variant names) is checked when the stage is read (see
-:mod:`simulator.study.scenarios` and :mod:`simulator.study.candidates`).
+:mod:`simulator.study.inputs.scenarios` and :mod:`simulator.study.inputs.candidates`).
 
 Schema
 ------
@@ -97,7 +97,7 @@ Schema
     dir = "../out/office_study"        # default: "<study stem>.out/" beside the file
     heat_map_scale = "per_scenario"    # or "log": one logarithmic scale for all panels
 
-    [annual]                           # a year of daylight (simulator.study.annual);
+    [annual]                           # a year of daylight (simulator.study.annual.year);
     weather = "../stages/weather/greensboro_tmy3_lux.csv"  # EPW or TMY3
     sky_group = "sky"                  # a group with sky = "tregenza"
     illuminance = "file"               # or "efficacy" (Perez 1990 on the irradiances)
@@ -106,7 +106,7 @@ Schema
     # da_lx, ase_lx, ase_hours, udi_lx, en17037_lx, step_h, replicates, sun_patches;
     # sun_indirect = "traced" with sun_group (the DistantLight's group) and sun_bin_deg
 
-    [[control]]                        # photosensor control (simulator.study.control)
+    [[control]]                        # photosensor control (simulator.study.annual.control)
     zone = "window_zone"
     groups = ["window_row"]            # light groups it dims
     model = "closed_loop"              # closed_loop | open_loop | switched
@@ -162,7 +162,7 @@ class ComputeSpec(_Model):
     workers: int = Field(0, ge=0)
     scheduler: str | None = None
     retries: int = Field(2, ge=0, le=20)
-    sensor_block: Union[Literal["auto"], Annotated[int, Field(ge=1)]] = "auto"  #: sensors per chunk (simulator.study.blocks)
+    sensor_block: Union[Literal["auto"], Annotated[int, Field(ge=1)]] = "auto"  #: sensors per chunk (simulator.study.trace.blocks)
 
     @field_validator("scheduler")
     @classmethod
@@ -295,7 +295,7 @@ class ZoneSpec(_Model):
 
 
 class AreaSpec(_Model):
-    """An EN 12464-1 area (:mod:`simulator.study.areas`)."""
+    """An EN 12464-1 area (:mod:`simulator.study.figures.areas`)."""
 
     name: str = Field(min_length=1)
     kind: Literal["task", "walls", "ceiling", "cylindrical"] = "task"
@@ -339,7 +339,7 @@ class OutputSpec(_Model):
 
 
 class AnnualSpec(_Model):
-    """A year of daylight from a climate file (:mod:`simulator.study.annual`)."""
+    """A year of daylight from a climate file (:mod:`simulator.study.annual.year`)."""
 
     weather: str = Field(min_length=1)             # EPW (.epw) or TMY3 (.csv), relative to the study file
     sky_group: str = Field(min_length=1)           # a [[group]] with sky = "tregenza"
@@ -368,7 +368,7 @@ class AnnualSpec(_Model):
 
 
 class ControlSpec(_Model):
-    """Photosensor control of a zone's light groups over the annual hours (:mod:`simulator.study.control`)."""
+    """Photosensor control of a zone's light groups over the annual hours (:mod:`simulator.study.annual.control`)."""
 
     zone: str
     groups: list[str] = Field(min_length=1)        # light groups the control dims
