@@ -151,7 +151,9 @@ def _toml(value: Any) -> str:
 
 
 def _cell(text: str) -> str:
-    return text.replace("|", "\\|").replace("\n", " ") if "\\|" not in text else text
+    """A table cell: ``|`` escaped (where not already), ``<``/``>`` as entities (GitHub reads ``<x>`` as a tag)."""
+    text = text.replace("\n", " ").replace("<", "&lt;").replace(">", "&gt;")
+    return text if "\\|" in text else text.replace("|", "\\|")
 
 
 def key_rows(model: type[BaseModel], prefix: str = "", seen: dict | None = None) -> list[tuple[str, str, str, str, str]]:

@@ -95,7 +95,7 @@ class Simulation(Table):
     """``[simulation]``; see :class:`~simulator.config.records.SimulationConfig` for the meaning of each key."""
 
     samples: Count = Field(_D.samples, description="samples per sensor (fixed budget); adaptive: the first batch, a floor (left out: the engine sizes it from a pilot, at most 1024)")
-    seed: Annotated[Integer, Field(ge=0, lt=SEED_LIMIT, description="random seed, 0 <= seed < 2**31: the same seed, config and device give the same CSV")] = _D.seed
+    seed: Annotated[Integer, Field(ge=0, lt=SEED_LIMIT, description="random seed, 0 ≤ seed < 2³¹: the same seed, config and device give the same CSV")] = _D.seed
     method: Annotated[Text, choice(METHODS, "method"), Field(description="estimator: auto | analytic | exact | light | bsdf | mis | path | guided (auto plans each sensor)")] = _D.method
     device: Annotated[Text, choice(DEVICES, "device"), Field(description="cpu | cuda | auto")] = _D.device
     rel_error: Annotated[Number, interval(0.0, 1.0)] | None = Field(_D.rel_error, description="adaptive: stop each sensor when its confidence half-width is under this share of its reading, 0 < x < 1 (unset: fixed budget)")
