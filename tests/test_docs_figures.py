@@ -106,3 +106,24 @@ def test_every_figure_in_the_docs_names_the_command_that_measured_it():
         for heading, figure in unexplained_figures(page.read_text(encoding="utf-8")):
             bad.append(f"{page.relative_to(ROOT)}: {heading}: {figure}")
     assert not bad, "figures with no command beside them:\n" + "\n".join(bad)
+
+
+def test_every_historical_figure_names_a_tree_of_this_project():
+    """The commit a historical paragraph names is one of this repository's (checked where the
+    checkout has its git history; skipped in an installed copy or a tarball)."""
+    import shutil
+    import subprocess
+
+    import pytest
+
+    if shutil.which("git") is None or not (ROOT / ".git").exists():
+        pytest.skip("no git history here")
+    named = set()
+    for page in pages():
+        for m in re.finditer(r"historical[^\n]*?\b(?:tree|at tree)\s+([0-9a-f]{7,40})\b", page.read_text(encoding="utf-8"),
+                             re.IGNORECASE):  # fmt: skip
+            named.add(m.group(1))
+    assert named, "no historical paragraph found (the pattern is stale)"
+    for commit in sorted(named):
+        ok = subprocess.run(["git", "cat-file", "-e", f"{commit}^{{commit}}"], cwd=ROOT, capture_output=True).returncode == 0
+        assert ok, f"{commit}: not a commit of this repository"
