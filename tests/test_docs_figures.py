@@ -41,7 +41,8 @@ HISTORICAL = re.compile(r"historical.*?\b[0-9a-f]{7,40}\b", re.IGNORECASE | re.D
 
 
 def pages() -> list[Path]:
-    return [ROOT / "README.md"] + sorted(p for p in (ROOT / "docs").glob("*.md") if p.relative_to(ROOT).as_posix() not in EXEMPT_PAGES)
+    docs = (p for p in (ROOT / "docs").glob("*.md") if p.relative_to(ROOT).as_posix() not in EXEMPT_PAGES)
+    return [ROOT / "README.md"] + sorted(docs)
 
 
 def sections(text: str) -> list[tuple[str, list[str], list[str]]]:
@@ -120,10 +121,9 @@ def test_every_historical_figure_names_a_tree_of_this_project():
         pytest.skip("no git history here")
     named = set()
     for page in pages():
-        for m in re.finditer(r"historical[^\n]*?\b(?:tree|at tree)\s+([0-9a-f]{7,40})\b", page.read_text(encoding="utf-8"),
-                             re.IGNORECASE):  # fmt: skip
-            named.add(m.group(1))
+        text = page.read_text(encoding="utf-8")
+        named.update(m.group(1) for m in re.finditer(r"historical[^\n]*?\btree\s+([0-9a-f]{7,40})\b", text, re.IGNORECASE))
     assert named, "no historical paragraph found (the pattern is stale)"
     for commit in sorted(named):
-        ok = subprocess.run(["git", "cat-file", "-e", f"{commit}^{{commit}}"], cwd=ROOT, capture_output=True).returncode == 0
-        assert ok, f"{commit}: not a commit of this repository"
+        found = subprocess.run(["git", "cat-file", "-e", f"{commit}^{{commit}}"], cwd=ROOT, capture_output=True)
+        assert found.returncode == 0, f"{commit}: not a commit of this repository"

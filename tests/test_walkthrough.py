@@ -84,7 +84,8 @@ def direct_patch_illuminance_lx() -> tuple[float, float, float]:
     square = np.array([[cx - h2, cy - h2, cz], [cx + h2, cy - h2, cz], [cx + h2, cy + h2, cz], [cx - h2, cy + h2, cz]])
     lum = PANEL_LM / (math.pi * PANEL_SIDE_M**2)
     pts = np.column_stack([P, np.full(len(P), PATCH_C[2])])
-    e_panel = polygon_irradiance(lum, square, pts, np.array([0.0, 0.0, 1.0]), one_sided_normal=np.array([0.0, 0.0, -1.0]))
+    up, down = np.array([0.0, 0.0, 1.0]), np.array([0.0, 0.0, -1.0])
+    e_panel = polygon_irradiance(lum, square, pts, up, one_sided_normal=down)
     panel = float(np.asarray(e_panel) @ PW) / area
     return sun, sky, panel
 

@@ -156,7 +156,9 @@ def _cell(text: str) -> str:
     return text if "\\|" in text else text.replace("|", "\\|")
 
 
-def key_rows(model: type[BaseModel], prefix: str = "", seen: dict | None = None) -> list[tuple[str, str, str, str, str]]:
+def key_rows(
+    model: type[BaseModel], prefix: str = "", seen: dict | None = None
+) -> list[tuple[str, str, str, str, str]]:
     """``(key, type, default, unit, meaning)`` for every key of ``model`` and its sub-tables, depth first.
 
     A model met a second time (the sky's ``sun`` is a scenario's ``sun``) is
@@ -209,7 +211,9 @@ def _union_rows(models: list[type[BaseModel]], prefix: str, seen: dict) -> list[
                          and m.model_fields[key].description), "")  # fmt: skip
             rows.append((prefix + key, names, "required", "", desc or "the sensor kind"))
             continue
-        described = next((m.model_fields[key] for m in holders if m.model_fields[key].description), holders[0].model_fields[key])
+        described = next(
+            (m.model_fields[key] for m in holders if m.model_fields[key].description), holders[0].model_fields[key]
+        )
         first = holders[0].model_fields[key]
         typ = _vector_type(first, first.annotation) or _type(first.annotation, first)
         who = "" if len(holders) == len(models) else "*" + ", ".join(kinds[m] for m in holders) + ":* "

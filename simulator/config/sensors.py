@@ -64,9 +64,13 @@ class SensorFields(Table):
     #: the sensor kind built
     KIND: ClassVar[SensorKind]
 
-    name: Annotated[Text, nonblank("empty name")] | None = Field(None, description="the CSV row's name (default: sensor[<index>])")
+    name: Annotated[Text, nonblank("empty name")] | None = Field(
+        None, description="the CSV row's name (default: sensor[<index>])"
+    )
     kind: str = Field(description="irradiance | radiance | patch | probe | cylindrical | semicylindrical")
-    position: Annotated[Point, Field(description="where the sensor is (a patch's centre)", json_schema_extra={"unit": "m"})]
+    position: Annotated[
+        Point, Field(description="where the sensor is (a patch's centre)", json_schema_extra={"unit": "m"})
+    ]
 
     @classmethod
     def key_not_allowed(cls, key: str) -> PydanticCustomError:
