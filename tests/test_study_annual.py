@@ -321,7 +321,7 @@ def test_recombined_hours_agree_with_single_instant_runs(office):
     """24 hours over four days (low sun at 06:30 and 18:30 included) on five work-plane sensors and two
     downward ceiling photosensors: every sky-only hour within 4 standard errors, all hours in at least
     95% of readings (the interreflected sun is spread over the 4 patches around it, an approximation;
-    see README "A year of daylight")."""
+    see docs/studies.md, "A year of daylight")."""
     _, _, res = office
     el = res.weather.sun_elevation_deg[res.rows]
     hours = list(np.nonzero(res.skies.dhi_lx > 0)[0][::2][:24])
