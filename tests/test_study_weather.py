@@ -20,8 +20,9 @@ from simulator.study.perez import BRIGHTNESS_RANGE, _patch_grid, air_mass, hour_
 pvlib = pytest.importorskip("pvlib")
 ROOT = Path(__file__).resolve().parents[1]
 BUNDLED = ROOT / "stages" / "weather" / "greensboro_tmy3_lux.csv"
-#: an equinox, both solstices and a September day of the bundled year
-DAYS = ("03/21", "06/21", "12/21", "09/10")
+#: an equinox, both solstices, a September day of the bundled year, and the last day of its February (from 1996,
+#: a leap year: pvlib's read_tmy3 moves the row "02/28/1996 24:00" to 1 March)
+DAYS = ("03/21", "06/21", "12/21", "09/10", "02/28")
 PROJ = np.array([SP.patch_projected_solid_angle(p) for p in range(SP.N_PATCHES)])
 
 
@@ -81,7 +82,7 @@ def test_an_epw_and_its_tmy3_twin_read_the_same_year(twins):
     from simulator.study.sun import solar_position
 
     e, t = read_weather(twins[0]), read_weather(twins[1])
-    assert len(e) == len(t) == 96
+    assert len(e) == len(t) == 120
     assert list(e.end) == list(t.end) and list(e.centre) == list(t.centre)
     np.testing.assert_allclose(e.sun_elevation_deg, t.sun_elevation_deg, rtol=0, atol=1e-9)
     np.testing.assert_allclose(e.sun_azimuth_deg, t.sun_azimuth_deg, rtol=0, atol=1e-9)
@@ -89,7 +90,9 @@ def test_an_epw_and_its_tmy3_twin_read_the_same_year(twins):
         np.testing.assert_array_equal(getattr(e, k), getattr(t, k), err_msg=k)
     np.testing.assert_array_equal(hour_of_day(e), hour_of_day(t))
     np.testing.assert_array_equal(daylight_mask(e), daylight_mask(t))
-    r = 12  # 21 March, hour 13: 12:00–13:00
+    last = int(np.nonzero([str(x).startswith("1996-02-29 00:00") for x in e.end])[0][0])  # the hour 23:00–24:00 of 28 February
+    assert t.centre[last].day == 28 and t.centre[last].hour == 23
+    r = int(np.nonzero([str(x).startswith("1990-03-21 13:00") for x in e.end])[0][0])  # 21 March, 12:00–13:00
     assert e.end[r].hour == 13 and e.centre[r].hour == 12 and e.centre[r].minute == 30
     az, el = solar_position(e.latitude_deg, e.longitude_deg, f"{e.centre[r].date()}T12:30:00-05:00")
     assert math.isclose(e.sun_elevation_deg[r], el, abs_tol=0.01) and math.isclose(e.sun_azimuth_deg[r], az, abs_tol=0.01)

@@ -11,8 +11,10 @@ elevation: refraction included, as :mod:`simulator.study.sun`).
 pvlib does not index the two formats alike: ``read_tmy3`` gives each row its
 label (the hour's end; 24:00 as 00:00 of the next day), ``read_epw`` the
 label's hour less one (``hour − 1``: the hour's *start*). The end is therefore
-pvlib's index for TMY3 and that index plus one hour for EPW, so the same hour
-of data gets the same end, centre and sun from either file. Radiance reads an
+pvlib's index plus one hour for EPW, and for TMY3 the row's own date and time
+(pvlib's index but for one row: it moves any 29 February timestamp to 1 March,
+so a leap year's "02/28 24:00" would end a day late), so the same hour of data
+gets the same end, centre and sun from either file. Radiance reads an
 hourly EPW record the same way (``loadEPW``: time ``hour − 1 + 0.5``).
 
 Closure. Global horizontal G, diffuse horizontal D and direct normal N of one
@@ -233,6 +235,17 @@ def _float(df, col, missing: float = 9999.0) -> np.ndarray | None:
     return np.where((v >= missing) | (v < 0), np.nan, v)
 
 
+def _tmy3_end(df, pd):
+    """Each TMY3 row's end from its own ``Date`` and ``Time`` (24:00 is 00:00 of the next day), in pvlib's time zone.
+
+    pvlib's ``read_tmy3`` moves every timestamp that falls on 29 February to 1 March (TMY years have no
+    leap day), so the row "02/28/1996 24:00" (the hour 23:00–24:00 of 28 February) would end a day late."""
+    date = pd.to_datetime(df["Date (MM/DD/YYYY)"], format="%m/%d/%Y")
+    hm = df["Time (HH:MM)"].str.split(":")
+    t = pd.to_timedelta(hm.str[0].astype(int), unit="h") + pd.to_timedelta(hm.str[1].astype(int), unit="min")
+    return pd.DatetimeIndex(date + t).tz_localize(df.index.tz)
+
+
 def read_weather(path: str | os.PathLike, key: str = "weather") -> Weather:
     """Read an EPW (``.epw``) or TMY3 (``.csv``) file with pvlib and place the sun at each hour's centre.
 
@@ -290,8 +303,10 @@ def read_weather(path: str | os.PathLike, key: str = "weather") -> Weather:
     dew = np.full(len(df), 11.0) if dew is None else np.nan_to_num(dew, nan=11.0)
     if not df.index.is_unique:
         raise UserError(f"{label}: rows repeat an hour (a sub-hourly file?): only hourly EPW and TMY3 files are read")
-    # pvlib's index: TMY3 the label (the hour's end), EPW the label's hour − 1 (its start); see the module's notes
-    end = df.index + pd.Timedelta(hours=1) if ext == ".epw" else df.index
+    # pvlib's index: EPW the label's hour − 1 (its start); TMY3 the label (the hour's end), but for a
+    # "02/28 24:00" row of a leap year, which it moves on to 1 March 00:00: the end is taken from the file's
+    # own date and time there (see the module's notes)
+    end = df.index + pd.Timedelta(hours=1) if ext == ".epw" else _tmy3_end(df, pd)
     centre = end - pd.Timedelta(minutes=30)
     lat, lon = float(meta["latitude"]), float(meta["longitude"])
     sp = get_solarposition(centre, lat, lon, altitude=alt)
