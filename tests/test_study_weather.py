@@ -238,3 +238,37 @@ def test_a_year_whose_global_does_not_close_warns_with_the_count_and_the_worst_h
     assert f"in {len(bright)} of " in msg and "worst the hour ending" in msg and f"{CLOSURE_HOUR_TOL:.0%}" in msg
     # the illuminance fields were left alone: they close
     assert "illuminance" not in msg
+
+
+# --- the Radiance cross-check on an EPW (benchmarks/annual_radiance.py; Radiance itself not needed here) ---------------
+
+
+def _cross_check_script():
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("annual_radiance", ROOT / "benchmarks" / "annual_radiance.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_the_cross_check_runs_on_an_epw_and_writes_its_hours_at_their_centres(twins, tmp_path):
+    """``--weather`` puts an EPW in place of the study's TMY3; the ``.wea`` it writes for gendaymtx from the EPW is
+    the one it writes from the TMY3 twin (same site, hour centres and illuminances); ``--radiance-reads-epw`` hands
+    the EPW itself over and switches probesim to the efficacy model, and refuses a TMY3."""
+    from simulator.study.schema import load_study
+
+    ar = _cross_check_script()
+    study, p = load_study(ROOT / "configs" / "studies" / "office_annual.toml")
+    s_epw, native = ar.with_weather(study, p, str(twins[0]))
+    assert native is None and Path(s_epw.annual.weather) == twins[0].resolve() and s_epw.annual.illuminance == "file"
+    ar.write_wea(read_weather(twins[0]), tmp_path / "e.wea")
+    ar.write_wea(read_weather(twins[1]), tmp_path / "t.wea")
+    # (the first line names the site: the EPW's adds its country)
+    assert (tmp_path / "e.wea").read_text().splitlines()[1:] == (tmp_path / "t.wea").read_text().splitlines()[1:]
+    noon = next(line for line in (tmp_path / "e.wea").read_text().splitlines() if line.startswith("3 21 12.500 "))
+    assert noon  # 21 March 12:00–13:00 at 12:30
+    s_nat, native = ar.with_weather(study, p, str(twins[0]), radiance_reads_epw=True)
+    assert native == twins[0].resolve() and s_nat.annual.illuminance == "efficacy"
+    with pytest.raises(SystemExit, match="needs an EPW"):
+        ar.with_weather(study, p, str(twins[1]), radiance_reads_epw=True)
