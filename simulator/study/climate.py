@@ -311,9 +311,10 @@ def read_weather(path: str | os.PathLike, key: str = "weather") -> Weather:
     lat, lon = float(meta["latitude"]), float(meta["longitude"])
     sp = get_solarposition(centre, lat, lon, altitude=alt)
     az, el = np.asarray(sp["azimuth"], np.float64), np.asarray(sp["apparent_elevation"], np.float64)
-    warnings = [w for w in (check_closure(ghi, dhi, dni, el, end, label, "irradiance", CLOSURE_MIN_GHI_W_M2),
-                            None if gl is None or dl is None or nl is None else check_closure(gl, dl, nl, el, end, label, "illuminance", 100.0 * CLOSURE_MIN_GHI_W_M2))
-                if w is not None]  # fmt: skip
+    warnings = [check_closure(ghi, dhi, dni, el, end, label, "irradiance", CLOSURE_MIN_GHI_W_M2)]
+    if gl is not None and dl is not None and nl is not None:  # the illuminances, 100 lm/W to the irradiances' floor
+        warnings.append(check_closure(gl, dl, nl, el, end, label, "illuminance", 100.0 * CLOSURE_MIN_GHI_W_M2))
+    warnings = [w for w in warnings if w is not None]
     return Weather(str(p), site, lat, lon, alt, tz, end, centre, dni, dhi, ghi, nl, dl, gl, dew, az, el, notes, warnings)
 
 

@@ -69,8 +69,8 @@ import numpy as np
 
 from simulator.study import sky_patches as SP
 
-__all__ = ["PEREZ_1993", "EPSILON_BINS", "CLEARNESS_RANGE", "BRIGHTNESS_RANGE", "DIFFUSE_EFFICACY", "DIRECT_EFFICACY", "air_mass", "clearness_brightness",
-           "epsilon_bin", "perez_parameters", "relative_luminance", "efficacies", "HourSkies", "hour_skies"]  # fmt: skip
+__all__ = ["PEREZ_1993", "EPSILON_BINS", "CLEARNESS_RANGE", "BRIGHTNESS_RANGE", "DIFFUSE_EFFICACY", "DIRECT_EFFICACY", "air_mass",
+           "clearness_brightness", "epsilon_bin", "perez_parameters", "relative_luminance", "efficacies", "HourSkies", "hour_skies"]  # fmt: skip
 
 #: upper edges of the clearness bins (Perez 1990 Table 1); the last is open
 EPSILON_BINS = (1.065, 1.230, 1.500, 1.950, 2.800, 4.500, 6.200)
