@@ -278,7 +278,9 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
         raise UserError(f"{label}: annual.sky_group: the DomeLight {dome.name} has no luminance to scale")
     names_index = {c.sensor.name: k for k, c in enumerate(cands)}
     pools = _control_pools(study, cands, names_index, label)
-    notes = list(weather.notes)
+    notes = list(weather.notes) + [f"warning: {w}" for w in weather.warnings]
+    for w in weather.warnings:  # the weather's doubts, on the console as they are found and in the record
+        log(f"warning: {w}")
     if any(l.kind == LightKind.DISTANT for l in base.lights):
         notes.append("the stage's DistantLight is not used: each hour's sun comes from the weather file")
 
