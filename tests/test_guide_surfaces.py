@@ -82,7 +82,7 @@ def Material "Glass"
     def Shader "S"
     {
         uniform token info:id = "UsdPreviewSurface"
-        float inputs:opacity = 0.1
+        float inputs:opacity = 0
         float inputs:ior = 1.52
         token outputs:surface
     }

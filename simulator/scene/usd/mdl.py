@@ -25,8 +25,10 @@ OmniPBR (``OmniPBR``, ``OmniPBR_Opacity``, ``OmniPBR_ClearCoat*``)
     MDL's ``material_emission`` defaults to radiant exitance, read as a
     luminous exitance in lm/m², so luminance is exitance / π (a Lambertian
     emitter), in cd/m² converted to the stage's light units; with
-    ``enable_opacity``, ``opacity = opacity_constant`` (or
-    ``mean(opacity_texture)``), ``opacityMode = "presence"`` (MDL's
+    ``enable_opacity``, ``opacity = opacity_constant`` (or the mean of
+    ``opacity_texture``'s channel ``opacity_mode`` selects: 0 alpha, 1 the
+    mean of RGB, 2 their luminance, 3 their maximum, MDL's
+    ``base::mono_mode``), ``opacityMode = "presence"`` (MDL's
     ``cutout_opacity``), ``opacityThreshold = opacity_threshold``.
 OmniGlass (``OmniGlass``, ``OmniGlass_Opacity``)
     A dielectric: ``opacity = 0``, ``diffuseColor = 0``, ``ior = glass_ior``,
@@ -68,7 +70,8 @@ from simulator.scene.usd.materialx import _coat, _specular, _usd_node
 from simulator.scene.usd.mdl_wrapper import wrapper_arguments
 from simulator.scene.usd.shading_graph import Port
 from simulator.scene.usd.surface_mapping import (SurfaceInputs, colour, complete, ior_of_f0,
-                                                 nits_in_light_units, slab_transmittance, transmission)
+                                                 nits_in_light_units, slab_transmittance, thin_walled,
+                                                 transmission)
 from simulator.scene.usd.textures import _mean_rgba
 
 _WHITE = (1.0, 1.0, 1.0)
@@ -136,6 +139,50 @@ def _texture(ctx: _Context, ins: SurfaceInputs, name: str) -> np.ndarray | None:
     return rgba
 
 
+#: MDL ``base::mono_mode`` (base.mdl): how ``base::file_texture(...).mono`` makes one number of a texel
+MONO_MODES = {0: "mono_alpha", 1: "mono_average", 2: "mono_luminance", 3: "mono_maximum"}
+
+
+def _mono(ctx: _Context, ins: SurfaceInputs, mode_name: str, texture: str, rgba: np.ndarray) -> tuple[float, str]:
+    """The mean of a texture's ``.mono`` as the material's ``base::mono_mode`` input ``mode_name`` selects
+    it, and where it came from: ``mono_alpha`` (0) the alpha channel, ``mono_average`` (1) the mean of
+    R, G, B, ``mono_luminance`` (2) their BT.709 luminance, ``mono_maximum`` (3) the largest of the
+    three per texel. ``rgba`` is the texture's mean RGBA (4,); the first three are linear in the texels,
+    so their means are exact; the maximum is taken texel by texel. The mode is an int or the enum's name
+    (``base::mono_alpha``).
+
+    Raises
+    ------
+    UserError
+        ``<stage>: <prim>: inputs:<mode_name> <value> ...``: not one of the four modes.
+    """
+    from simulator.scene.usd.textures import _read_rgba
+
+    ins.inert(mode_name)
+    port = ins.node.inputs.get(mode_name)
+    raw = port.value if port is not None and port.node is None and port.value is not None else ins.defaults[mode_name]
+    if isinstance(raw, str):
+        name = raw.strip().rpartition("::")[2]
+        mode = next((k for k, v in MONO_MODES.items() if v == name), None)
+        if mode is None and name.lstrip("-").isdigit():
+            mode = int(name)
+    else:
+        mode = int(np.asarray(raw).ravel()[0])
+    if mode not in MONO_MODES:
+        raise ctx.error(ins.node.where, f"inputs:{mode_name} {raw!r} must be one of "
+                                        f"{', '.join(f'{k} ({v})' for k, v in MONO_MODES.items())}")
+    where = f"{MONO_MODES[mode]} of the mean of {ins.where(texture)}"
+    if mode == 0:
+        return float(rgba[3]), where
+    if mode == 1:
+        return float(np.mean(rgba[:3])), where
+    if mode == 2:
+        return float(luminance_grey(rgba[:3])), where
+    port = ins.asset(texture)
+    texels = _read_rgba(port.value, port.colorspace or "auto")
+    return float(np.mean(np.max(texels[..., :3], axis=-1))), where
+
+
 def _lerp_map(ctx, ins, constant: str, influence: str, texture: str, channel=None) -> float:
     """``lerp(constant, mean(texture), influence)``: a map's mean blended over a constant."""
     c = ins.scalar(constant)
@@ -182,11 +229,14 @@ def _map_omnipbr(ctx: _Context, ins: SurfaceInputs) -> dict:
         ins.inert("emissive_color", "emissive_intensity", "emissive_color_texture", "emissive_mask_texture")
     if ins.flag("enable_opacity") or ins.flag("enable_opacity_texture"):
         m = _texture(ctx, ins, "opacity_texture") if ins.flag("enable_opacity_texture") else None
-        op = ins.scalar("opacity_constant") if m is None else float(np.mean(m[:3]))
-        out["opacity"] = (op, w("opacity_constant"))
+        if m is None:
+            op, src = ins.scalar("opacity_constant"), w("opacity_constant")
+            ins.inert("opacity_mode")  # the channel of a map there is none of
+        else:
+            op, src = _mono(ctx, ins, "opacity_mode", "opacity_texture", m)
+        out["opacity"] = (op, src)
         out["opacityMode"] = ("presence", "OmniPBR cutout_opacity")
         out["opacityThreshold"] = (ins.scalar("opacity_threshold"), w("opacity_threshold"))
-        ins.inert("opacity_mode")  # which channel of the opacity map: its mean over RGB is read
     else:
         ins.inert("opacity_constant", "opacity_texture", "opacity_mode", "opacity_threshold")
     return out
@@ -211,7 +261,7 @@ def _map_omniglass(ctx: _Context, ins: SurfaceInputs) -> dict:
         out["probesim:transmittance"] = (slab_transmittance(max(tau, 0.0), ior),
                                          f"a thin slab of internal transmittance {tau:g} ({w('glass_color')})")
     ins.not_mapped("depth", "the distance the glass colour is reached at; the colour is read as one pass")
-    ins.flag("thin_walled")  # one sheet or a solid is read from the mesh
+    thin_walled(out, ins, "thin_walled")  # each face a sheet; else a closed mesh is a solid
     if ins.flag("enable_opacity"):
         op = _texture(ctx, ins, "cutout_opacity_texture")
         out["opacity"] = (ins.scalar("cutout_opacity") if op is None else float(np.mean(op[:3])),
@@ -266,7 +316,7 @@ def _map_omnisurface(ctx: _Context, ins: SurfaceInputs) -> dict:
             out["opacityThreshold"] = (ins.scalar("geometry_opacity_threshold"), w("geometry_opacity_threshold"))
     else:
         ins.inert("geometry_opacity", "geometry_opacity_threshold")
-    ins.flag("thin_walled")
+    thin_walled(out, ins, "thin_walled")
     return out
 
 
