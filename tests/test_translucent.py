@@ -106,6 +106,14 @@ def Mesh "{name}"
 """
 
 
+def st_quad(name: str, z: float, bind: str, half: float = 5.0) -> str:
+    """:func:`quad` with ``primvars:st`` from (0, 0) at its (−half, −half) corner to (1, 1)."""
+    return quad(name, z, bind, half).replace(
+        "    rel material:binding",
+        '    texCoord2f[] primvars:st = [(0, 0), (1, 0), (1, 1), (0, 1)] (\n        interpolation = "vertex"\n    )\n'
+        "    rel material:binding")
+
+
 def box(name: str, z0: float, z1: float, bind: str, half: float = 5.0) -> str:
     """A closed box (outward normals) from z0 to z1, ±half in x and y."""
     h = half
@@ -316,21 +324,39 @@ def test_omnipbr_opacity_reads_the_channel_opacity_mode_selects(tmp_path, mode, 
     text = omnipbr(tmp_path / "leaf.png", authored)
     if authored is not None:
         text = text.replace("inputs:opacity_mode\n", f"inputs:opacity_mode {value}\n")
-    g = load_stage(stage(tmp_path, text + quad("Sheet", 1.0, "Leaf"))).geometry
+    g = load_stage(stage(tmp_path, text + st_quad("Sheet", 1.0, "Leaf"))).geometry
     want = alpha if expect == "alpha" else expect
-    if want >= 1.0:
-        assert not g.has_surfaces
-    else:
-        assert g.surfaces[0].coverage == pytest.approx(want, abs=1e-6) and not g.surfaces[0].pane
+    row = g.surfaces[0]
+    assert row.coverage == pytest.approx(want, abs=1e-6) and not row.pane and row.opacity_mode == "presence"
+    assert row.opacity_texture >= 0 and g.coverage_textures[row.opacity_texture].mean == pytest.approx(want, abs=1e-6)
 
 
-def test_omnipbr_alpha_leaf_casts_its_shadow(tmp_path):
-    """The leaf sheet (opacity_mode 0) under a zero-angle sun passes E(1 − 5/16), not E(1 − 1/3) (the
-    RGB mean) nor E (a leaf left out)."""
+def test_omnipbr_alpha_leaf_casts_its_shadow_without_texture_coordinates(tmp_path):
+    """The leaf sheet (opacity_mode 0) with no primvars:st under a zero-angle sun: its mean coverage,
+    E(1 − 5/16), not E(1 − 1/3) (the RGB mean)."""
     alpha = leaf_png(tmp_path / "leaf.png")
     text = omnipbr(tmp_path / "leaf.png", "int").replace("inputs:opacity_mode\n", "inputs:opacity_mode = 0\n")
     v, _ = run(stage(tmp_path, text + quad("Sheet", 1.0, "Leaf") + sun()), sensor(0.0), "light", 16)
     assert abs(v[0] - E_SUN * (1 - alpha)) <= 2e-6 * E_SUN, v
+
+
+@pytest.mark.parametrize("threshold", [0.0, 0.5])
+def test_omnipbr_alpha_leaf_is_cut_out_per_texel(tmp_path, threshold):
+    """The leaf on a 2 m sheet with st (a texel is 0.5 m): a sensor under the centre of a leaf texel
+    (alpha 1) is in shade, one under a clear texel (alpha 0) reads the whole sun, with and without an
+    opacity_threshold (texel centres: the bilinear value is the texel's own)."""
+    leaf_png(tmp_path / "leaf.png")
+    text = omnipbr(tmp_path / "leaf.png", "int").replace("inputs:opacity_mode\n", "inputs:opacity_mode = 0\n")
+    text = text.replace("        token outputs:out", f"        float inputs:opacity_threshold = {threshold}\n"
+                                                   "        token outputs:out")
+    # texel (col i, row j from the top) centre: s = (i + ½)/4, t = 1 − (j + ½)/4 on x, y ∈ [-1, 1]
+    leaf = (1, 0)  # column 1, row 0: alpha 255
+    clear = (0, 0)  # column 0, row 0: alpha 0
+    sensors = [Sensor(name=f"s{k}", kind=SensorKind.IRRADIANCE,
+                      position=np.array([-1 + 2 * (i + 0.5) / 4, 1 - 2 * (j + 0.5) / 4, 0.0]),
+                      normal=np.array([0.0, 0.0, 1.0])) for k, (i, j) in enumerate((leaf, clear))]
+    v, _ = run(stage(tmp_path, text + st_quad("Sheet", 1.0, "Leaf", half=1.0) + sun()), sensors, "light", 16)
+    assert abs(v[0]) <= 2e-6 * E_SUN and abs(v[1] - E_SUN) <= 2e-6 * E_SUN, v
 
 
 def test_omnipbr_bad_opacity_mode_is_one_line(tmp_path):

@@ -25,9 +25,9 @@ OmniPBR (``OmniPBR``, ``OmniPBR_Opacity``, ``OmniPBR_ClearCoat*``)
     MDL's ``material_emission`` defaults to radiant exitance, read as a
     luminous exitance in lm/m², so luminance is exitance / π (a Lambertian
     emitter), in cd/m² converted to the stage's light units; with
-    ``enable_opacity``, ``opacity = opacity_constant`` (or the mean of
-    ``opacity_texture``'s channel ``opacity_mode`` selects: 0 alpha, 1 the
-    mean of RGB, 2 their luminance, 3 their maximum, MDL's
+    ``enable_opacity``, ``opacity = opacity_constant`` (or
+    ``opacity_texture`` per texel, the value ``opacity_mode`` selects: 0
+    alpha, 1 the mean of RGB, 2 their luminance, 3 their maximum, MDL's
     ``base::mono_mode``), ``opacityMode = "presence"`` (MDL's
     ``cutout_opacity``), ``opacityThreshold = opacity_threshold``.
 OmniGlass (``OmniGlass``, ``OmniGlass_Opacity``)
@@ -72,7 +72,7 @@ from simulator.scene.usd.shading_graph import Port
 from simulator.scene.usd.surface_mapping import (SurfaceInputs, colour, complete, ior_of_f0,
                                                  nits_in_light_units, slab_transmittance, thin_walled,
                                                  transmission)
-from simulator.scene.usd.textures import _mean_rgba
+from simulator.scene.usd.textures import MONO_MODES, _mean_rgba
 
 _WHITE = (1.0, 1.0, 1.0)
 
@@ -139,48 +139,54 @@ def _texture(ctx: _Context, ins: SurfaceInputs, name: str) -> np.ndarray | None:
     return rgba
 
 
-#: MDL ``base::mono_mode`` (base.mdl): how ``base::file_texture(...).mono`` makes one number of a texel
-MONO_MODES = {0: "mono_alpha", 1: "mono_average", 2: "mono_luminance", 3: "mono_maximum"}
-
-
-def _mono(ctx: _Context, ins: SurfaceInputs, mode_name: str, texture: str, rgba: np.ndarray) -> tuple[float, str]:
-    """The mean of a texture's ``.mono`` as the material's ``base::mono_mode`` input ``mode_name`` selects
-    it, and where it came from: ``mono_alpha`` (0) the alpha channel, ``mono_average`` (1) the mean of
-    R, G, B, ``mono_luminance`` (2) their BT.709 luminance, ``mono_maximum`` (3) the largest of the
-    three per texel. ``rgba`` is the texture's mean RGBA (4,); the first three are linear in the texels,
-    so their means are exact; the maximum is taken texel by texel. The mode is an int or the enum's name
-    (``base::mono_alpha``).
+def _mono_mode(ctx: _Context, ins: SurfaceInputs, mode_name: str) -> int:
+    """The ``base::mono_mode`` input ``mode_name`` as 0–3 (:data:`.textures.MONO_MODES`): an int or the
+    enum's name (``base::mono_alpha``, as wrapper modules and some exporters write it).
 
     Raises
     ------
     UserError
-        ``<stage>: <prim>: inputs:<mode_name> <value> ...``: not one of the four modes.
+        ``<stage>: <prim>: inputs:<mode_name> <value> must be one of ...``: not one of the four modes.
     """
-    from simulator.scene.usd.textures import _read_rgba
-
     ins.inert(mode_name)
     port = ins.node.inputs.get(mode_name)
     raw = port.value if port is not None and port.node is None and port.value is not None else ins.defaults[mode_name]
     if isinstance(raw, str):
         name = raw.strip().rpartition("::")[2]
-        mode = next((k for k, v in MONO_MODES.items() if v == name), None)
-        if mode is None and name.lstrip("-").isdigit():
-            mode = int(name)
+        mode = MONO_MODES.index(name) if name in MONO_MODES else (int(name) if name.isdigit() else -1)
     else:
         mode = int(np.asarray(raw).ravel()[0])
-    if mode not in MONO_MODES:
+    if not 0 <= mode < len(MONO_MODES):
         raise ctx.error(ins.node.where, f"inputs:{mode_name} {raw!r} must be one of "
-                                        f"{', '.join(f'{k} ({v})' for k, v in MONO_MODES.items())}")
-    where = f"{MONO_MODES[mode]} of the mean of {ins.where(texture)}"
-    if mode == 0:
-        return float(rgba[3]), where
-    if mode == 1:
-        return float(np.mean(rgba[:3])), where
-    if mode == 2:
-        return float(luminance_grey(rgba[:3])), where
+                                        f"{', '.join(f'{k} ({v})' for k, v in enumerate(MONO_MODES))}")
+    return mode
+
+
+def _opacity_map(ctx: _Context, ins: SurfaceInputs, mode_name: str, texture: str) -> tuple[float, str, tuple]:
+    """An MDL opacity map read as the material selects it: ``(mean opacity, where, (coverage texture index,
+    why not))``. The mono value per texel is the one ``base::mono_mode`` ``mode_name`` selects
+    (:func:`.textures.mono_texels`: alpha, the mean of RGB, their luminance or their maximum); it is kept
+    per texel (:mod:`simulator.kernels.coverage`, read at the hit through ``primvars:st``) unless an
+    input that places the texture (tiling, rotation, projection, another uv set) is authored, then its
+    mean is the coverage and that is named. None when the map is not authored or cannot be read."""
+    from simulator.scene.usd.textures import _file_coverage, _read_rgba, mono_texels
+
     port = ins.asset(texture)
-    texels = _read_rgba(port.value, port.colorspace or "auto")
-    return float(np.mean(np.max(texels[..., :3], axis=-1))), where
+    if port is None or _texture(ctx, ins, texture) is None:
+        return None
+    mode = _mono_mode(ctx, ins, mode_name)
+    where = f"{MONO_MODES[mode]} of {ins.where(texture)}"
+    placed = sorted(k for k in ins.node.inputs if k.startswith(_PLACEMENT) and ins.authored(k))
+    space = port.colorspace or "auto"
+    if placed:
+        rgba = _read_rgba(port.value, space)
+        return float(np.mean(mono_texels(rgba, mode))), where, (-1, f"placed by {', '.join(placed)}")
+    idx = _file_coverage(ctx, port.value, space, mode, f"{ins.node.where}.inputs:{texture} "
+                                                       f"({os.path.basename(port.value)}, {MONO_MODES[mode]})")
+    ctx.textured[texture] -= 1  # read per texel, not as the mean the summary's textured inputs count
+    if ctx.textured[texture] <= 0:
+        del ctx.textured[texture]
+    return float(ctx.coverage_textures[idx].mean), where, (idx, "")
 
 
 def _lerp_map(ctx, ins, constant: str, influence: str, texture: str, channel=None) -> float:
@@ -228,12 +234,12 @@ def _map_omnipbr(ctx: _Context, ins: SurfaceInputs) -> dict:
     else:
         ins.inert("emissive_color", "emissive_intensity", "emissive_color_texture", "emissive_mask_texture")
     if ins.flag("enable_opacity") or ins.flag("enable_opacity_texture"):
-        m = _texture(ctx, ins, "opacity_texture") if ins.flag("enable_opacity_texture") else None
+        m = _opacity_map(ctx, ins, "opacity_mode", "opacity_texture") if ins.flag("enable_opacity_texture") else None
         if m is None:
             op, src = ins.scalar("opacity_constant"), w("opacity_constant")
             ins.inert("opacity_mode")  # the channel of a map there is none of
         else:
-            op, src = _mono(ctx, ins, "opacity_mode", "opacity_texture", m)
+            op, src, out["_opacity_texture"] = m
         out["opacity"] = (op, src)
         out["opacityMode"] = ("presence", "OmniPBR cutout_opacity")
         out["opacityThreshold"] = (ins.scalar("opacity_threshold"), w("opacity_threshold"))
