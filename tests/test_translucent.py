@@ -274,6 +274,54 @@ def test_translucent_layer_reflects_its_share_as_glass(tmp_path):
     assert se[0] > 0 and abs(v[0] - truth) <= 4 * se[0], (v, se, truth)
 
 
+def test_translucent_layer_is_read_per_texel(tmp_path):
+    """transparent mode, ior 1.5, opacity from a 4 x 4 black/white checker texture (mean 0.5) on a 2 m
+    sheet with st: under the centre of a white (opaque) texel the sheet's black matte part takes the
+    sun, 0; under a black texel (opacity 0) the clear slab passes E·2n/(n² + 1)."""
+    from PIL import Image
+
+    board = np.where((np.arange(4)[:, None] + np.arange(4)[None, :]) % 2 == 0, 255, 0).astype(np.uint8)
+    Image.fromarray(board, "L").save(tmp_path / "board.png")
+    mat = f"""
+def Material "M"
+{{
+    token outputs:surface.connect = </M/S.outputs:surface>
+    def Shader "S"
+    {{
+        uniform token info:id = "UsdPreviewSurface"
+        color3f inputs:diffuseColor = (0, 0, 0)
+        float inputs:ior = 1.5
+        float inputs:opacity.connect = </M/T.outputs:r>
+        token outputs:surface
+    }}
+    def Shader "T"
+    {{
+        uniform token info:id = "UsdUVTexture"
+        asset inputs:file = @{tmp_path / "board.png"}@
+        float2 inputs:st.connect = </M/R.outputs:result>
+        token inputs:wrapS = "repeat"
+        token inputs:wrapT = "repeat"
+        float outputs:r
+    }}
+    def Shader "R"
+    {{
+        uniform token info:id = "UsdPrimvarReader_float2"
+        string inputs:varname = "st"
+        float2 outputs:result
+    }}
+}}
+"""
+    # texel (col i, row j from the top): white where i + j is even; its centre on x, y ∈ [-1, 1]
+    centre = lambda i, j: np.array([-1 + 2 * (i + 0.5) / 4, 1 - 2 * (j + 0.5) / 4, 0.0])
+    sensors = [Sensor(name=f"s{k}", kind=SensorKind.IRRADIANCE, position=centre(*ij), normal=np.array([0.0, 0.0, 1.0]))
+               for k, ij in enumerate(((0, 0), (1, 0)))]
+    path = stage(tmp_path, mat + st_quad("Sheet", 1.0, "M", half=1.0) + sun())
+    row = load_stage(path).geometry.surfaces[0]
+    assert row.layered and row.opacity_texture >= 0 and row.coverage == pytest.approx(0.5)
+    v, _ = run(path, sensors, "light", 16)
+    assert abs(v[0]) <= 2e-6 * E_SUN and abs(v[1] - E_SUN * clear_slab(1.0, 1.5)[1]) <= 2e-6 * E_SUN, v
+
+
 # --------------------------------------------------------------------------- #
 # the opacity channel a material selects (OmniPBR opacity_mode)
 # --------------------------------------------------------------------------- #
