@@ -270,7 +270,7 @@ def test_presence_sheet_passes_its_share_of_sky_to_direction_samples(tmp_path):
 @pytest.mark.parametrize("zenith", [0.0, 30.0, 60.0])
 @pytest.mark.parametrize("method", ["light", "path"])
 def test_clear_pane_passes_e_cos_t(tmp_path, zenith, method):
-    """A clear pane (opacity < 1, ior 1.52) under a delta sun: E cosθ T(θ) of the thin slab."""
+    """A clear pane (opacity 0, ior 1.52) under a delta sun: E cosθ T(θ) of the thin slab."""
     body = material("G", "float inputs:opacity = 0\n        float inputs:ior = 1.52") + quad("Pane", 1.0, "G")
     v, _ = run(stage(tmp_path, body + sun(zenith)), up(), method, 64)
     c = math.cos(math.radians(zenith))
