@@ -107,10 +107,10 @@ def main(argv=None) -> int:
     env = _radiance()
 
     from simulator.scene.usd import load_stage
-    from simulator.study.annual import run_annual
-    from simulator.study.candidates import build_candidates
+    from simulator.study.annual.year import run_annual
+    from simulator.study.inputs.candidates import build_candidates
     from simulator.study.runner import zone_members
-    from simulator.study.metrics import zone_metrics
+    from simulator.study.annual.metrics import zone_metrics
     from simulator.study.schema import load_study
 
     study, p = load_study(a.study)

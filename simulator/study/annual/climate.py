@@ -6,7 +6,7 @@ label each row with the *end* of its hour, local standard time (TMY3 and EPW
 hour 1 is 00:00–01:00); the hour's value is a mean over it, so the sun is
 placed at the hour's centre, 30 minutes before the label
 (:attr:`Weather.centre`), with pvlib's solar position (NREL SPA, apparent
-elevation: refraction included, as :mod:`simulator.study.sun`).
+elevation: refraction included, as :mod:`simulator.study.inputs.sun`).
 
 Units are checked against the data, not the header: the global-horizontal
 illuminance over the global-horizontal irradiance is daylight's luminous

@@ -30,7 +30,7 @@ eqn. 7: K_d = a + bW + c cos Z + d ln Δ lm/W, W = exp(0.07 T_d − 0.075) cm
 of precipitable water from the dew point T_d in °C) with the direct
 normal illuminance from eqn. 8 (K_n = max(0, a + bW + c e^{5.73Z − 5} + dΔ)).
 Each patch's luminance is the model's mean over the patch (the midpoint rule
-of :func:`simulator.study.sky_patches.patch_means`).
+of :func:`simulator.study.inputs.sky_patches.patch_means`).
 
 Where the model's inputs leave its range the hour is clamped as Radiance's
 ``gendaymtx`` does: ε ≤ 12, Δ ≥ 0.01 (and ≥ 0.2 for 1.065 < ε < 2.8), the
@@ -58,7 +58,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from simulator.study import sky_patches as SP
+from simulator.study.inputs import sky_patches as SP
 
 __all__ = ["PEREZ_1993", "EPSILON_BINS", "DIFFUSE_EFFICACY", "DIRECT_EFFICACY", "air_mass", "clearness_brightness",
            "epsilon_bin", "perez_parameters", "relative_luminance", "efficacies", "HourSkies", "hour_skies"]  # fmt: skip
@@ -212,11 +212,11 @@ class HourSkies:
 
 
 def hour_skies(w, hours: np.ndarray, illuminance: str = "file", n_sub: int = 8, block: int = 256) -> HourSkies:
-    """Perez skies and suns of the rows ``hours`` of a :class:`~simulator.study.climate.Weather`.
+    """Perez skies and suns of the rows ``hours`` of a :class:`~simulator.study.annual.climate.Weather`.
 
     ``illuminance``: "file" (the file's diffuse and direct illuminance fields)
     or "efficacy" (the Perez 1990 efficacy model on its irradiances)."""
-    from simulator.study.sun import sun_direction
+    from simulator.study.inputs.sun import sun_direction
 
     hours = np.asarray(hours, np.int64)
     az, el = w.sun_azimuth_deg[hours], w.sun_elevation_deg[hours]
