@@ -14,6 +14,7 @@ Schema
 ::
 
     stage = "../stages/office.usda"    # required
+    project = "Office, level 2"        # the report's title (default: the stage's file name)
     light_units = "photometric"        # or "radiometric"
     seed = 1                           # study seed: chunk seeds derive from it
 
@@ -95,7 +96,8 @@ Schema
 
     [output]
     dir = "../out/office_study"        # default: "<study stem>.out/" beside the file
-    heat_map_scale = "per_scenario"    # or "log": one logarithmic scale for all panels
+    heat_map_scale = "shared"          # the plans' colour scale: one per zone for all scenarios;
+                                       # "per_scenario": each plan its own; "log": one logarithmic
 
     [annual]                           # a year of daylight (simulator.study.annual.year);
     weather = "../stages/weather/greensboro_tmy3_lux.csv"  # EPW or TMY3
@@ -418,8 +420,9 @@ class OutputSpec(_Model):
     dir: str | None = Field(
         None, description="output folder, relative to the study (default: <study stem>.out/ beside it)"
     )
-    heat_map_scale: Literal["per_scenario", "log"] = Field(
-        "per_scenario", description="per_scenario (each panel its own scale) or log (one logarithmic scale)"
+    heat_map_scale: Literal["shared", "per_scenario", "log"] = Field(
+        "shared", description="the plans' colour scale: shared (one per zone for all scenarios), per_scenario (each "
+                              "plan its own) or log (one logarithmic scale)"
     )
 
 
@@ -484,6 +487,7 @@ class Study(_Model):
     """A whole study file; see the module docstring for the schema."""
 
     stage: str = Field(description="the USD stage, relative to the study")
+    project: str | None = Field(None, min_length=1, description="the report's title (default: the stage's file name)")
     light_units: Literal["photometric", "radiometric"] = Field(
         "photometric", description="photometric | radiometric, as a run config's"
     )

@@ -102,7 +102,7 @@ def write_annual_outputs(res, study, out_dir: Path, path: Path | None = None) ->
     if path is not None:
         from simulator.study.annual.report import annual_page
 
-        files[out_dir / "report.html"] = annual_page(res, path).encode()
+        files[out_dir / "report.html"] = annual_page(res, path, study).encode()
     files[out_dir / "annual.json"] = (json.dumps(record(res, study), indent=1, default=json_default) + "\n").encode()
     for p, data in files.items():
         atomic_write(p, data)

@@ -24,7 +24,10 @@ def score_value(objective: str, v: float) -> float:
 
 
 def score_text(objective: str, v: float, se: float) -> str:
-    """``0.9731 ± 0.0040`` for a correlation, ``4.21% ± 0.35%`` for a relative error."""
+    """``0.973 ± 0.004`` for a correlation, ``4.21 ± 0.35 %`` for a relative error
+    (:func:`simulator.io.numbers.with_error`: the error to 2 significant digits, the value to match)."""
+    from simulator.io.numbers import with_error
+
     if objective == "correlation":
-        return f"{v:.4f} ± {se:.4f}"
-    return f"{100 * v:.2f}% ± {100 * se:.2f}%"
+        return with_error(v, se)
+    return with_error(100 * v, 100 * se, "%")

@@ -1,4 +1,4 @@
-"""A zone's heat map (PNG) with the room's plan: shared by the study's files, report.html and its annual section."""
+"""A zone's false-colour plans (PNG) with the room's plan: the study's heatmap files, report.html and its annual section."""
 
 from __future__ import annotations
 
@@ -7,26 +7,12 @@ import math
 
 import numpy as np
 
-__all__ = ["MAX_PANELS", "heat_map_png", "zone_plan", "dropped_in_zone", "draw_plan"]
+from simulator.io.numbers import plain
+
+__all__ = ["MAX_PANELS", "heat_map_png", "zone_plan_pngs", "zone_scales", "zone_plan", "dropped_in_zone", "draw_plan"]
 
 #: most scenario panels in one zone's heat map
 MAX_PANELS = 16
-
-
-def _raster(xy: np.ndarray, v: np.ndarray):
-    """``(image, extent)`` of values on a regular grid of points, or None when the points are not one."""
-    xs, ys = np.unique(np.round(xy[:, 0], 6)), np.unique(np.round(xy[:, 1], 6))
-    if len(xs) < 2 or len(ys) < 2:
-        return None
-    dx, dy = np.diff(xs), np.diff(ys)
-    if np.ptp(dx) > 1e-6 or np.ptp(dy) > 1e-6:
-        return None
-    img = np.full((len(ys), len(xs)), np.nan)
-    ix = np.searchsorted(xs, np.round(xy[:, 0], 6))
-    iy = np.searchsorted(ys, np.round(xy[:, 1], 6))
-    img[iy, ix] = v
-    ext = (xs[0] - dx[0] / 2, xs[-1] + dx[0] / 2, ys[0] - dy[0] / 2, ys[-1] + dy[0] / 2)
-    return img, ext
 
 
 def zone_plan(res, zone: str):
@@ -70,82 +56,78 @@ def draw_plan(ax, plan) -> None:
         ax.plot(line[:, 0], line[:, 1], color="saddlebrown", lw=0.8)
 
 
-def heat_map_png(res, zone: str) -> bytes:
-    """PNG of one zone's readings, a panel per scenario (up to :data:`MAX_PANELS`).
+def scale_mode(res) -> str:
+    """``[output] heat_map_scale``: ``shared`` (default), ``per_scenario`` or ``log``."""
+    return getattr(res.study.output, "heat_map_scale", "shared")
 
-    Each panel has its own colour scale (``[output] heat_map_scale =
-    "per_scenario"``, the default: an evening at 50 lx and a sunny
-    afternoon at 5,000 lx both show their pattern) or all share one
-    logarithmic scale (``"log"``); world x and y in metres on the axes; the
-    room's walls (dark grey), openings (blue) and furniture (brown) of
-    :func:`zone_plan`; the chosen sensors (red ×) and the points dropped
-    inside furniture (grey +)."""
-    from matplotlib.colors import LogNorm, Normalize
-    from matplotlib.figure import Figure
+
+def zone_scales(res, zone: str, scenarios) -> list:
+    """The colour scale of each scenario's plan of ``zone``: one shared linear scale (``shared``), each its
+    own from 0 to its largest reading (``per_scenario``), or one shared log scale (``log``).
+
+    The shared scale runs from 0 to the *median* of the scenarios' largest readings, so that one sunlit
+    scenario at 30,000 lx does not paint the evening ones a single colour; readings above it are drawn in the
+    over-range colour (:data:`simulator.study.report.plan_maps.OVER_RGB`, the colour bar's arrow)."""
+    from simulator.study.report.plan_maps import Scale
+
+    ch = 1 if res.study.light_units == "photometric" else 0
+    ids = res.zones[zone]
+    vals = res.mean[: len(scenarios), ids, ch]
+    mode = scale_mode(res)
+    top = float(vals.max()) if vals.size and vals.max() > 0 else 1.0
+    if mode == "per_scenario":
+        return [Scale(min(0.0, float(v.min())), float(v.max()) if v.max() > 0 else 1.0) for v in vals]
+    if mode == "log":
+        pos = vals[vals > 0]
+        lo = float(pos.min()) if pos.size else top / 10
+        return [Scale(lo, top if top > lo else lo * 10, log=True)] * len(scenarios)
+    tops = vals.max(axis=1) if vals.size else np.ones(1)
+    mid = float(np.median(tops))
+    return [Scale(min(0.0, float(vals.min())), mid if mid > 0 else top)] * len(scenarios)
+
+
+def _marks(res, zone: str, xy: np.ndarray):
+    """Chosen sensors near the zone (x, y) and the points dropped inside furniture within it."""
+    chosen = [] if res.placement is None else res.placement.chosen
+    index = {c.sensor.name: c for c in res.candidates}
+    lo, hi = xy.min(axis=0), xy.max(axis=0)
+    marks = [index[n].position[:2] for n in chosen
+             if lo[0] - 1 <= index[n].position[0] <= hi[0] + 1 and lo[1] - 1 <= index[n].position[1] <= hi[1] + 1]  # fmt: skip
+    return marks, dropped_in_zone(res, zone)[:, :2]
+
+
+def zone_plan_pngs(res, zone: str) -> list[bytes]:
+    """One false-colour plan (PNG) of ``zone`` per scenario (up to :data:`MAX_PANELS`), in scenario order,
+    on the scales of :func:`zone_scales`."""
+    from simulator.study.report.plan_maps import plan_png
 
     ch = 1 if res.study.light_units == "photometric" else 0
     ids = res.zones[zone]
     xy = np.array([res.candidates[i].position[:2] for i in ids])
     scen = res.scenarios[:MAX_PANELS]
-    vals = res.mean[: len(scen), ids, ch]
-    log = getattr(res.study.output, "heat_map_scale", "per_scenario") == "log"
-    ncol = min(4, len(scen))
-    nrow = math.ceil(len(scen) / ncol)
-    fig = Figure(figsize=(3.0 * ncol + (1.2 if log else 0.3), 2.5 * nrow + 1.0), dpi=80)
-    fig.subplots_adjust(left=0.06, right=0.86 if log else 0.95, bottom=0.1, top=1.0 - 0.95 / (2.5 * nrow + 1.0), wspace=0.55, hspace=0.75)
-    axes = fig.subplots(nrow, ncol, squeeze=False)
-    pos_vals = vals[vals > 0]
-    shared = None
-    if log and pos_vals.size:
-        shared = LogNorm(vmin=float(pos_vals.min()), vmax=float(pos_vals.max()) if pos_vals.max() > pos_vals.min() else float(pos_vals.min()) * 10)
-    chosen = [] if res.placement is None else res.placement.chosen
-    index = {c.sensor.name: c for c in res.candidates}
+    scales = zone_scales(res, zone, scen)
     plan = zone_plan(res, zone)
-    dropped = dropped_in_zone(res, zone)
-    lo, hi = xy.min(axis=0), xy.max(axis=0)
-    unit = "lx" if ch == 1 else "W/m²"
-    im = None
-    for k, ax in enumerate(axes.flat):
-        if k >= len(scen):
-            ax.set_visible(False)
-            continue
-        v = vals[k]
-        if shared is not None:
-            norm = shared
-        else:
-            vmax = float(v.max()) if v.size and v.max() > 0 else 1.0
-            norm = Normalize(vmin=min(0.0, float(v.min())), vmax=vmax)
-        r = _raster(xy, v)
-        if r is not None:
-            im = ax.imshow(np.where(r[0] > 0, r[0], np.nan) if shared is not None else r[0], origin="lower", extent=r[1],
-                           cmap="viridis", norm=norm, interpolation="nearest")  # fmt: skip
-        else:
-            im = ax.scatter(xy[:, 0], xy[:, 1], c=v, cmap="viridis", norm=norm, marker="s", s=30, linewidths=0)
-        draw_plan(ax, plan)
-        if len(dropped):
-            ax.plot(dropped[:, 0], dropped[:, 1], "+", color="0.5", markersize=5, mew=1)
-        for name in chosen:
-            p = index[name].position
-            if lo[0] - 1 <= p[0] <= hi[0] + 1 and lo[1] - 1 <= p[1] <= hi[1] + 1:
-                ax.plot(p[0], p[1], marker="x", color="red", markersize=7, mew=2)
-        f = res.figures[(zone, scen[k].name)]
-        ax.set_title(f"{scen[k].name}\nmean {f.mean:.0f} {unit}, U0 {f.u0:.2f}", fontsize=6)
-        ax.tick_params(labelsize=6)
-        ax.set_xlabel("x (m)", fontsize=6)
-        ax.set_ylabel("y (m)", fontsize=6)
-        ax.set_aspect("equal", adjustable="datalim")
-        if shared is None:
-            cb = fig.colorbar(im, ax=ax, fraction=0.046, pad=0.04)
-            cb.ax.tick_params(labelsize=5)
-    if shared is not None and im is not None:
-        cax = fig.add_axes((0.89, 0.15, 0.02, 0.65))
-        fig.colorbar(im, cax=cax).set_label(f"illuminance ({unit}, log scale)", fontsize=7)
+    chosen, dropped = _marks(res, zone, xy)
+    label = "illuminance E (lx)" if ch == 1 else "irradiance E (W/m²)"
+    region = next(z.region for z in res.study.zone if z.name == zone)
+    return [plan_png(xy, res.mean[k, ids, ch], scales[k], label, sc.name, plan, chosen, dropped, region) for k, sc in enumerate(scen)]
+
+
+def heat_map_png(res, zone: str, pngs: list[bytes] | None = None) -> bytes:
+    """PNG of one zone's false-colour plans (:func:`zone_plan_pngs`, or ``pngs`` already drawn), three a row.
+
+    Each plan is :func:`simulator.study.report.plan_maps.plan_png`: the readings
+    interpolated inside the grid's cells, round bands and labelled
+    isolines, the room's walls (dark grey), openings (blue) and furniture
+    (brown) of :func:`zone_plan`, the chosen sensors (red ×) and the points
+    dropped inside furniture (grey +). The scale (``[output] heat_map_scale``)
+    is one for all plans of the zone (``"shared"``, the default: scenarios
+    compare at a glance), each plan's own (``"per_scenario"``: an evening at
+    50 lx and a sunny afternoon at 5,000 lx both show their pattern) or one
+    logarithmic scale (``"log"``)."""
+    from simulator.study.report.plan_maps import tile_pngs
+
+    pngs = zone_plan_pngs(res, zone) if pngs is None else pngs
     more = f" (first {MAX_PANELS} of {len(res.scenarios)} scenarios)" if len(res.scenarios) > MAX_PANELS else ""
-    scale = "one log scale" if shared is not None else f"each panel its own scale ({unit})"
-    key = "x chosen sensors" + (", + dropped inside furniture" if len(dropped) else "")
-    if plan is not None:
-        key += "; walls grey, openings blue, furniture brown"
-    fig.suptitle(f"zone {zone}{more}; {scale}\n{key}", fontsize=7)
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", metadata={"Software": None})
-    return buf.getvalue()
+    scale = {"shared": "one scale for all plans", "log": "one log scale for all plans"}.get(scale_mode(res), "each plan its own scale")
+    return tile_pngs(pngs, 3, f"zone {zone}{more}: {scale}")

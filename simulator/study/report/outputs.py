@@ -20,7 +20,7 @@ import numpy as np
 from simulator.io.results import json_default, readings_from
 from simulator.scene.model import SENSOR_SPECS
 from simulator.study.trace.chunks import atomic_write
-from simulator.study.report.heat_maps import heat_map_png
+from simulator.study.report.heat_maps import heat_map_png, zone_plan_pngs
 from simulator.study.figures.scores import placement_unit, score_value, target_keys
 from simulator.study.figures.objectives import calibrated_errors
 
@@ -244,11 +244,11 @@ def write_outputs(res, versions: dict) -> list[Path]:
         files[d / "placement.csv"] = placement_csv(res).encode()
     if getattr(res, "areas", None):
         files[d / "areas.csv"] = areas_csv(res).encode()
-    res.heat_map_cache = {}
+    res.plan_cache = {}  # zone -> its plans (PNG), drawn once for the files and report.html
     for z in res.study.zone:
-        png = heat_map_png(res, z.name)
-        res.heat_map_cache[z.name] = png
-        files[d / f"heatmap_{_safe(z.name)}.png"] = png
+        pngs = zone_plan_pngs(res, z.name)
+        res.plan_cache[z.name] = pngs
+        files[d / f"heatmap_{_safe(z.name)}.png"] = heat_map_png(res, z.name, pngs)
     files[d / "report.html"] = report_html(res).encode()
     res.files = sorted(p.name for p in files) + ["study.json"]
     files[d / "study.json"] = (json.dumps(record(res, versions), indent=1, default=json_default) + "\n").encode()
