@@ -161,14 +161,15 @@ def _metrics_table(m: dict, cfg) -> str:
             word = "met" if v >= 0.5 else "not met"
             cell = Raw.of(esc(word + (" (replicate years disagree)" if se > 0 else "")), "pass" if v >= 0.5 else "fail")
         else:
-            cell = Raw.of(esc(with_error(v, se, unit)))
+            cell = Raw.of(esc(with_error(v, se, unit)), "n")
         rows.append([name, cell, Raw.of(esc(what), "text")])
     return table_html(["metric", "value", "definition"], rows, "num metrics")
 
 
 def _control_table(ctl: dict) -> str:
-    rows = [[r["photosensor"], Raw.of(esc(with_error(r["relative_energy"], r["relative_energy_stderr"]))),
-             Raw.of(esc(with_error(r["hours_below"], r["hours_below_stderr"], "h"))), Raw.of(esc(with_error(r["score"], r["score_stderr"]))),
+    rows = [[r["photosensor"], Raw.of(esc(with_error(r["relative_energy"], r["relative_energy_stderr"])), "n"),
+             Raw.of(esc(with_error(r["hours_below"], r["hours_below_stderr"], "h")), "n"),
+             Raw.of(esc(with_error(r["score"], r["score_stderr"])), "n"),
              "yes" if r["photosensor"] == ctl["chosen"] else ""] for r in ctl["candidates"]]  # fmt: skip
     sep = "" if ctl["separable"] else f" (not separable from {ctl['runner_up']})"
     head = (f"<p>Control <b>{esc(ctl['model'])}</b> of {esc(', '.join(ctl['groups']))}, target {esc(plain(ctl['target_lx'], 'lx'))} "

@@ -138,7 +138,8 @@ def verdict_cell(v: str, why: str = "no requirement set") -> Raw:
 
 
 def _fig(v: float, se: float, unit: str = "") -> Raw:
-    return Raw.of(esc(with_error(v, se, unit)))
+    """A figure cell: value ± error (unit), never broken over lines."""
+    return Raw.of(esc(with_error(v, se, unit)), "n")
 
 
 #: a zone target's figure and how it is compared (ZoneFigures attribute, ≥ or ≤)
@@ -298,7 +299,7 @@ def _warnings(res) -> Section | None:
 
 #: the page's sections in order: (name, builder)
 SECTIONS: list[tuple[str, Callable]] = [
-    ("zones", _zones), ("areas", _areas), ("heatmaps", _heat_maps), ("luminaires", _luminaires), ("placement", _placement),
+    ("zones", _zones), ("areas", _areas), ("luminaires", _luminaires), ("heatmaps", _heat_maps), ("placement", _placement),
     ("overview", _overview), ("warnings", _warnings),
 ]  # fmt: skip
 
@@ -329,10 +330,10 @@ header.title dt{font-size:.75em;color:#567}header.title dd{margin:0;font-weight:
 table{border-collapse:collapse;font-size:.85em;margin:.4em 0}
 th,td{border:1px solid #bbb;padding:.2em .5em;text-align:left;vertical-align:top}thead th{background:#e8edf2}
 table.num td{text-align:right}table.num td:first-child,table.num td.text{text-align:left}
-td{overflow-wrap:anywhere}td.text{min-width:16em}
+td{overflow-wrap:anywhere}td.text{min-width:16em}td.n{white-space:nowrap;overflow-wrap:normal}
 table.kv th{background:#f3f5f7;font-weight:normal}
 .pass{background:#cdebc9;color:#14501b}.fail{background:#f6c9c5;color:#7a1410}.unsure{background:#fbe7b0;color:#6a4a00}
-.none{color:#777;text-align:center!important}
+.none{color:#777}table.num td.pass,table.num td.fail,table.num td.unsure,table.num td.none{text-align:center}
 p.key span{padding:0 .3em;border-radius:2px}p.key{font-size:.85em;color:#444}
 img{max-width:100%;height:auto}figure{margin:.6em 0}figcaption{font-size:.85em;color:#333}
 .plans{display:grid;grid-template-columns:repeat(auto-fill,minmax(26em,1fr));gap:.8em 1.2em}
