@@ -2,12 +2,7 @@
 
 from __future__ import annotations
 
-import io
-import math
-
 import numpy as np
-
-from simulator.io.numbers import plain
 
 __all__ = ["MAX_PANELS", "heat_map_png", "zone_plan_pngs", "zone_scales", "zone_plan", "dropped_in_zone", "draw_plan"]
 

@@ -1,4 +1,14 @@
-"""``report.html``: one self-contained page a designer reads (tables, heat maps, the marginal-gain curve).
+"""``report.html``: one self-contained page a designer hands on.
+
+It opens with a title block (project, stage, study file, date, probesim
+version, seed), then a summary table per zone (Ē, Emin, Emax, U0 with their
+errors, the required values and coloured pass / fail / unsure verdicts, a
+blank one explained), the EN 12464-1 areas, the luminaire schedule, one
+continuous false-colour plan per zone and scenario
+(:mod:`simulator.study.plan_maps`), the placement and the study's numbers.
+Every figure is printed by :mod:`simulator.io.numbers` (the error to 2
+significant digits, the value to match, its unit); a print style sheet lays
+it out on A4.
 
 Everything is in the file: images are PNGs embedded as base64 ``data:``
 URIs, the style sheet is inline, there is no script and nothing is fetched,
@@ -17,11 +27,9 @@ from __future__ import annotations
 import base64
 import html
 import io
-import math
 from dataclasses import dataclass
-from typing import Callable
-
 from pathlib import Path
+from typing import Callable
 
 import numpy as np
 
