@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["MAX_PANELS", "heat_map_png", "zone_plan_pngs", "zone_scales", "zone_plan", "dropped_in_zone", "draw_plan"]
+__all__ = ["MAX_PANELS", "heat_map_png", "zone_plan_pngs", "zone_scales", "scale_mode", "zone_plan", "dropped_in_zone"]
 
 #: most scenario panels in one zone's heat map
 MAX_PANELS = 16
@@ -36,19 +36,6 @@ def dropped_in_zone(res, zone: str) -> np.ndarray:
     pts = [p for p in getattr(cs, "dropped_points", [])
            if z.region is None or (z.region[0] <= p[0] <= z.region[2] and z.region[1] <= p[1] <= z.region[3])]  # fmt: skip
     return np.array(pts).reshape(-1, 3)
-
-
-def draw_plan(ax, plan) -> None:
-    """The room's walls (dark grey), openings (blue) and furniture (brown) of a :class:`~simulator.study.report.outline.Plan`
-    on a plan axis (x, y in metres); nothing when ``plan`` is None."""
-    if plan is None:
-        return
-    for seg in plan.walls:
-        ax.plot(seg[:, 0], seg[:, 1], color="0.25", lw=1.6, solid_capstyle="butt")
-    for line in plan.openings:
-        ax.plot(line[:, 0], line[:, 1], color="tab:blue", lw=2.2)
-    for line in plan.furniture:
-        ax.plot(line[:, 0], line[:, 1], color="saddlebrown", lw=0.8)
 
 
 def scale_mode(res) -> str:

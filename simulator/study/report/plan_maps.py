@@ -21,7 +21,8 @@ import numpy as np
 
 from simulator.io.numbers import plain
 
-__all__ = ["Scale", "plan_levels", "draw_false_colour", "plan_png", "tile_pngs", "cell_pitch_m", "room_box", "colour_bar"]
+__all__ = ["Scale", "OVER_RGB", "plan_levels", "draw_false_colour", "draw_plan", "plan_png", "tile_pngs", "cell_pitch_m", "room_box",
+           "colour_bar"]
 
 #: raster points along the longer side of the drawn area
 RASTER_PX = 240
@@ -134,6 +135,19 @@ def room_box(xy: np.ndarray, plan=None, region=None) -> tuple[float, float, floa
     return (min(box[0], lo[0]), min(box[1], lo[1]), max(box[2], hi[0]), max(box[3], hi[1]))
 
 
+def draw_plan(ax, plan) -> None:
+    """The room's walls (dark grey), openings (blue) and furniture (brown) of a :class:`~simulator.study.report.outline.Plan`
+    on a plan axis (x, y in metres); nothing when ``plan`` is None."""
+    if plan is None:
+        return
+    for seg in plan.walls:
+        ax.plot(seg[:, 0], seg[:, 1], color="0.25", lw=1.6, solid_capstyle="butt")
+    for line in plan.openings:
+        ax.plot(line[:, 0], line[:, 1], color="tab:blue", lw=2.2)
+    for line in plan.furniture:
+        ax.plot(line[:, 0], line[:, 1], color="saddlebrown", lw=0.8)
+
+
 def draw_false_colour(ax, xy: np.ndarray, v: np.ndarray, scale: Scale, plan=None, chosen_xy=(), dropped_xy=(),
                       font_pt: float = FONT_PT, box=None):  # fmt: skip
     """Draw one plan on ``ax``; returns the filled contour set (for a colour bar).
@@ -151,8 +165,6 @@ def draw_false_colour(ax, xy: np.ndarray, v: np.ndarray, scale: Scale, plan=None
     """
     from matplotlib import colormaps
     from matplotlib.colors import BoundaryNorm, LogNorm
-
-    from simulator.study.report.heat_maps import draw_plan
 
     box = plan_box(xy) if box is None else box
     X, Y, Z = _raster(xy, np.asarray(v, float), box)
