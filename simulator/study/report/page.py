@@ -145,6 +145,11 @@ def verdict_cell(v: str, why: str = "no requirement set") -> Raw:
     return Raw.of(esc(v), v if v in ("pass", "fail", "unsure") else "")
 
 
+def name_cell(name: str) -> Raw:
+    """A scenario's name that may break after its commas and brackets, not inside a level (``0.25``)."""
+    return Raw.of(esc(name).replace(",", ",<wbr>").replace("[", "[<wbr>"), "text")
+
+
 def _fig(v: float, se: float, unit: str = "") -> Raw:
     """A figure cell: value ± error (unit), never broken over lines."""
     return Raw.of(esc(with_error(v, se, unit)), "n")
@@ -169,7 +174,7 @@ def _zones(res) -> Section:
         for sc in res.scenarios:
             f = res.figures[(z.name, sc.name)]
             chk = res.checks[(z.name, sc.name)]
-            rows.append([sc.name, _fig(f.mean, f.mean_se), _fig(f.min, f.min_se), _fig(f.max, f.max_se), _fig(f.u0, f.u0_se),
+            rows.append([name_cell(sc.name), _fig(f.mean, f.mean_se), _fig(f.min, f.min_se), _fig(f.max, f.max_se), _fig(f.u0, f.u0_se),
                          *(verdict_cell(chk.get(k, "") if k in z.targets else "", f"zone {z.name} sets no {k} target") for k in keys)])  # fmt: skip
         parts.append(f"<h3>Zone {esc(z.name)}</h3><p>{len(res.zones[z.name])} calculation points; required: "
                      f"{esc(', '.join(req) if req else 'none set')}.</p>" + table_html(head, rows, "num"))  # fmt: skip
@@ -338,7 +343,7 @@ header.title dt{font-size:.75em;color:#567}header.title dd{margin:0;font-weight:
 table{border-collapse:collapse;font-size:.85em;margin:.4em 0}
 th,td{border:1px solid #bbb;padding:.2em .5em;text-align:left;vertical-align:top}thead th{background:#e8edf2}
 table.num td{text-align:right}table.num td:first-child,table.num td.text{text-align:left}
-td{overflow-wrap:anywhere}td.text{min-width:16em}td.n{white-space:nowrap;overflow-wrap:normal}
+td{overflow-wrap:anywhere}td.text{min-width:9em}td.n{white-space:nowrap;overflow-wrap:normal}
 table.kv th{background:#f3f5f7;font-weight:normal}
 .pass{background:#cdebc9;color:#14501b}.fail{background:#f6c9c5;color:#7a1410}.unsure{background:#fbe7b0;color:#6a4a00}
 .none{color:#777}table.num td.pass,table.num td.fail,table.num td.unsure,table.num td.none{text-align:center}
