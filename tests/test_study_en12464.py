@@ -217,8 +217,17 @@ def test_areas_csv_parts_maintained_figures_and_verdicts(tmp_path, capsys):
             if not np.isfinite(v):
                 continue
             assert r[f"{key}_verdict"] == ("pass" if v - req > 2 * s else "fail" if v - req < -2 * s else "unsure")
-    # the report shows them
-    assert 'id="areas"' in (out / "report.html").read_text()
+    # the report shows them: every maintained Ē with its standard error, each verdict in its colour's class
+    import html
+
+    from simulator.io.numbers import with_error
+
+    page = html.unescape((out / "report.html").read_text())
+    sec = page[page.index('id="areas"'):page.index("</section>", page.index('id="areas"'))]
+    for r in rows:
+        if np.isfinite(float(r["mean"])):
+            assert f'<td class="n">{with_error(float(r["mean"]), float(r["mean_stderr"]))}</td>' in sec, r
+            assert f'<td class="{r["mean_verdict"]}">{r["mean_verdict"]}</td>' in sec
     # the cylindrical set's axis is the floor's normal
     ez = [x for x in read if x["candidates"] == "ez"]
     assert {x["kind"] for x in ez} == {"cylindrical"} and all(float(x["z"]) == pytest.approx(1.2) for x in ez)
