@@ -298,9 +298,11 @@ def test_every_figure_has_a_sane_precision(study_out):
     """No exponent (2.216e+04) and no error with more than 2 significant digits (± 0.007362) anywhere on the page."""
     import html
 
-    _, out = study_out
+    res, out = study_out
     text = html.unescape(_text((out / "report.html").read_text()))
     assert not re.search(r"\d\.?\d*e[+-]\d", text)
+    # every zone figure (Ē, Emin, Emax, U0) carries its error beside it, not in a column of its own
+    assert text.count("\u00a0±\u00a0") >= 4 * len(res.figures)
     for err in re.findall(r"±\u00a0([\d.,]+)", text):
         digits = err.replace(",", "").replace(".", "").lstrip("0")
         assert len(digits.rstrip("0") if "." not in err else digits) <= 2, err
