@@ -416,5 +416,6 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
     }
     if not write:
         return RunOutput(rows, None, None, record, scene, interrupted)
-    record_path = write_outputs(cfg.output.csv, rows, record, extra, encoded={"plan": plan.record_json()})
+    record_path = write_outputs(cfg.output.csv, rows, record, extra, encoded={"plan": plan.record_json()},
+                                csv_columns=cfg.output.csv_columns)
     return RunOutput(rows, cfg.output.csv, record_path, record, scene, interrupted)
