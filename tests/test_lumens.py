@@ -226,3 +226,40 @@ def test_normalize_off_and_no_lumens_keep_todays_emission(tmp_path):
     assert light.authored == {"intensity": 500.0, "exposure": 1.0, "normalize": False, "color_grey": 1.0}
     assert emitted_flux(light)[1] == pytest.approx(1000.0 * math.pi * 0.36, rel=REL)
     assert light.kind == LightKind.RECT
+
+
+def test_lumens_on_a_mesh_light_are_refused(tmp_path):
+    """A mesh light (MeshLightAPI) does not read probesim:flux_lm: one line naming the prim, not a silent intensity 1."""
+    (tmp_path / "s.usda").write_text('''#usda 1.0
+(
+    metersPerUnit = 1
+    upAxis = "Z"
+)
+def Mesh "Lamp" (
+    prepend apiSchemas = ["MeshLightAPI"]
+)
+{
+    int[] faceVertexCounts = [4]
+    int[] faceVertexIndices = [0, 1, 2, 3]
+    point3f[] points = [(-0.3, -0.3, 2), (-0.3, 0.3, 2), (0.3, 0.3, 2), (0.3, -0.3, 2)]
+    float probesim:flux_lm = 3000
+}
+''')
+    with pytest.raises(UserError, match=r"/Lamp: probesim:flux_lm/probesim:power_W/probesim:efficacy_lm_per_W are read on "
+                                        r"Sphere, Rect, Disk and Cylinder lights, not on a mesh light"):
+        load_scene(load_config(_config(tmp_path)))
+
+
+def test_record_states_an_absolute_ies_lights_lumens(tmp_path):
+    """probesim:ies:absolute: the light emits the file's candelas × LLF, so its lumens as traced are
+    LLF × the file's total lumens (the file's bilinear interpolant integrated exactly, as traced)."""
+    from simulator.scene.light_flux import lights_record
+    from simulator.scene.photometry import read_photometry
+
+    light = _light(tmp_path, "SphereLight", POINT + f"    asset inputs:shaping:ies:file = @{ASYM_IES}@\n"
+                   "    bool probesim:ies:absolute = 1\n    float probesim:lightLossFactor = 0.8\n", "ShapingAPI")
+    (rec,) = lights_record([light])
+    assert rec["authored"] == {"ies_absolute": True, "light_loss_factor": pytest.approx(0.8, rel=1e-7)}
+    assert rec["shaping"] == "ies" and rec["emission"]["units"] == ["W/sr", "cd"]
+    # 1e-7: the LLF is read as float32 (0.800000012); the two integrals agree to 1e-15
+    assert rec["flux_lm"] == pytest.approx(0.8 * read_photometry(ASYM_IES).total_lumens(), rel=1e-7)

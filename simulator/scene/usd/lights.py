@@ -99,6 +99,8 @@ def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:
         light.authored = dict(stated)
         return light
     light.authored = _authored_inputs(ctx, prim, normalize)
+    if light.shaping is not None and light.shaping.absolute:  # the file's candelas × LLF: intensity is not used
+        light.authored = {"ies_absolute": True, "light_loss_factor": light.shaping.light_loss_factor}
     if light.kind == LightKind.POINT and light.emission[1] == 0.0 and raw > 0:
         # a radius-0 sphere without normalize has I = L pi r^2 = 0, unless absolute photometry
         # (probesim:ies:absolute) set its candelas from the file: warn only when nothing is left
