@@ -93,7 +93,7 @@ def both(tmp_path_factory):
 
 
 def test_the_report_holds_the_annual_section_after_the_heat_maps(both):
-    from simulator.study.metrics import METRICS
+    from simulator.study.annual.metrics import METRICS
 
     _, _, raw = both
     page = raw.decode()
@@ -128,8 +128,8 @@ def test_the_annual_tables_carry_the_runs_figures(both):
 
 def test_da_per_sensor_matches_the_zone_metric_and_the_temporal_grid_places_each_hour(tmp_path):
     """The DA map's values average to the zone's DA; the temporal grid puts each hour at its day and hour."""
-    from simulator.study.annual import run_annual
-    from simulator.study.annual_report import da_per_sensor, temporal_grid
+    from simulator.study.annual.year import run_annual
+    from simulator.study.annual.report import da_per_sensor, temporal_grid
     from simulator.study.schema import load_study
 
     tmp = tmp_path

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from simulator.io.results import COLUMNS
-from simulator.study.report import write_outputs
+from simulator.study.report.outputs import write_outputs
 from simulator.study.runner import run_study
 from simulator.study.schema import load_study
 
@@ -91,7 +91,7 @@ def test_placement_scores_are_percent(study_out):
 
 
 def test_heat_map_has_the_room_plan_and_dropped_points(study_out):
-    from simulator.study.heat_maps import dropped_in_zone, zone_plan
+    from simulator.study.report.heat_maps import dropped_in_zone, zone_plan
 
     res, out = study_out
     plan = zone_plan(res, EVIL)
@@ -110,7 +110,7 @@ def test_heat_map_has_the_room_plan_and_dropped_points(study_out):
 
 
 def test_per_scenario_scale_and_log_scale_differ_and_are_valid(study_out):
-    from simulator.study.heat_maps import heat_map_png
+    from simulator.study.report.heat_maps import heat_map_png
 
     res, _ = study_out
     import copy
@@ -135,7 +135,7 @@ def test_report_is_self_contained_and_escapes_names(study_out):
 
 
 def test_a_registered_section_joins_the_page(study_out):
-    from simulator.study import html_report as hr
+    from simulator.study.report import page as hr
 
     res, _ = study_out
     saved = list(hr.SECTIONS)

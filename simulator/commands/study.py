@@ -70,7 +70,7 @@ def closing_note(res) -> list[str]:
     lines.append(f"wall time {t['total']:.1f} s (setup {t['setup']:.1f} s, chunks {t['chunks']:.1f} s); {cost}")
     pl = res.placement
     if pl is not None:
-        from simulator.study.scores import score_text
+        from simulator.study.figures.scores import score_text
 
         st = lambda v, e: score_text(pl.objective, v, e)  # noqa: E731  (relative errors in percent)
         what = "mean correlation" if pl.objective == "correlation" else "relative error"
@@ -132,8 +132,8 @@ def flag_overrides(samples: int | None = None, seed: int | None = None, rel_erro
 def main_study(path: str, out: str | None, scheduler: str | None, workers: int | None = None, local: bool = False,
                samples: int | None = None, seed: int | None = None, rel_error: float | None = None) -> int:
     from simulator.pipeline import _versions
-    from simulator.study.annual_outputs import annual_note, write_annual_outputs
-    from simulator.study.report import write_outputs
+    from simulator.study.annual.outputs import annual_note, write_annual_outputs
+    from simulator.study.report.outputs import write_outputs
     from simulator.study.runner import run_study
     from simulator.study.schema import load_study
 
@@ -173,7 +173,7 @@ def main_study(path: str, out: str | None, scheduler: str | None, workers: int |
 
 def _annual(study, p: Path, out_dir: Path, scheduler: str | None):
     """The study's ``[annual]`` part: run (or resume) it; its files are written by the caller."""
-    from simulator.study.annual import run_annual
+    from simulator.study.annual.year import run_annual
 
     try:
         return run_annual(study, p, out_dir, scheduler=scheduler, log=lambda m: print(m, file=sys.stderr))

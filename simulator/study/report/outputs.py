@@ -19,10 +19,10 @@ import numpy as np
 
 from simulator.io.results import json_default, readings_from
 from simulator.scene.model import SENSOR_SPECS
-from simulator.study.chunks import atomic_write
-from simulator.study.heat_maps import heat_map_png
-from simulator.study.scores import placement_unit, score_value, target_keys
-from simulator.study.objectives import calibrated_errors
+from simulator.study.trace.chunks import atomic_write
+from simulator.study.report.heat_maps import heat_map_png
+from simulator.study.figures.scores import placement_unit, score_value, target_keys
+from simulator.study.figures.objectives import calibrated_errors
 
 __all__ = ["write_outputs", "long_columns", "summary_columns", "value_columns"]
 
@@ -106,7 +106,7 @@ def placement_csv(res) -> str:
 
 def areas_csv(res) -> str:
     """One row per (EN 12464-1 area, part, scenario): maintained figures, requirements and verdicts."""
-    from simulator.study.areas import AREA_COLUMNS
+    from simulator.study.figures.areas import AREA_COLUMNS
 
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
@@ -235,8 +235,8 @@ def cost(res) -> dict:
 
 def write_outputs(res, versions: dict) -> list[Path]:
     """Write the CSVs, heat maps, report page and record into ``res.out_dir``; returns the paths."""
-    import simulator.study.annual_report  # noqa: F401  (registers the annual section; shown when res.annual is set)
-    from simulator.study.html_report import report_html
+    import simulator.study.annual.report  # noqa: F401  (registers the annual section; shown when res.annual is set)
+    from simulator.study.report.page import report_html
 
     d = res.out_dir
     files = {d / "readings.csv": long_csv(res).encode(), d / "summary.csv": summary_csv(res).encode()}

@@ -1,7 +1,7 @@
 """Chunks of a study: (trace group × sensor block) units of work, their store and resume.
 
 A chunk traces the light groups of one trace group
-(:class:`~simulator.study.scenarios.TraceGroup`) on one block of candidate
+(:class:`~simulator.study.inputs.scenarios.TraceGroup`) on one block of candidate
 sensors, all its groups in one pass. Its seed derives from (study seed,
 trace key, block) alone, so a chunk gives the same numbers wherever and whenever it runs.
 
@@ -31,8 +31,8 @@ from pathlib import Path
 import numpy as np
 
 from simulator.scene.model import LightKind, Sensor
-from simulator.study.groups import GroupReadings, derive_seed, level_of, patch_names, trace_groups
-from simulator.study.sun import sun_direction, sun_frame
+from simulator.study.trace.groups import GroupReadings, derive_seed, level_of, patch_names, trace_groups
+from simulator.study.inputs.sun import sun_direction, sun_frame
 
 __all__ = ["ChunkSpec", "ChunkStore", "compute_chunk", "atomic_write", "make_chunks", "StudyInterrupted"]
 

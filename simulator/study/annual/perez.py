@@ -30,13 +30,22 @@ eqn. 7: K_d = a + bW + c cos Z + d ln Δ lm/W, W = exp(0.07 T_d − 0.075) cm
 of precipitable water from the dew point T_d in °C) with the direct
 normal illuminance from eqn. 8 (K_n = max(0, a + bW + c e^{5.73Z − 5} + dΔ)).
 Each patch's luminance is the model's mean over the patch (the midpoint rule
-of :func:`simulator.study.sky_patches.patch_means`).
+of :func:`simulator.study.inputs.sky_patches.patch_means`).
 
-Where the model's inputs leave its range the hour is clamped as Radiance's
-``gendaymtx`` does: ε ≤ 12, Δ ≥ 0.01 (and ≥ 0.2 for 1.065 < ε < 2.8), the
-sun's elevation for the sky's shape within 0°…87° (a sun below the horizon
-at the hour's centre shapes a twilight sky as if on the horizon; its direct
-light is 0), negative luminances 0.
+Where the model's inputs leave its range the hour is clamped to the range
+the coefficients were fitted on, as Radiance's ``gendaymtx`` does
+(:data:`CLEARNESS_RANGE`, :data:`BRIGHTNESS_RANGE`): 1 ≤ ε ≤ 12 (Perez 1990
+Table 1's bins start at 1 and its clear bin holds ε ≥ 6.2; gendaymtx stops ε
+at 11.9 from irradiances and 12 from illuminances, the same bin either way)
+and 0.01 ≤ Δ ≤ 0.6 on both sides (and Δ ≥ 0.2 for 1.065 < ε < 2.8, as
+gendaymtx's parameter routine), the sun's elevation for the sky's shape
+within 0°…87° (a sun below the horizon at the hour's centre shapes a
+twilight sky as if on the horizon; its direct light is 0), negative
+luminances 0. Without the upper bound on Δ a bright diffuse hour at a low
+sun (air mass ~36 at the horizon, so Δ of 5 and more) drives a…e far out
+of the fitted range and the whole sky negative; the bound keeps it a sky.
+Should a sky still have no positive luminance, it is made uniform (as
+gendaymtx does), so an hour's diffuse light is never lost.
 
 References
 ----------
@@ -58,10 +67,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from simulator.study import sky_patches as SP
+from simulator.study.inputs import sky_patches as SP
 
-__all__ = ["PEREZ_1993", "EPSILON_BINS", "DIFFUSE_EFFICACY", "DIRECT_EFFICACY", "air_mass", "clearness_brightness",
-           "epsilon_bin", "perez_parameters", "relative_luminance", "efficacies", "HourSkies", "hour_skies"]  # fmt: skip
+__all__ = ["PEREZ_1993", "EPSILON_BINS", "CLEARNESS_RANGE", "BRIGHTNESS_RANGE", "DIFFUSE_EFFICACY", "DIRECT_EFFICACY", "air_mass",
+           "clearness_brightness", "epsilon_bin", "perez_parameters", "relative_luminance", "efficacies", "HourSkies", "hour_skies"]  # fmt: skip
 
 #: upper edges of the clearness bins (Perez 1990 Table 1); the last is open
 EPSILON_BINS = (1.065, 1.230, 1.500, 1.950, 2.800, 4.500, 6.200)
@@ -98,6 +107,9 @@ DIRECT_EFFICACY = np.array([
 ])  # fmt: skip
 
 _KAPPA = 1.041
+#: sky clearness ε and brightness Δ are clamped to these (the model's fitted range, as gendaymtx clamps them)
+CLEARNESS_RANGE = (1.0, 12.0)
+BRIGHTNESS_RANGE = (0.01, 0.6)
 #: the sun's elevation range that shapes the sky (degrees), as gendaymtx clamps it
 SKY_SUN_ELEVATION_DEG = (0.0, 87.0)
 
@@ -109,14 +121,14 @@ def air_mass(zenith_rad: np.ndarray) -> np.ndarray:
 
 
 def clearness_brightness(dhi_w_m2, dni_w_m2, zenith_rad, dni_extra_w_m2) -> tuple[np.ndarray, np.ndarray]:
-    """Perez sky clearness ε (clamped to 1…12) and brightness Δ (≥ 0.01); 1 and 0.01 where I_dh = 0."""
+    """Perez sky clearness ε and brightness Δ, clamped to :data:`CLEARNESS_RANGE` and :data:`BRIGHTNESS_RANGE`
+    on both sides; the lower bounds where I_dh = 0."""
     dhi = np.asarray(dhi_w_m2, np.float64)
     z3 = np.asarray(zenith_rad, np.float64) ** 3
     with np.errstate(divide="ignore", invalid="ignore"):
         eps = np.where(dhi > 0, ((dhi + dni_w_m2) / np.where(dhi > 0, dhi, 1.0) + _KAPPA * z3) / (1.0 + _KAPPA * z3), 1.0)
-    eps = np.clip(eps, 1.0, 12.0)
     delta = dhi * air_mass(zenith_rad) / np.asarray(dni_extra_w_m2, np.float64)
-    return eps, np.where(delta < 0.05, 0.01, delta)
+    return np.clip(eps, *CLEARNESS_RANGE), np.clip(delta, *BRIGHTNESS_RANGE)
 
 
 def epsilon_bin(eps: np.ndarray) -> np.ndarray:
@@ -212,11 +224,11 @@ class HourSkies:
 
 
 def hour_skies(w, hours: np.ndarray, illuminance: str = "file", n_sub: int = 8, block: int = 256) -> HourSkies:
-    """Perez skies and suns of the rows ``hours`` of a :class:`~simulator.study.climate.Weather`.
+    """Perez skies and suns of the rows ``hours`` of a :class:`~simulator.study.annual.climate.Weather`.
 
     ``illuminance``: "file" (the file's diffuse and direct illuminance fields)
     or "efficacy" (the Perez 1990 efficacy model on its irradiances)."""
-    from simulator.study.sun import sun_direction
+    from simulator.study.inputs.sun import sun_direction
 
     hours = np.asarray(hours, np.int64)
     az, el = w.sun_azimuth_deg[hours], w.sun_elevation_deg[hours]
@@ -249,6 +261,8 @@ def hour_skies(w, hours: np.ndarray, illuminance: str = "file", n_sub: int = 8, 
         lum = relative_luminance(params[sl], dirs, sun_sky[sl])
         rel = lum.reshape(lum.shape[0], SP.N_PATCHES, n_sub * n_sub).mean(axis=2)
         h = rel @ proj
+        flat = h <= 0.0  # no positive luminance left: a uniform sky keeps the hour's diffuse light (gendaymtx does the same)
+        rel[flat], h[flat] = 1.0, proj.sum()
         with np.errstate(divide="ignore", invalid="ignore"):
             out[sl] = np.where(h[:, None] > 0, rel * (e_dh[sl] / np.where(h > 0, h, 1.0))[:, None], 0.0)
     del owner

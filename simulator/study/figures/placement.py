@@ -40,7 +40,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from simulator.study.objectives import calibrated_errors
+from simulator.study.figures.objectives import calibrated_errors
 
 __all__ = ["gains", "set_value", "greedy_lazy", "brute_force", "Placement", "Step", "place_sensors"]
 

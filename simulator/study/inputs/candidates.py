@@ -4,7 +4,7 @@ A grid lies in the plane of each named prim, offset ``height_m`` along the
 prim's front normal (a floor faces up, so 0.8 m gives the work plane; a
 ceiling faces down, so 0.02 m gives points just below it), inside the prim's
 bounding rectangle in that plane shrunk by the wall band, at the cell
-centres of an explicit or EN 12464-1 spacing (:mod:`simulator.study.en12464`).
+centres of an explicit or EN 12464-1 spacing (:mod:`simulator.study.inputs.en12464`).
 Points whose foot on the prim falls outside its triangles are dropped (an
 L-shaped floor), and so are points inside the world-axis bounding box of any
 ``drop_inside`` prim (furniture; a box is conservative for rotated pieces).
@@ -26,7 +26,7 @@ import numpy as np
 from simulator.config.capacity import too_many_sensors
 from simulator.errors import UserError
 from simulator.scene.model import Scene, Sensor, SensorKind
-from simulator.study.en12464 import Grid, en12464_grid, explicit_grid
+from simulator.study.inputs.en12464 import Grid, en12464_grid, explicit_grid
 from simulator.study.schema import CandidateSpec
 
 __all__ = ["Candidate", "CandidateSet", "build_candidates", "match_prims"]

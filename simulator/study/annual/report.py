@@ -1,19 +1,19 @@
 """report.html's annual section: a year of daylight per zone (metrics, control, charts).
 
 Per zone: the annual metrics with their standard errors (replicate years,
-:mod:`simulator.study.annual`), the photosensor control results of each
+:mod:`simulator.study.annual.year`), the photosensor control results of each
 ``[[control]]`` on the zone (relative energy, hours below target, every
 candidate photosensor and the chosen one), and three charts embedded as PNGs:
 
 - DA300 per sensor (share of occupied hours with E >= ``da_lx``) on the
   zone's plan, with the room's walls, openings and furniture
-  (:func:`simulator.study.outline.plan_of_zone`) and the chosen photosensor;
+  (:func:`simulator.study.report.outline.plan_of_zone`) and the chosen photosensor;
 - a temporal map (day of year x hour of day, local standard time, the hour's
   centre) of the zone's mean illuminance;
 - the same map of the controlled lamps' level u (0…1) for each control.
 
 A study with scenarios gets this section after its heat maps
-(:func:`simulator.study.html_report.register_section`); a study with only
+(:func:`simulator.study.report.page.register_section`); a study with only
 ``[annual]`` gets a page of its own (:func:`annual_page`). Every name from
 the study file or the stage is escaped. The charts depend only on the
 hourly means, so the page is the same bytes in-process, on a cluster and
@@ -26,15 +26,15 @@ import io
 
 import numpy as np
 
-from simulator.study.html_report import Section, esc, page_html, png_img, register_section, table_html
-from simulator.study.metrics import METRICS
+from simulator.study.report.page import Section, esc, page_html, png_img, register_section, table_html
+from simulator.study.annual.metrics import METRICS
 
 __all__ = ["annual_section", "annual_page", "da_per_sensor", "temporal_grid"]
 
 
 def da_per_sensor(ares, ids, da_lx: float) -> np.ndarray:
     """DA (fraction of occupied hours with E >= ``da_lx``) of each sensor in ``ids``, as
-    :func:`simulator.study.metrics.zone_metrics` counts it."""
+    :func:`simulator.study.annual.metrics.zone_metrics` counts it."""
     eo = ares.mean[ares.occupied][:, ids]
     return np.sum(eo >= da_lx, axis=0) / max(len(eo), 1)
 
@@ -61,7 +61,7 @@ def _png(fig) -> bytes:
 
 def _plan(ares, ids):
     """The room's plan around the zone's candidates, or None (not horizontal, no prims, no stage kept)."""
-    from simulator.study.outline import plan_of_zone
+    from simulator.study.report.outline import plan_of_zone
 
     scene = getattr(ares, "scene", None)
     cands = [ares.sensors[i] for i in ids]
@@ -76,7 +76,7 @@ def _plan(ares, ids):
 def _da_map_png(ares, zone: str, da_lx: float, chosen: list[str]) -> bytes:
     from matplotlib.figure import Figure
 
-    from simulator.study.heat_maps import _raster, draw_plan
+    from simulator.study.report.heat_maps import _raster, draw_plan
 
     ids = ares.zones[zone]
     xy = np.array([ares.sensors[i].position[:2] for i in ids])

@@ -30,9 +30,9 @@ def _raster(xy: np.ndarray, v: np.ndarray):
 
 
 def zone_plan(res, zone: str):
-    """The room's plan around a zone (:func:`simulator.study.outline.plan_of_zone`), or None
+    """The room's plan around a zone (:func:`simulator.study.report.outline.plan_of_zone`), or None
     (no stage scene kept, a zone that is not horizontal, no prims of its own)."""
-    from simulator.study.outline import plan_of_zone
+    from simulator.study.report.outline import plan_of_zone
 
     scene = getattr(res, "scene", None)
     ids = res.zones[zone]
@@ -58,7 +58,7 @@ def dropped_in_zone(res, zone: str) -> np.ndarray:
 
 
 def draw_plan(ax, plan) -> None:
-    """The room's walls (dark grey), openings (blue) and furniture (brown) of a :class:`~simulator.study.outline.Plan`
+    """The room's walls (dark grey), openings (blue) and furniture (brown) of a :class:`~simulator.study.report.outline.Plan`
     on a plan axis (x, y in metres); nothing when ``plan`` is None."""
     if plan is None:
         return

@@ -34,7 +34,7 @@ group means equals the pass's total to float32 rounding (tested to 1e-5).
 
 Sky patches (daylight coefficients). A group holding one DomeLight named in
 ``sky_split`` is traced as 146 slots, Tregenza's 145 sky patches and the
-ground below the horizon (:mod:`simulator.study.sky_patches`, names
+ground below the horizon (:mod:`simulator.study.inputs.sky_patches`, names
 ``group/p000`` … ``group/p144``, ``group/ground``): the dome's call sites in
 the kernel pass the direction its light arrives from
 (``light_contribution_dir``) and the light goes to that direction's patch.

@@ -5,12 +5,12 @@ horizon, of 30, 30, 24, 24, 18, 12 and 6 patches, and a polar cap above
 84° (one patch): 145 patches (Tregenza 1987). Patches are numbered band by
 band from the horizon up, and within a band by azimuth, patch j of a band
 of n centred on azimuth 360°·j/n measured from north toward east (the
-study's convention, :mod:`simulator.study.sun`: +Y north, +X east, +Z up in
+study's convention, :mod:`simulator.study.inputs.sun`: +Y north, +X east, +Z up in
 the world frame). Directions below the horizon are patch 145, the
 *ground* slot.
 
 A dome light traced with its sky split into patches (a ``[[group]]`` with
-``sky = "tregenza"``, :mod:`simulator.study.groups`) reads one daylight
+``sky = "tregenza"``, :mod:`simulator.study.trace.groups`) reads one daylight
 coefficient c_p per patch: the sensor's reading with only patch p of the
 dome lit at the dome's authored radiance L_dome. Light transport is linear,
 so a sky of patch luminances L_p reads

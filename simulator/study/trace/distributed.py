@@ -17,7 +17,7 @@ from dataclasses import replace
 from typing import Callable, Iterator
 
 from simulator.errors import UserError
-from simulator.study.chunks import ChunkSpec, compute_chunk
+from simulator.study.trace.chunks import ChunkSpec, compute_chunk
 
 __all__ = ["choose_mode", "run_chunks"]
 

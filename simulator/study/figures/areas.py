@@ -12,7 +12,7 @@ Notes
 Maintained illuminance: Ē_m = MF·Ē and E_min,m = MF·E_min (the maintenance
 factor ``maintenance_factor``, 1 for a new installation); U0 = E_min/Ē does
 not change with it. Figures and their errors are those of
-:func:`simulator.study.objectives.zone_figures` on MF × the readings.
+:func:`simulator.study.figures.objectives.zone_figures` on MF × the readings.
 
 Task areas (``kind = "task"``, ``task = [x0, y0, x1, y1]``): the points
 inside the rectangle; the *immediate surrounding*, the points outside it
@@ -48,7 +48,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from simulator.errors import UserError
-from simulator.study.objectives import ZoneFigures, compliance, zone_figures
+from simulator.study.figures.objectives import ZoneFigures, compliance, zone_figures
 
 __all__ = ["AreaRow", "surround_required_lx", "area_members", "area_rows", "SURROUND_U0", "BACKGROUND_U0", "AREA_COLUMNS"]
 

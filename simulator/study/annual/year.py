@@ -2,16 +2,16 @@
 
 Method
 ------
-1. The climate file (:mod:`simulator.study.climate`) gives each hour's sky
+1. The climate file (:mod:`simulator.study.annual.climate`) gives each hour's sky
    and sun; the sky is the Perez all-weather model over Tregenza's patches,
    scaled to the hour's diffuse horizontal illuminance
-   (:mod:`simulator.study.perez`), the dome below the horizon a uniform
+   (:mod:`simulator.study.annual.perez`), the dome below the horizon a uniform
    ground of luminance ρ_g (E_dh + E_n sin h)/π.
 2. The split sky group (``[annual] sky_group``) is traced twice per sensor
    block, once for its *direct* light and once for its *interreflected*
    light (``component = "direct"`` / ``"indirect"``, independent seeds), each
    as 146 daylight coefficients with their covariance
-   (:mod:`simulator.study.groups`). The lamp groups that ``[[control]]``
+   (:mod:`simulator.study.trace.groups`). The lamp groups that ``[[control]]``
    dims are traced once more, as ordinary light groups.
 3. Each hour's reading is
 
@@ -20,7 +20,7 @@ Method
 
    with d_h the hour's patch levels L_p/L_dome, E^sun_h the sun's direct
    light computed exactly by a shadow ray per sensor and hour
-   (:mod:`simulator.study.sunlight`), and q_h the sun's light put into the
+   (:mod:`simulator.study.annual.sunlight`), and q_h the sun's light put into the
    ``sun_patches`` patches nearest the sun (weights 1/(1.002 − cos ψ), ψ the
    angle to a patch's centre, as Radiance's gendaymtx spreads it), at
    luminance w_p E_n / Ω_p: the sun's *interreflected* light comes from
@@ -34,8 +34,8 @@ Method
    (:func:`sun_bins`); its exact direct light at that position is taken off
    the bin's coefficient t_b, and hour h adds (E_n,h / E_n,authored)·t_b of
    its bin (variance scaled alike).
-4. Annual metrics (:mod:`simulator.study.metrics`) and control
-   (:mod:`simulator.study.control`) are functions of the hourly series. An
+4. Annual metrics (:mod:`simulator.study.annual.metrics`) and control
+   (:mod:`simulator.study.annual.control`) are functions of the hourly series. An
    hour's readings of one sensor share its coefficients, so errors are
    correlated across hours: each figure's standard error is its standard
    deviation over ``replicates`` whole years recombined from coefficient
@@ -53,8 +53,8 @@ from pathlib import Path
 import numpy as np
 
 from simulator.errors import UserError
-from simulator.study import sky_patches as SP
-from simulator.study.groups import derive_seed
+from simulator.study.inputs import sky_patches as SP
+from simulator.study.trace.groups import derive_seed
 
 __all__ = ["AnnualResult", "run_annual", "sun_patch_levels", "Coefficients", "hourly", "replicate_years"]
 
@@ -208,7 +208,7 @@ class AnnualResult:
 
 
 def _coefficients(specs_dir, specs_ind, specs_lamp, results, n_s: int, lamp_names: list) -> Coefficients:
-    from simulator.study.chunks import readings_of
+    from simulator.study.trace.chunks import readings_of
 
     g = SP.N_PATCHES + 1
     out = Coefficients(np.zeros((n_s, g)), np.zeros((n_s, g, g)), np.zeros((n_s, g)), np.zeros((n_s, g, g)),
@@ -240,20 +240,20 @@ def _control_pools(study, cands, names_index: dict, label: str) -> list[list[int
 
 def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None = None, workers: int | None = None,
                scheduler: str | None = None) -> AnnualResult:  # fmt: skip
-    """Run (or resume) the ``[annual]`` part of a study; outputs are written by :mod:`simulator.study.annual_outputs`."""
+    """Run (or resume) the ``[annual]`` part of a study; outputs are written by :mod:`simulator.study.annual.outputs`."""
     from simulator.scene.model import LightKind, SensorKind
     from simulator.scene.usd import load_stage
-    from simulator.study import control as CT
-    from simulator.study.candidates import build_candidates
-    from simulator.study.chunks import ChunkStore, make_chunks
-    from simulator.study.climate import daylight_mask, hour_of_day, read_weather
-    from simulator.study.distributed import choose_mode, run_chunks
-    from simulator.study.metrics import zone_metrics
-    from simulator.study.perez import hour_skies
+    from simulator.study.annual import control as CT
+    from simulator.study.inputs.candidates import build_candidates
+    from simulator.study.trace.chunks import ChunkStore, make_chunks
+    from simulator.study.annual.climate import daylight_mask, hour_of_day, read_weather
+    from simulator.study.trace.distributed import choose_mode, run_chunks
+    from simulator.study.annual.metrics import zone_metrics
+    from simulator.study.annual.perez import hour_skies
     from simulator.study.runner import _sim_dict, zone_members
-    from simulator.study.scenarios import TraceGroup, check_split_groups, resolve_groups
-    from simulator.study.sun import sun_direction
-    from simulator.study.sunlight import direct_sun
+    from simulator.study.inputs.scenarios import TraceGroup, check_split_groups, resolve_groups
+    from simulator.study.inputs.sun import sun_direction
+    from simulator.study.annual.sunlight import direct_sun
 
     a = study.annual
     label = str(path)
@@ -278,7 +278,9 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
         raise UserError(f"{label}: annual.sky_group: the DomeLight {dome.name} has no luminance to scale")
     names_index = {c.sensor.name: k for k, c in enumerate(cands)}
     pools = _control_pools(study, cands, names_index, label)
-    notes = list(weather.notes)
+    notes = list(weather.notes) + [f"warning: {w}" for w in weather.warnings]
+    for w in weather.warnings:  # the weather's doubts, on the console as they are found and in the record
+        log(f"warning: {w}")
     if any(l.kind == LightKind.DISTANT for l in base.lights):
         notes.append("the stage's DistantLight is not used: each hour's sun comes from the weather file")
 
@@ -314,8 +316,8 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
             tgs.append((TraceGroup(f"annual;sun;{az:.6f},{el:.6f}", {}, (az, el), [], [a.sun_group]), sim))
         notes.append(f"interreflected sun traced at {len(bin_suns)} sun positions (bins of {a.sun_bin_deg:g} deg)")
     block = study.compute.sensor_block
-    if block == "auto":  # from the study's size alone, as the scenario runner does (simulator.study.blocks)
-        from simulator.study.blocks import auto_block
+    if block == "auto":  # from the study's size alone, as the scenario runner does (simulator.study.trace.blocks)
+        from simulator.study.trace.blocks import auto_block
 
         block = auto_block(len(sensors), study.simulation.samples)
     spec_lists = [make_chunks([tg], sensors, groups, stage, study.light_units, sd, study.seed, block, sky_split)
@@ -334,7 +336,7 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
     t_traced = time.perf_counter()
     co = _coefficients(spec_lists[0], spec_lists[1], spec_lists[2] if lamp_groups else [], results, len(sensors), lamp_groups)
     if sun_bin is not None:
-        from simulator.study.chunks import readings_of
+        from simulator.study.trace.chunks import readings_of
 
         co.sun = np.zeros((len(sensors), len(spec_lists) - n_fixed))
         co.sun_var = np.zeros_like(co.sun)

@@ -72,7 +72,7 @@ def _overview(res) -> Section:
 
 
 def _zones(res) -> Section:
-    from simulator.study.scores import target_keys
+    from simulator.study.figures.scores import target_keys
 
     unit = "lx" if res.study.light_units == "photometric" else "W/m²"
     keys = target_keys(res)
@@ -106,7 +106,7 @@ def _areas(res) -> Section | None:
 def _gain_curve_png(res) -> bytes:
     from matplotlib.figure import Figure
 
-    from simulator.study.scores import placement_unit, score_value
+    from simulator.study.figures.scores import placement_unit, score_value
 
     pl = res.placement
     fig = Figure(figsize=(5.0, 3.0), dpi=80)
@@ -128,7 +128,7 @@ def _gain_curve_png(res) -> bytes:
 
 
 def _placement(res) -> Section | None:
-    from simulator.study.scores import score_text
+    from simulator.study.figures.scores import score_text
 
     pl = res.placement
     if pl is None:
@@ -146,7 +146,7 @@ def _placement(res) -> Section | None:
 
 
 def _heat_maps(res) -> Section:
-    from simulator.study.heat_maps import heat_map_png
+    from simulator.study.report.heat_maps import heat_map_png
 
     parts = []
     for z in res.study.zone:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from simulator.study.objectives import TARGET_FIGURES
+from simulator.study.figures.objectives import TARGET_FIGURES
 
 __all__ = ["target_keys", "placement_unit", "score_value", "score_text"]
 

@@ -20,8 +20,8 @@ from pathlib import Path
 import numpy as np
 
 from simulator.io.results import json_default
-from simulator.study.chunks import atomic_write
-from simulator.study.metrics import METRICS
+from simulator.study.trace.chunks import atomic_write
+from simulator.study.annual.metrics import METRICS
 
 __all__ = ["write_annual_outputs", "annual_note", "HOUR_COLUMNS"]
 
@@ -100,7 +100,7 @@ def write_annual_outputs(res, study, out_dir: Path, path: Path | None = None) ->
     if res.controls:
         files[out_dir / "annual_control.csv"] = control_csv(res).encode()
     if path is not None:
-        from simulator.study.annual_report import annual_page
+        from simulator.study.annual.report import annual_page
 
         files[out_dir / "report.html"] = annual_page(res, path).encode()
     files[out_dir / "annual.json"] = (json.dumps(record(res, study), indent=1, default=json_default) + "\n").encode()

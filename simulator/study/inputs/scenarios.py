@@ -4,13 +4,13 @@ A ``[[scenario]]`` whose levels hold lists expands into the product of
 them (``name[window_row=0.5,corridor_row=1]``). Scenarios that share the
 same variant selections and sun direction form a *trace group*: one scene
 whose light groups are traced once and recombined for each scenario of the
-group (:mod:`simulator.study.groups`). A sun at or below the horizon
+group (:mod:`simulator.study.trace.groups`). A sun at or below the horizon
 contributes nothing: its level is set to 0 in that scenario (and said so).
 
 A scenario's ``sky`` on a group split into sky patches (``[[group]] sky =
 "tregenza"``) sets each patch's level ``group/pNNN`` to the group's level
 times L_p / L_dome, the patch's mean luminance in the CIE sky over the
-dome's authored luminance (:func:`simulator.study.sky_patches.sky_weights`),
+dome's authored luminance (:func:`simulator.study.inputs.sky_patches.sky_weights`),
 and the ground slot ``group/ground`` to the group's level times ``ground``.
 The sky's sun only shapes the sky's luminance: it does not enter the trace
 key, so skies of any sun position share one trace of the patches (a
@@ -28,9 +28,9 @@ import numpy as np
 
 from simulator.errors import UserError
 from simulator.scene.model import LightKind, Scene
-from simulator.study.candidates import match_prims
+from simulator.study.inputs.candidates import match_prims
 from simulator.study.schema import GroupSpec, ScenarioSpec, SkySpec, SunSpec
-from simulator.study.sun import solar_position, sun_direction
+from simulator.study.inputs.sun import solar_position, sun_direction
 
 __all__ = ["Scenario", "TraceGroup", "expand_scenarios", "resolve_groups", "trace_groups_of", "sky_levels", "check_split_groups"]
 
@@ -90,8 +90,8 @@ def sky_levels(sky: SkySpec, sun: tuple[float, float] | None, scene: Scene | Non
     The sky's sun: ``sky.sun``, else the scenario's ``sun``, else the stage's
     DistantLight. Raises UserError for a sky that needs a sun and has none, or
     a split group that is not one DomeLight."""
-    from simulator.study import sky_patches as SP
-    from simulator.study.groups import patch_names
+    from simulator.study.inputs import sky_patches as SP
+    from simulator.study.trace.groups import patch_names
 
     if sky.sun is not None:
         sun = _sun_of(sky.sun, f"{key}.sun")

@@ -12,7 +12,7 @@ sDA300/50% (spatial daylight autonomy, LM-83-12 §2.2)
 ASE1000/250h (annual sunlight exposure, LM-83-12 §2.3)
     The fraction of sensors that see more than 1000 lx of *direct sun only*
     (no interreflection, no sky) for more than 250 occupied hours; the direct
-    sun is exact (:mod:`simulator.study.sunlight`), so ASE has no variance.
+    sun is exact (:mod:`simulator.study.annual.sunlight`), so ASE has no variance.
 UDI (useful daylight illuminance, Nabil and Mardaljevic 2005)
     Per sensor, the fractions of occupied hours below 100 lx (fell short),
     from 100 to 2000 lx (useful) and above 2000 lx (exceeded); zone means.
@@ -34,7 +34,7 @@ Uncertainty: the hourly readings of one sensor share their daylight
 coefficients, so their errors are correlated across hours; each metric's
 standard error is the standard deviation of the metric over replicates of the
 whole year recombined from coefficients redrawn from their covariance
-(:func:`simulator.study.annual.replicate_years`).
+(:func:`simulator.study.annual.year.replicate_years`).
 
 References
 ----------
