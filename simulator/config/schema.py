@@ -55,6 +55,7 @@ flags are checked by these same models (:mod:`simulator.config.overrides`).
 
     [output]
     csv = "out.csv"       # default: "<config stem>.csv" beside the config
+    csv_columns = "kinds" # the columns of the run's sensor kinds; "full": all 32
     responses = ["par", "melanopic_edi"]  # optional: extra response columns
 
     [spectra]             # optional: the lights' spectral shape
@@ -78,7 +79,7 @@ from simulator.config.fields import (
     nonblank, tables,
 )  # fmt: skip
 from simulator.config.records import (
-    COMPONENTS, DEVICES, LIGHT_UNITS, METHODS, SEED_LIMIT, GridConfig, SimulationConfig,
+    COMPONENTS, CSV_COLUMN_SETS, DEVICES, LIGHT_UNITS, METHODS, SEED_LIMIT, GridConfig, SimulationConfig,
 )  # fmt: skip
 from simulator.config.sensors import SensorEntry
 from simulator.config.table import Table
@@ -191,6 +192,11 @@ class Output(Table):
         None,
         description="the CSV written, relative to the config (default: <config stem>.csv beside it); the run "
         "record, maps and probes go beside it",
+    )
+    csv_columns: Annotated[Text, choice(CSV_COLUMN_SETS, "CSV column set")] = Field(
+        "kinds",
+        description='the CSV\'s columns: "kinds", those of the run\'s sensor kinds (no cell empty in a run of one '
+        'kind), or "full", all 32 whatever the kinds (--csv-columns)',
     )
     #: response names / custom tables, checked by :mod:`simulator.spectra.config`
     responses: Any = Field(

@@ -612,8 +612,16 @@ def _message(err: dict) -> str:
     return " ".join(msg.split())
 
 
-def load_study(path: str | os.PathLike) -> tuple[Study, Path]:
+def load_study(path: str | os.PathLike, overrides: dict | None = None) -> tuple[Study, Path]:
     """Read and validate a study file.
+
+    Parameters
+    ----------
+    overrides : dict, optional
+        Command-line values, ``{(table, ..., key): (flag, value)}`` (e.g.
+        ``{("simulation", "samples"): ("--samples", 64)}``), written into the
+        file's tables before validation, so a flag obeys its key's own rule;
+        a message about one names the flag.
 
     Returns
     -------
@@ -639,6 +647,15 @@ def load_study(path: str | os.PathLike) -> tuple[Study, Path]:
         raise UserError(f"{label}: cannot read study file: {exc.strerror or exc}") from None
     except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
         raise UserError(f"{label}: invalid TOML: {exc}") from None
+    flags = {}
+    for loc, (flag, value) in (overrides or {}).items():
+        table = raw
+        for part in loc[:-1]:
+            table = table.setdefault(part, {})
+            if not isinstance(table, dict):
+                raise UserError(f"{label}: {_key_path(loc[:-1])}: must be a table")
+        table[loc[-1]] = value
+        flags[tuple(loc)] = flag
     try:
         study = Study.model_validate(raw)
     except ValidationError as exc:
@@ -646,7 +663,7 @@ def load_study(path: str | os.PathLike) -> tuple[Study, Path]:
         ctx_err = (err.get("ctx") or {}).get("error")
         if isinstance(ctx_err, _RefError):
             raise UserError(f"{label}: {ctx_err.key}: {ctx_err}") from None
-        key = _key_path(err["loc"])
+        key = flags.get(tuple(err["loc"])) or _key_path(err["loc"])
         if err["type"] == "extra_forbidden" and err["loc"]:
             hint = _allowed_hint(err["loc"])
             raise UserError(f"{label}: {key}: unknown key{hint}") from None
