@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from simulator.scene.model import Light, LightKind, LightShaping
-from simulator.study.report.luminaires import THETA_STEPS, emitted, luminaire_schedule
+from simulator.study.report.luminaires import emitted, luminaire_schedule
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -38,12 +38,11 @@ def test_a_shaped_point_light_emits_its_cone_and_an_unshaped_shaping_keeps_a_pan
     I, cone = 1000.0, math.radians(30.0)
     lm = emitted(_light(LightKind.POINT, (1.0, I), shaping=LightShaping(cone_angle_rad=cone)))[1]
     truth = 2 * math.pi * (1 - math.cos(cone)) * I
-    # the cone's edge falls inside one θ step of π/THETA_STEPS: at most that step's band of the sphere
-    band = 2 * math.pi * math.sin(cone) * (math.pi / THETA_STEPS) * I
-    assert abs(lm - truth) <= band
-    # a rect light with the default shaping (cone 90°, no focus) is still Lambertian: π·A·L, to the midpoint rule's error
+    # a hard cone's edge is a break of the Gauss-Legendre segments: exact to rounding
+    assert lm == pytest.approx(truth, rel=1e-9)
+    # a rect light with the default shaping (cone 90°, no focus) is still Lambertian: π·A·L
     lm = emitted(_light(LightKind.RECT, (1.0, 4000.0), width=0.6, height=0.6, shaping=LightShaping()))[1]
-    assert lm == pytest.approx(math.pi * 0.36 * 4000.0, rel=1e-5)
+    assert lm == pytest.approx(math.pi * 0.36 * 4000.0, rel=1e-9)
 
 
 def test_the_office_schedule_lists_its_six_panels():

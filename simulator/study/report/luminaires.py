@@ -1,25 +1,10 @@
 """The luminaire schedule of a report: each kind of luminaire on the stage, how many, and the lumens each emits.
 
-A light's emitted flux follows from what the stage reader resolved
-(:class:`simulator.scene.model.Light`: emission in W and lm units, size,
-shaping), with ``f(θ, φ)`` the shaping factor toward a direction
-(:meth:`simulator.scene.model.LightShaping.factor`, 1 when unshaped) and
-θ measured from the light's −Z axis:
-
-- point light of intensity I: Φ = I ∫ f dω (4π·I unshaped);
-- sphere light of radius r and radiance L: every direction sees a disc of
-  πr², so Φ = πr²·L ∫ f dω (4π²r²·L unshaped);
-- rect (w × h) and disk (πr²) lights, one-sided along −Z, area A:
-  Φ = A·L ∫_{θ<90°} f cosθ dω (π·A·L unshaped, a Lambertian emitter);
-- cylinder light (radius r, length ℓ, emitting from its side):
-  Φ = π·(2πrℓ)·L (a convex Lambertian surface);
-- emissive geometry (a mesh light): Σ π·A·L over its emitting triangles,
-  doubled for a two-sided one.
-
-The integrals over a shaping factor are midpoint sums on a (θ, φ) grid of
-:data:`THETA_STEPS` × :data:`PHI_STEPS` cells; a cone's edge falls inside one
-θ step, so a sharp cone is within ~1/THETA_STEPS of its closed form (a
-cone of half-angle θc: 2π(1 − cos θc)·I for a point light).
+A light's lumens are those it emits as traced,
+:func:`simulator.scene.light_flux.emitted_flux` (the run record's figure:
+emission × the kind's G, its shaping integrated exactly against the
+interpolant the kernels trace). Emissive geometry (a mesh light) emits
+Σ π·A·L over its emitting triangles, doubled for a two-sided one.
 
 Dome and distant lights are the sky and the sun, not luminaires: they are
 listed apart (:func:`daylight_sources`).
@@ -33,46 +18,20 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from simulator.scene.light_flux import emitted_flux
 from simulator.scene.model import LightKind
 
-__all__ = ["emitted", "LuminaireRow", "luminaire_schedule", "daylight_sources", "THETA_STEPS", "PHI_STEPS"]
-
-THETA_STEPS = 720
-PHI_STEPS = 144
+__all__ = ["emitted", "LuminaireRow", "luminaire_schedule", "daylight_sources"]
 
 #: what a designer calls each kind
 KIND_NAMES = {LightKind.POINT: "point light", LightKind.SPHERE: "sphere light", LightKind.RECT: "rectangular panel",
               LightKind.DISK: "disc", LightKind.CYLINDER: "linear (cylinder) lamp", LightKind.EMISSIVE: "luminous surface"}  # fmt: skip
 
 
-def _shaped_integral(shaping, cosine: bool, hemisphere: bool) -> float:
-    """∫ f dω (or ∫ f cosθ dω) over the sphere (or the −Z hemisphere), steradians."""
-    th_hi = math.pi / 2 if hemisphere else math.pi
-    dth, dph = th_hi / THETA_STEPS, 2 * math.pi / PHI_STEPS
-    th = (np.arange(THETA_STEPS) + 0.5) * dth
-    ph = (np.arange(PHI_STEPS) + 0.5) * dph
-    T, P = np.meshgrid(th, ph, indexing="ij")
-    f = np.ones_like(T) if shaping is None else np.asarray(shaping.factor(T, P), float)
-    w = np.sin(T) * (np.cos(T) if cosine else 1.0)
-    return float(np.sum(f * w) * dth * dph)
-
-
 def emitted(light) -> tuple[float, float]:
-    """``(W, lm)`` a light emits (see the module's Notes); NaN for the sky and the sun."""
-    k = light.kind
-    sh = light.shaping
-    if k == LightKind.POINT:
-        g = 4 * math.pi if sh is None else _shaped_integral(sh, False, False)
-    elif k == LightKind.SPHERE:
-        g = math.pi * light.radius**2 * (4 * math.pi if sh is None else _shaped_integral(sh, False, False))
-    elif k in (LightKind.RECT, LightKind.DISK):
-        area = light.width * light.height if k == LightKind.RECT else math.pi * light.radius**2
-        g = area * (math.pi if sh is None else _shaped_integral(sh, True, True))
-    elif k == LightKind.CYLINDER:
-        g = math.pi * 2 * math.pi * light.radius * light.length
-    else:
-        return float("nan"), float("nan")
-    return g * float(light.emission[0]), g * float(light.emission[1])
+    """``(W, lm)`` a light emits as traced; NaN for the sky and the sun (no finite flux)."""
+    flux = emitted_flux(light)
+    return (float("nan"), float("nan")) if flux is None else flux
 
 
 def _mesh_lights(geometry) -> dict[str, tuple[float, float]]:
