@@ -55,8 +55,8 @@ def direct_patch_illuminance_lx() -> tuple[float, float, float]:
     quadrature (16 points per axis: a smooth integrand, error far below 1e-4 relative).
     Every direction from the floor through the window rises, so the ground (which hides
     the dome below the horizon) takes no part.
-    Panel: a one-sided Lambertian square of luminance Φ/(π·A) (3000 lm; normalize: intensity
-    Φ/π over its area), read by Lambert's contour formula at the same quadrature points
+    Panel: a one-sided Lambertian square of luminance Φ/(π·A) (``probesim:flux_lm`` = 3000),
+    read by Lambert's contour formula at the same quadrature points
     (docs/REFERENCES.md §Lambert's polygon formula).
     """
     h = math.radians(SUN_ELEVATION_DEG)
