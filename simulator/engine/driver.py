@@ -278,7 +278,7 @@ class Engine:
             on = self._pieces_on and self.emitter_pieces is not False
             self._device_scene = DeviceScene(self.scene, self.sensors, self.device, pieces=on)
             # compile (or load from the kernel cache) the stage's trace variant before worker threads launch
-            KM.load([KM.trace_module(self._device_scene.rec.surfaces != 0)], self.device)
+            KM.load([KM.trace_module(K.trace_for(self._device_scene.rec.surfaces).surfaces)], self.device)
             with wp.ScopedDevice(self.device):  # placeholder for TraceParams.group_state while tallies are off
                 self._no_groups = wp.zeros(1, dtype=wp.vec2d)
             if self._light_mask is not None:
@@ -1209,7 +1209,7 @@ class Engine:
         if method not in METHOD_FLAGS:
             raise UserError(f"method {method!r} cannot read probes (use light, bsdf, mis, path, guided or auto)")
         wp = warp()
-        KM.load([KM.trace_module(self._dev.rec.surfaces != 0)], self.device)  # the probe kernel is in its variant's module
+        KM.load([KM.trace_module(self.trace_variant.surfaces)], self.device)  # the probe kernel is in its variant's module
         params = self.trace_params(method, seed, max_depth, component)
         stream_ids = list(range(len(probes))) if stream_ids is None else list(stream_ids)
         frame = P.probe_frame(self.scene.up_axis)

@@ -92,7 +92,7 @@ def trace_module(surfaces: bool) -> KernelModule:
     from simulator.kernels import estimators as K
     from simulator.kernels import probe as KP  # noqa: F401  (defines the variant's probe kernel in its module)
 
-    label = "trace, surface model" if surfaces else "trace, all-matte stages"
+    label = "trace (surface model)" if surfaces else "trace (all-matte stages)"
     return KernelModule(label, wp.get_module(K.trace_module(surfaces)))
 
 
