@@ -25,7 +25,7 @@ import numpy as np
 from simulator.engine import probes as P
 from simulator.engine import kernel_modules as KM
 from simulator.engine.adaptive import PILOT_MIN_BATCH, StoppingRule, first_batch_from_pilot, run_batches
-from simulator.engine.device import DeviceScene, cuda_available, resolve_device, warp, warp_version
+from simulator.engine.device import DeviceScene, cuda_available, models_surfaces, resolve_device, warp, warp_version
 from simulator.engine.fanout import fan_out
 from simulator.engine.methods import (
     COMPONENTS, GUIDED_METHODS, LIGHT_PICK_MODES, METHOD_FLAGS, light_pick_rule, rr_pilot_choice, rr_threshold_rule,
@@ -88,11 +88,12 @@ class Progress:
     eta_s: float | None
 
 
-def load_kernels(device: str = "cpu") -> None:
-    """Compile (or load from the kernel cache) the modules a trace may launch on ``device`` now (both
-    trace variants and the closed forms, :mod:`.kernel_modules`): a one-time cost of the process
-    that timings of a trace can then leave out."""
-    KM.load([KM.trace_module(False), KM.trace_module(True), KM.analytic_module()], device)
+def load_kernels(device: str = "cpu", scene: Scene | None = None) -> None:
+    """Compile (or load from the kernel cache) the modules a trace may launch on ``device`` now
+    (:mod:`.kernel_modules`): the trace variant of ``scene``'s stage, or both without one, and the
+    closed forms. A one-time cost of the process that timings of a trace can then leave out."""
+    variants = [False, True] if scene is None else [models_surfaces(scene.geometry)]
+    KM.load([KM.trace_module(v) for v in variants] + [KM.analytic_module()], device)
 
 
 @dataclass
