@@ -137,3 +137,16 @@ def test_a_matte_stage_loads_only_its_variant():
     from simulator.kernels import probe as KP
 
     assert KP.probe_kernel_for(0).module is matte and KP.probe_kernel_for(1).module is full
+
+
+def test_a_warp_that_names_its_files_otherwise_still_loads_silently(fresh_cache, reports, monkeypatch):
+    """The cache test reads Warp's private file naming: where that is missing, the module is taken as
+    cached (nothing said, never a false "compiling" on every run) and still compiles and runs."""
+    def renamed(*args):
+        raise AttributeError("'Module' object has no attribute '_get_meta_name'")
+
+    monkeypatch.setattr(KM, "_cache_files", renamed)
+    assert KM.is_cached(TINY)
+    assert KM.load([TINY]) == () and reports == []
+    assert _twice.module.execs  # loaded (compiled by Warp, unannounced)
+    np.testing.assert_array_equal(_launch_twice(), [2.0, 6.0])

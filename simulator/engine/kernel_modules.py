@@ -122,9 +122,12 @@ def _device(device: str):
 
 
 def _variant(module, dev) -> int:
-    """The block size a launch on ``dev`` loads the module with (Warp's default: 1 on the CPU)."""
-    from warp._src.context import _resolve_launch_block_dim
-
+    """The block size a launch on ``dev`` loads the module with (Warp's default: 1 on the CPU, the
+    module's on CUDA), as Warp resolves it where its private helper is there."""
+    try:
+        from warp._src.context import _resolve_launch_block_dim
+    except ImportError:  # another Warp layout: its documented defaults
+        return 1 if dev.is_cpu else int(module.options["block_dim"])
     return _resolve_launch_block_dim(dev, None)
 
 
@@ -140,9 +143,18 @@ def is_cached(km: KernelModule, device: str = "cpu") -> bool:
         return True
     if not wp.config.cache_kernels:
         return False
+    try:
+        files = _cache_files(m, dev, dim)
+    except (AttributeError, TypeError):  # a Warp whose Module names its files otherwise: say nothing, Warp still compiles
+        return True
+    return all(os.path.exists(f) for f in files)
+
+
+def _cache_files(m, dev, dim: int) -> tuple[str, str]:
+    """The object file and the metadata ``Module.load`` looks for in the kernel cache (Warp 1.19's naming)."""
+    wp = warp()
     folder = os.path.join(wp.config.kernel_cache_dir, m.get_module_identifier(dim))
-    binary = m._get_compile_output_name(dev, block_dim=dim)
-    return os.path.exists(os.path.join(folder, binary)) and os.path.exists(os.path.join(folder, m._get_meta_name(dim)))
+    return os.path.join(folder, m._get_compile_output_name(dev, block_dim=dim)), os.path.join(folder, m._get_meta_name(dim))
 
 
 #: seconds between reports while a compile runs and no module has finished (a ticking display)
