@@ -93,6 +93,7 @@ def test_warmup_exits_0_and_leaves_the_cache_serving_a_later_load(fresh_cache, m
     """``probesim warmup`` on its cheap form (the tiny module standing for every module): exit 0, the
     compile said on stderr, and a later load (a run's) finds every module cached and compiles nothing."""
     monkeypatch.setattr(KM, "every_module", lambda: [TINY])
+    monkeypatch.setattr(KM, "_reporter", None)  # main() sets the process's reporter: restored after the test
     assert main(["warmup", "--device", "cpu"]) == 0
     cap = capsys.readouterr()
     assert "compiling kernels (first run only, cached afterwards): 1 module on cpu" in cap.err
@@ -109,11 +110,12 @@ def test_warmup_exits_0_and_leaves_the_cache_serving_a_later_load(fresh_cache, m
     np.testing.assert_array_equal(_launch_twice(), [2.0, 6.0])
 
 
-def test_warmup_cuda_without_a_device_is_a_one_line_error(capsys):
+def test_warmup_cuda_without_a_device_is_a_one_line_error(capsys, monkeypatch):
     from simulator.engine.device import cuda_available
 
     if cuda_available():
         pytest.skip("a CUDA device is present")
+    monkeypatch.setattr(KM, "_reporter", None)
     assert main(["warmup", "--device", "cuda"]) == 2
     err = capsys.readouterr().err.strip()
     assert err.startswith("probesim: error: --device cuda: no CUDA device") and "\n" not in err
