@@ -183,7 +183,6 @@ def load(modules: list[KernelModule], device: str = "cpu", workers: int | None =
     t0 = time.perf_counter()
     state = {"done": 0}
     lock = threading.Lock()
-
     stop = threading.Event()
 
     def report(finished: str | None, tick: bool = False) -> None:
