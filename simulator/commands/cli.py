@@ -92,6 +92,9 @@ def _parser() -> argparse.ArgumentParser:
     ex.add_argument("name", nargs="?", metavar="NAME", help="bundled example (see --list)")
     ex.add_argument("dir", nargs="?", metavar="DIR", help="folder to copy it into (created if missing)")
     ex.add_argument("--list", action="store_true", help="list the bundled examples")
+    w = sub.add_parser("warmup", help="compile every kernel now (first run only; runs then load them from the cache)")
+    w.add_argument("--device", choices=("cpu", "cuda", "auto"),
+                   help="compile for this device only (default: the CPU, and CUDA when there is a device)")
     sd = sub.add_parser("study", help="placement study: candidates x scenarios, zone figures, the best K sensors (resumable, dask)")
     sd.add_argument("study", metavar="STUDY.toml", help="study file (.toml)")
     sd.add_argument("-o", "--out", metavar="DIR", help="output and chunk folder (default: the study's [output] dir)")
@@ -269,11 +272,29 @@ def _cmd_run(args) -> int:
     return 0
 
 
+#: the commands that may compile kernels: they say so on stderr while they do (simulator.commands.compiling)
+TRACING = ("run", "bench", "verify", "chart", "stability", "study", "warmup")
+
+
+def _say_compiles() -> None:
+    """Report every kernel compile of this process on stderr."""
+    from simulator.commands.compiling import CompileDisplay
+    from simulator.engine.kernel_modules import report_compiles_to
+
+    report_compiles_to(CompileDisplay())
+
+
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     # a short command given on the process's own command line (argv None): start it lean
     lean = argv is None and args.command in ("run", "plan") and lean_start()
     try:
+        if args.command in TRACING:
+            _say_compiles()
+        if args.command == "warmup":
+            from simulator.commands.warmup import main_warmup
+
+            return main_warmup(args.device)
         if args.command == "run":
             return _cmd_run(args)
         if args.command == "compare":

@@ -19,7 +19,7 @@ from simulator.scene.emitters import emitter_pieces, split_emitters
 from simulator.scene.model import Scene, Sensor
 from simulator.scene.patches import patch_layout, source_rows
 
-__all__ = ["warp", "warp_version", "cuda_available", "resolve_device", "DeviceScene"]
+__all__ = ["warp", "warp_version", "cuda_available", "resolve_device", "models_surfaces", "DeviceScene"]
 
 _wp = None
 
@@ -61,6 +61,10 @@ def warp():
 
         wp.config.quiet = True
         wp.config.log_level = 30  # warnings and errors only: no banner, no per-module load lines
+        # Warp builds a precompiled header per process and compiling thread (a temporary folder, never
+        # reused), which pays only when one thread compiles several modules; here each compiles one
+        # (kernel_modules.load): building it cost 2.7 s of CPU more than parsing the headers (a tiny module)
+        wp.config.use_precompiled_headers = False
         with _stderr_silenced():
             wp.init()
         _wp = wp
@@ -98,6 +102,12 @@ def resolve_device(requested: str) -> str:
     if requested == "cpu":
         return "cpu"
     raise UserError(f"--device: unknown device {requested!r} (expected cpu, cuda or auto)")
+
+
+def models_surfaces(geometry) -> bool:
+    """Whether a stage's geometry needs the surface model (panes, cut-outs, glossy faces): its
+    ``SceneRec.surfaces``, which picks the trace variant (``kernels.estimators.trace_for``)."""
+    return bool(geometry.has_surfaces and geometry.n_triangles > 0)
 
 
 class DeviceScene:
@@ -234,7 +244,7 @@ class DeviceScene:
         read, so its trace is today's matte trace."""
         from simulator.kernels.surface_rec import SurfRec
 
-        modelled = g.has_surfaces and g.n_triangles > 0
+        modelled = models_surfaces(g)
         rec.surfaces = 1 if modelled else 0
         rows = []
         for s in (g.surfaces if modelled else []):

@@ -23,8 +23,9 @@ from typing import Callable
 import numpy as np
 
 from simulator.engine import probes as P
+from simulator.engine import kernel_modules as KM
 from simulator.engine.adaptive import PILOT_MIN_BATCH, StoppingRule, first_batch_from_pilot, run_batches
-from simulator.engine.device import DeviceScene, cuda_available, resolve_device, warp, warp_version
+from simulator.engine.device import DeviceScene, cuda_available, models_surfaces, resolve_device, warp, warp_version
 from simulator.engine.fanout import fan_out
 from simulator.engine.methods import (
     COMPONENTS, GUIDED_METHODS, LIGHT_PICK_MODES, METHOD_FLAGS, light_pick_rule, rr_pilot_choice, rr_threshold_rule,
@@ -87,13 +88,12 @@ class Progress:
     eta_s: float | None
 
 
-def load_kernels(device: str = "cpu") -> None:
-    """Compile (or load from the kernel cache) the estimator module on ``device`` now: a one-time
-    cost of the process that timings of a trace can then leave out."""
-    wp = warp()
-    from simulator.kernels import estimators as K
-
-    wp.load_module(K, device=resolve_device(device))
+def load_kernels(device: str = "cpu", scene: Scene | None = None) -> None:
+    """Compile (or load from the kernel cache) the modules a trace may launch on ``device`` now
+    (:mod:`.kernel_modules`): the trace variant of ``scene``'s stage, or both without one, and the
+    closed forms. A one-time cost of the process that timings of a trace can then leave out."""
+    variants = [False, True] if scene is None else [models_surfaces(scene.geometry)]
+    KM.load([KM.trace_module(v) for v in variants] + [KM.analytic_module()], device)
 
 
 @dataclass
@@ -276,10 +276,10 @@ class Engine:
             from simulator.kernels import estimators as K
 
             self._kernels = K
-            # compile (or load from the kernel cache) before worker threads launch
-            wp.load_module(K, device=self.device)
             on = self._pieces_on and self.emitter_pieces is not False
             self._device_scene = DeviceScene(self.scene, self.sensors, self.device, pieces=on)
+            # compile (or load from the kernel cache) the stage's trace variant before worker threads launch
+            KM.load([KM.trace_module(K.trace_for(self._device_scene.rec.surfaces).surfaces)], self.device)
             with wp.ScopedDevice(self.device):  # placeholder for TraceParams.group_state while tallies are off
                 self._no_groups = wp.zeros(1, dtype=wp.vec2d)
             if self._light_mask is not None:
@@ -299,7 +299,7 @@ class Engine:
 
     @property
     def _KP(self):
-        """The probe kernels, imported on first use (a run without probes skips them)."""
+        """The probe kernels (imported with the trace modules, whose probe kernel each holds: :mod:`.kernel_modules`)."""
         self._upload()
         from simulator.kernels import probe as KP
 
@@ -797,6 +797,7 @@ class Engine:
             ids = wp.array(sensor_ids.astype(np.int32), dtype=wp.int32)
             out = wp.empty(len(sensor_ids), dtype=wp.vec2d)
             if len(sensor_ids):
+                KM.load([KM.analytic_module()], self.device)
                 wp.launch(self._K.analytic_kernel, dim=len(sensor_ids), inputs=[self._dev.rec, self._dev.sensors, ids], outputs=[out])
                 mean[sensor_ids] = out.numpy().astype(np.float64)
         wall = time.perf_counter() - t0
@@ -1209,7 +1210,7 @@ class Engine:
         if method not in METHOD_FLAGS:
             raise UserError(f"method {method!r} cannot read probes (use light, bsdf, mis, path, guided or auto)")
         wp = warp()
-        wp.load_module(self._KP, device=self.device)
+        KM.load([KM.trace_module(self.trace_variant.surfaces)], self.device)  # the probe kernel is in its variant's module
         params = self.trace_params(method, seed, max_depth, component)
         stream_ids = list(range(len(probes))) if stream_ids is None else list(stream_ids)
         frame = P.probe_frame(self.scene.up_axis)

@@ -1,8 +1,8 @@
 """Monte Carlo estimators of sensor readings: the Warp kernel entry point.
 
 One kernel, :func:`estimate_kernel`, serves every sensor kind and every
-sampling method; :class:`TraceParams` switches the strategies, so the module
-compiles once and the kernel cache serves every run. It comes in two
+sampling method; :class:`TraceParams` switches the strategies, so its
+module compiles once and the kernel cache serves every run. It comes in two
 variants built from the same source (:func:`make_trace`): with the surface
 model (panes, cut-outs, glossy faces) and without it, for all-matte stages.
 
@@ -93,6 +93,26 @@ from .spectral_surfaces import (
 
 # Forward-only: no gradients are taken, and skipping the adjoint halves compile time.
 wp.set_module_options({"enable_backward": False})
+
+
+#: clang's optimisation level for the trace modules. Measured on the all-matte module (CPU seconds of
+#: the compile, a shared 2-core machine): O2 (Warp's CPU default) 64.8 s, O1 49.3 s; the trace's CPU
+#: time the same within the noise (furnace, 4,096 samples: 5.7-6.5 s both) and every reading the same
+#: bytes (quickstart, furnace, office_bench CSVs and maps): without fast-math clang keeps each float
+#: operation as written at any level, FMAs are formed per expression by the front end, and Warp's
+#: inlining thresholds (``wp.config.cpu_compiler_flags``) apply at O1 too (docs/DESIGN.md §Kernel modules).
+TRACE_OPTIMIZATION_LEVEL = 1
+
+
+def trace_module(surfaces: bool) -> str:
+    """The Warp module of one trace variant: its :func:`estimate_kernel` and its probe kernel
+    (:func:`.probe.make_probe_kernel`), compiled together so that the path functions they share
+    are compiled once, and apart from the other variant so that a run compiles only its stage's
+    (docs/DESIGN.md §Kernel modules). The ``@wp.func``s stay in this module; a kernel's module
+    holds the code of every function it calls."""
+    name = f"{__name__}.trace_{'surfaces' if surfaces else 'matte'}"
+    wp.set_module_options({"enable_backward": False, "optimization_level": TRACE_OPTIMIZATION_LEVEL}, module=name)
+    return name
 
 # A path whose every bounce survives Russian roulette with probability ρ < 1
 # ends with probability one; this cap only guards against ρ rounding to 1.
@@ -447,9 +467,11 @@ def make_trace(surfaces: bool) -> Trace:
     engine launches the matte variant where ``SceneRec.surfaces`` is 0
     (:func:`trace_for`).
 
-    Both variants are built at import (:data:`TRACES`, in a fixed order),
-    in this module, so the module's hash does not change once it is loaded
-    and Warp's kernel cache serves both (docs/DESIGN.md §Trace variants)."""
+    Both variants are built at import (:data:`TRACES`, in a fixed order);
+    each variant's kernels live in a Warp module of their own
+    (:func:`trace_module`), so a run compiles and loads only its stage's
+    and Warp's kernel cache serves each (docs/DESIGN.md §Trace variants,
+    §Kernel modules)."""
     guided_step = make_guided_step(surfaces)
 
     @wp.func
@@ -1070,7 +1092,7 @@ def make_trace(surfaces: bool) -> Trace:
         """One sample of sensor ``s``'s reading (dispatch over ``SENSOR_KERNELS``)."""
         return sample_chain(scene, s, params, rng_in)
 
-    @wp.kernel
+    @wp.kernel(module=trace_module(surfaces))
     def estimate_kernel(
         scene: SceneRec,
         sensors: wp.array(dtype=SensorRec),

@@ -54,7 +54,7 @@ import warp as wp
 
 from simulator.scene.model import LightKind, SensorKind
 
-from .estimators import SensorRec, TraceParams, hero_nodes, make_trace, shaping_factor, spectral_row, unoccluded
+from .estimators import SensorRec, TraceParams, hero_nodes, make_trace, shaping_factor, spectral_row, trace_module, unoccluded
 from .lights import SceneRec
 from .spectral_surfaces import transmittance_lanes
 from .surfaces import transmittance_along
@@ -288,7 +288,7 @@ def make_probe_kernel(surfaces: bool):
             return wp.vec4(l.ez[0], l.ez[1], l.ez[2], vis)  # E⊥ is the emission itself (× what panes pass)
         return wp.vec4(0.0)
 
-    @wp.kernel
+    @wp.kernel(module=trace_module(surfaces))  # beside the variant's estimate_kernel: their functions compile once
     def probe_kernel(
         scene: SceneRec,
         probe: ProbeRec,

@@ -96,7 +96,7 @@ def _reference_run(study: Study, scene, candidates, groups, scenario, seed: int,
     sc = replace(group_scene(scene, []), lights=lights)
     sensors = [c.sensor for c in candidates]
     sim = SimulationConfig(**{**_sim_dict(study), "seed": seed})
-    load_kernels(sim.device)  # left out of the time, as the chunks leave it out
+    load_kernels(sim.device, sc)  # left out of the time, as the chunks leave it out
     t0, c0 = time.perf_counter(), time.process_time()
     eng = Engine(sc, sensors, device=sim.device, threads=threads)
     res = run_plan(eng, make_plan(sc, sensors, sim.method, sim.component), sim)

@@ -245,7 +245,7 @@ def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str
     from simulator.engine.driver import Engine, LightGroups, load_kernels
     from simulator.plan.planner import make_plan
 
-    load_kernels(sim.device)  # once per process: not part of the pass's time
+    load_kernels(sim.device, scene)  # once per process: not part of the pass's time
     from simulator.scene.model import LightKind
 
     names: list[str] = []
