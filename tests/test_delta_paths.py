@@ -272,3 +272,27 @@ def test_mirror_clearcoat_is_a_mirror_plane(tmp_path):
     assert any("clearcoat 1 (mirror)" in l for l in row.lobes()), row.lobes()
     planes, face_plane, _ = mirror_planes(g.points, g.triangles, g.surface_id, g.surfaces)
     assert len(planes) == 1 and np.all(face_plane == 0)
+
+
+def test_mirror_under_a_lamp_and_a_globe_reads_both_images(tmp_path):
+    """A point lamp and a sphere light (a globe) side by side over the mirror, both behind the
+    down-facing sensor: it reads the lamp's image F·I/D² (the image source, exact) plus the globe's,
+    πL·F·sin²α about its own axis, off the axis by 0.5 m: E = L·F·∫ cosθ dω over the globe's image cone,
+    here by the cap formula E = πL sin²α · cos β for a cone wholly above the horizon (β its axis's angle
+    from the normal). Bound: 4σ at a fixed seed, and 1e-4."""
+    lamp = LIGHTS["point"].replace('"L"', '"Lamp"')
+    globe = LIGHTS["sphere"].replace('"L"', '"Globe"').replace("(0, 0, 2.0)", "(0.5, 0, 2.0)")
+    scene = load_stage(stage(tmp_path, _surface_body("mirror") + lamp + globe))
+    by_name = {l.name.rsplit("/", 1)[-1]: l for l in scene.lights}
+    assert by_name["Globe"].position[0] == pytest.approx(0.5)
+    sensor = Sensor(name="s", kind=SensorKind.IRRADIANCE, position=np.array([0.0, 0.0, Z_SENSOR]),
+                    normal=np.array([0.0, 0.0, -1.0]))
+    e_lamp = RHO_MIRROR * by_name["Lamp"].emission[1] / D ** 2
+    axis = np.array([0.5, 0.0, -D])  # sensor to the globe's image centre
+    dist = float(np.linalg.norm(axis))
+    cos_b = D / dist
+    e_globe = RHO_MIRROR * math.pi * by_name["Globe"].emission[1] * (R_LIGHT / dist) ** 2 * cos_b
+    res = Engine(scene, [sensor]).run("path", samples=SAMPLES["irradiance"], seed=11)
+    v, se = float(res.mean[0, 1]), float(res.stderr[0, 1])
+    truth = e_lamp + e_globe
+    assert abs(v - truth) <= 4.0 * se + 1e-4 * truth, (v, se, truth, e_lamp)
