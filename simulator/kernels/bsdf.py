@@ -31,7 +31,13 @@ sample (its pdf mass is the difference of the integral from 1).
 Roughness at or below :data:`DELTA_ROUGHNESS` is a *delta* lobe: a mirror
 with reflectance F(cosθ_o), which no sampled direction can meet and no
 light sample can find; the kernels flag it like a delta light
-(:func:`is_delta_specular`) and handle it exactly.
+(:func:`has_mirror`) and handle it exactly. That holds for either specular
+lobe: a clearcoat at or below the limit (its fallback, 0.01, is) is a
+mirror of reflectance c·F_c(cosθ_o) over the base, added to the base's own
+mirror where that is one too (both reflect about the same normal,
+:func:`mirror_reflectance`). In float32 a GGX lobe that narrow cannot be
+evaluated (cos²θ_h's rounding, 6·10⁻⁸, is above α² = 10⁻⁸), so it could not
+be kept as a lobe: it read as reflecting nothing.
 """
 
 import warp as wp
@@ -144,6 +150,18 @@ def is_delta_specular(b: Bsdf) -> bool:
 
 
 @wp.func
+def is_delta_coat(b: Bsdf) -> bool:
+    """The clearcoat lobe is there and a mirror (clearcoatRoughness ≤ DELTA_ROUGHNESS)."""
+    return b.coat > 0.0 and b.coat_alpha <= DELTA_ROUGHNESS * DELTA_ROUGHNESS
+
+
+@wp.func
+def has_mirror(b: Bsdf) -> bool:
+    """Either specular lobe is a mirror: the BSDF has a delta part (:func:`mirror_reflectance`)."""
+    return is_delta_specular(b) or is_delta_coat(b)
+
+
+@wp.func
 def coat_factor(b: Bsdf, c: float) -> float:
     """What the clearcoat passes to the base at cosine c: 1 − c_w·F_c(c)."""
     return 1.0 - b.coat * schlick(COAT_F0, 1.0, c)
@@ -157,8 +175,8 @@ def diffuse_f(b: Bsdf, ci: float, co: float) -> float:
 
 @wp.func
 def bsdf_f(b: Bsdf, wi: wp.vec3, wo: wp.vec3) -> float:
-    """The whole BSDF's value (the glossy part only for a delta specular lobe), sr⁻¹; 0 below either
-    horizon."""
+    """The whole BSDF's value less its delta lobes (a mirror base or coat, :func:`mirror_reflectance`),
+    sr⁻¹; 0 below either horizon."""
     ci = wi[2]
     co = wo[2]
     if ci <= 0.0 or co <= 0.0:
@@ -168,20 +186,24 @@ def bsdf_f(b: Bsdf, wi: wp.vec3, wo: wp.vec3) -> float:
         base += microfacet_f(wi, wo, b.alpha, b.f0, b.f90)
     f = base
     if b.coat > 0.0:
-        f = coat_factor(b, ci) * coat_factor(b, co) * base + b.coat * microfacet_f(wi, wo, b.coat_alpha, COAT_F0, 1.0)
+        f = coat_factor(b, ci) * coat_factor(b, co) * base
+        if not is_delta_coat(b):
+            f += b.coat * microfacet_f(wi, wo, b.coat_alpha, COAT_F0, 1.0)
     return f
 
 
 @wp.func
 def lobe_weights(b: Bsdf, co: float) -> wp.vec3:
     """Probabilities (coat, specular, diffuse) of the lobe that draws wi, from their Fresnel-weighted
-    shares at wo; the specular share is 0 for a delta lobe (the kernels sample the mirror on their own)."""
+    shares at wo; the share of a delta lobe is 0 (the kernels sample the mirror on their own)."""
     wc = b.coat * schlick(COAT_F0, 1.0, co)
     fs = schlick(b.f0, b.f90, co)
     ws = (1.0 - wc) * fs
     if is_delta_specular(b):
         ws = 0.0
     wd = (1.0 - wc) * (1.0 - fs) * b.diffuse
+    if is_delta_coat(b):
+        wc = 0.0
     tot = wc + ws + wd
     if tot <= 0.0:
         return wp.vec3(0.0, 0.0, 1.0)
@@ -219,10 +241,15 @@ def bsdf_sample(b: Bsdf, wo: wp.vec3, u: wp.vec3) -> wp.vec3:
 
 @wp.func
 def mirror_reflectance(b: Bsdf, co: float) -> float:
-    """A delta specular lobe's reflectance at cosine co: F(co), dimmed by the clearcoat on the way in
-    and out, plus nothing else (the diffuse and coat lobes are sampled by :func:`bsdf_sample`)."""
-    fs = schlick(b.f0, b.f90, co)
-    if b.coat > 0.0:
-        k = coat_factor(b, co)
-        fs = fs * k * k
+    """The delta lobes' reflectance at cosine co: a mirror base's F(co), dimmed by the clearcoat on the
+    way in and out, plus a mirror coat's c·F_c(co); 0 without a delta lobe (the other lobes are sampled
+    by :func:`bsdf_sample`)."""
+    fs = float(0.0)
+    if is_delta_specular(b):
+        fs = schlick(b.f0, b.f90, co)
+        if b.coat > 0.0:
+            k = coat_factor(b, co)
+            fs = fs * k * k
+    if is_delta_coat(b):
+        fs += b.coat * schlick(COAT_F0, 1.0, co)
     return fs

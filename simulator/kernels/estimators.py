@@ -81,7 +81,7 @@ from .shadows import hit_light_before, shadow_ray_clear, shadow_ray_pass
 from .surfaces import ABSORB, MIRROR, mirror, transmittance_along
 from .bsdf import Bsdf, bsdf_f, bsdf_pdf, bsdf_sample, lobe_weights, mirror_reflectance
 from .glossy import face_bsdf, is_glossy, mirror_share
-from .mirrors import image_source
+from .mirrors import has_image, image_source, is_cone_light
 from .glints import glint_pdf, glint_sample, glint_share
 from .surface_rec import GlintRec
 from .shaping import shaping_factor
@@ -527,6 +527,7 @@ def make_trace(surfaces: bool) -> Trace:
         wo_g = wo_in
         g_face = int(-1)  # the glossy vertex's triangle
         g_lanes = int(0)  # 1: its BSDF is evaluated per hero lane (spectral mode, a coloured row)
+        img_prev = int(0)  # 1: the vertex before p ran the image-source connection (kernels.mirrors)
         if (scene.surfaces != 0 and is_glossy(scene, face_in)) if wp.static(surfaces) else False:
             gl = 1
             bs = face_bsdf(scene, face_in)
@@ -627,15 +628,22 @@ def make_trace(surfaces: bool) -> Trace:
                         tally_pick(scene, params, li, p, n, depth, weight, got, ls.tri, w)
                         if params.tally_pick == 2 and depth > 0:
                             tally_patch_pick(scene, li, cur_face, p, n, weight, got)
-            # -- delta lights seen in flat mirrors: their image sources (kernels.mirrors); light reflected
-            #    on the way, so indirect (counted at a sensor's vertex even without its direct light)
+            # -- delta lights and the sun seen in flat mirrors: their image sources (kernels.mirrors); light
+            #    reflected on the way, so indirect (counted at a sensor's vertex even without its direct
+            #    light). A path from here off a mirror face of the table straight to the sun leaves the sun
+            #    out (img_prev at the next vertex): this connection counts it
+            img_here = int(0)
             if params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes > 0:
+                img_here = 1
                 for li in range(scene.n_lights):
-                    if not is_delta(scene.lights[li]):
+                    if not has_image(scene.lights[li]):
                         continue
                     for k in range(scene.n_mirror_planes):
                         count_shadow_ray(scene, params)
-                        im = image_source(scene, li, k, p, n, o)
+                        u_im = wp.vec2(0.0, 0.0)
+                        if is_cone_light(scene.lights[li]):  # drawn for the sun only: others keep their stream
+                            u_im = wp.vec2(wp.randf(rng), wp.randf(rng))
+                        im = image_source(scene, li, k, p, n, o, u_im)
                         v = im.value
                         tint_m = tint
                         if gl != 0:
@@ -645,12 +653,16 @@ def make_trace(surfaces: bool) -> Trace:
                                 f4 = bsdf_lanes(scene, g_face, params.hero, to_local(im.wi, n), wo_l)
                                 tint_m = wp.cw_mul(tint_m, lane_ratio(f4, f_grey))
                         if params.spectral != 0 and (v[0] > 0.0 or v[1] > 0.0):  # the mirror's and the panes' lanes
-                            if coloured_row(scene, im.face)[0] != 0:
+                            if im.pane == 0 and coloured_row(scene, im.face)[0] != 0:
                                 tint_m = wp.cw_mul(tint_m, lane_ratio(mirror_lanes(scene, im.face, params.hero, im.cos_m),
                                                                       im.refl))
                             if scene.spectral_panes != 0:
                                 vis4 = transmittance_lanes(scene, params.hero, im.m_off, im.to_l, im.dist_l, -1)
                                 tint_m = wp.cw_mul(tint_m, lane_ratio(vis4, im.vis))
+                                if im.vis_in < 1.0:  # the panes before the mirror, per lane
+                                    vin4 = transmittance_lanes(scene, params.hero, o, im.wi,
+                                                               im.t_m - offset_length(scene, o + im.t_m * im.wi), -1)
+                                    tint_m = wp.cw_mul(tint_m, lane_ratio(vin4, im.vis_in))
                         if v[0] > 0.0 or v[1] > 0.0:
                             total += light_contribution_dir(scene, params, li, weight * v, tint_m, im.wi)
             if params.bsdf == 0:
@@ -738,6 +750,7 @@ def make_trace(surfaces: bool) -> Trace:
                     n = g.n
                     cur_face = g.face
                     prev_row = row
+                    img_prev = img_here
                     depth += 1
                     continue
             # -- a cosine-weighted direction: E ≈ π·L(ω)
@@ -846,8 +859,17 @@ def make_trace(surfaces: bool) -> Trace:
                                                 tint_l)
             w_dir = w_dir * w_pass  # what the walk stops at, and all past it
             if face < 0:
+                # the mirror part of a face of the mirror table (or a pane's reflection there), reached from a
+                # vertex that ran the image source: the sun along it was counted there (kernels.mirrors), not
+                # again here
+                img_skip = bool(False)
+                if ((mirror_now != 0 or delta != 0) and img_prev != 0 and cur_face >= 0) if wp.static(surfaces) else False:
+                    img_skip = scene.face_mirror[cur_face] >= 0
                 for li in range(scene.n_lights):
                     le = escaped_radiance(scene.lights[li], wi)
+                    if img_skip:
+                        if is_cone_light(scene.lights[li]):
+                            le = wp.vec2(0.0, 0.0)
                     if (le[0] > 0.0 or le[1] > 0.0) and count:
                         w = float(1.0)
                         if weigh:
@@ -882,6 +904,7 @@ def make_trace(surfaces: bool) -> Trace:
                 spec_d = mirror(wi, ng)
                 delta = 1
                 cur_face = face
+                img_prev = wp.where(mirror_now == 0, img_here, 0)  # a pane's reflection is the image source's too
                 depth += 1
                 continue
             delta = 0
@@ -933,6 +956,7 @@ def make_trace(surfaces: bool) -> Trace:
             n = wp.where(cos_view > 0.0, ng, -ng)
             cur_face = face
             prev_row = row
+            img_prev = wp.where(mirror_now == 0, img_here, 0)  # past a mirror part: two reflections, not connected
             depth += 1
         return total
 

@@ -13,7 +13,7 @@ vertex (no light sample can find it).
 
 import warp as wp
 
-from .bsdf import COAT_F0, Bsdf, is_delta_specular, mirror_reflectance, preview_bsdf, schlick
+from .bsdf import COAT_F0, Bsdf, has_mirror, is_delta_coat, is_delta_specular, mirror_reflectance, preview_bsdf, schlick
 from .lights import SceneRec
 
 
@@ -40,11 +40,16 @@ def face_bsdf(scene: SceneRec, face: int) -> Bsdf:
 def mirror_share(b: Bsdf, co: float) -> float:
     """Probability of following the mirror (delta) part at a vertex viewed at cosine co: its reflectance
     over itself plus the other lobes' Fresnel-weighted shares (0 without a delta lobe, 1 for a pure
-    mirror)."""
-    if not is_delta_specular(b):
+    mirror). The delta part is a mirror base, a mirror clearcoat or both (:func:`.bsdf.mirror_reflectance`)."""
+    if not has_mirror(b):
         return 0.0
     wm = mirror_reflectance(b, co)
-    rest = b.coat * schlick(COAT_F0, 1.0, co) + (1.0 - schlick(b.f0, b.f90, co)) * b.diffuse
+    fs = schlick(b.f0, b.f90, co)
+    rest = (1.0 - fs) * b.diffuse
+    if not is_delta_coat(b):
+        rest += b.coat * schlick(COAT_F0, 1.0, co)
+    if not is_delta_specular(b):
+        rest += fs
     if wm + rest <= 0.0:
         return 0.0
     return wm / (wm + rest)

@@ -197,9 +197,20 @@ class Surface:
         return 0.2126 * r + 0.7152 * g + 0.0722 * b
 
     @property
-    def delta(self) -> bool:
-        """The specular lobe is a mirror (roughness ≤ 0.01, :data:`simulator.kernels.bsdf.DELTA_ROUGHNESS`)."""
+    def delta_base(self) -> bool:
+        """The base specular lobe is a mirror (roughness ≤ 0.01, :data:`simulator.kernels.bsdf.DELTA_ROUGHNESS`)."""
         return self.glossy and self.roughness <= 0.01
+
+    @property
+    def delta_coat(self) -> bool:
+        """The clearcoat is there and a mirror (clearcoatRoughness ≤ 0.01; its fallback is)."""
+        return self.glossy and self.clearcoat > 0.0 and self.clearcoat_roughness <= 0.01
+
+    @property
+    def delta(self) -> bool:
+        """The BSDF has a mirror part, its base or its clearcoat (:func:`simulator.kernels.bsdf.has_mirror`):
+        its faces belong to the image-source connection's mirror planes."""
+        return self.delta_base or self.delta_coat
 
     def lobes(self) -> tuple[str, ...]:
         """What this surface needs beyond a matte face, in words, for the plan."""
@@ -218,10 +229,11 @@ class Surface:
                 what += f" from {self.transmittance_spectrum[0]}"
             out.append(f"dielectric slab (ior {self.ior:g}, {what})")
         if self.glossy:
-            spec = ("mirror (delta)" if self.delta else f"GGX specular (roughness {self.roughness:g})")
+            spec = ("mirror (delta)" if self.delta_base else f"GGX specular (roughness {self.roughness:g})")
             wf = (f"specular workflow F0 {self.specular_grey:.3g}" if self.use_specular_workflow
                   else f"metallic {self.metallic:g}, ior {self.ior:g}")
-            out.append(f"diffuse + {spec}, {wf}" + (f" + clearcoat {self.clearcoat:g}" if self.clearcoat > 0 else ""))
+            out.append(f"diffuse + {spec}, {wf}" + (f" + clearcoat {self.clearcoat:g}" + (" (mirror)" if self.delta_coat else "")
+                                                         if self.clearcoat > 0 else ""))
         return tuple(out)
 
 
@@ -341,14 +353,16 @@ def _flat_planes(points: np.ndarray, triangles: np.ndarray, faces: np.ndarray, k
 
 def mirror_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarray | None,
                   surfaces: list) -> tuple[np.ndarray, np.ndarray, int]:
-    """The flat planes of the mirror faces (a delta specular lobe): ``(planes (K, 4) as (n, d) with
+    """The flat planes of the mirror faces (a delta specular lobe) and of panes: ``(planes (K, 4) as (n, d) with
     n·x = d, per triangle its plane or -1, planes left out beyond MAX_MIRROR_PLANES)``, grouped by
     :func:`_flat_planes`, the largest (by area) kept first.
     """
     face_plane = np.full(len(triangles), -1, np.int32)
     if surface_id is None:
         return np.zeros((0, 4)), face_plane, 0
-    delta = np.array([getattr(s, "delta", False) for s in surfaces] + [False], bool)[surface_id]
+    # a pane's slab reflects as a mirror does (its R(θ)): its faces are image-source planes too
+    delta = np.array([getattr(s, "delta", False) or getattr(s, "pane", False) for s in surfaces] + [False],
+                     bool)[surface_id]
     faces = np.flatnonzero(delta)
     if not len(faces):
         return np.zeros((0, 4)), face_plane, 0
@@ -370,7 +384,7 @@ def glint_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarr
     """
     if surface_id is None:
         return np.zeros((0, 4)), np.zeros(0)
-    rows = [k for k, s in enumerate(surfaces) if s.glossy and not s.delta and not s.pane]
+    rows = [k for k, s in enumerate(surfaces) if s.glossy and not s.delta_base and not s.pane]
     if not rows:
         return np.zeros((0, 4)), np.zeros(0)
     faces = np.flatnonzero(np.isin(surface_id, rows))

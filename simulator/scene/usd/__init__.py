@@ -210,6 +210,7 @@ from pxr import Usd, UsdGeom, UsdLux
 from simulator.errors import UserError
 from simulator.scene.model import Geometry, Light, LightKind, Scene, Sensor
 from simulator.scene.surfaces import mirror_limits
+from simulator.scene.usd.facets import faceted_note, faceted_reflectors
 from simulator.scene.usd.collections import light_collections
 from simulator.scene.usd.context import _Context
 
@@ -366,6 +367,9 @@ def load_stage(
         for note in mirror_limits(geometry.points, geometry.triangles, geometry.surface_id, geometry.surfaces,
                                   [l.name for l in lights if l.is_delta]):
             ctx.warn(f"{os.path.basename(str(path))}: {note}")
+        faceted = faceted_reflectors(stage, geometry)
+        if faceted:
+            ctx.warn(f"{os.path.basename(str(path))}: {faceted_note(faceted)}")
         ctx.pxr_messages += pxr_said.collect()
         _finish_warnings(ctx)
     return Scene(
