@@ -117,10 +117,13 @@ def sensor_warnings(scene: Scene, sensors: list[Sensor]) -> list[str]:
     if odd.any():
         out.append(f"{_names(sensors, np.flatnonzero(odd))} outside the stage's bounds ({box_text(box)}) by up to "
                    f"{float(gap[odd].max()):.3g} m: nothing of the stage is around it (it reads the open sky, the sun or 0)")
+    rest = [i for i, u in enumerate(units) if u is None]  # a wrong unit is the one thing said of a sensor
+    sensors, pos = [sensors[i] for i in rest], pos[rest]
     origin = _nudged(sensors, pos)
-    if top.shells is not None:
+    if top.shells is not None and sensors:
         out += _shell_lines(scene, top, sensors, origin)
-    out += _facing_lines(scene, top, sensors, pos, origin, box)
+    if sensors:
+        out += _facing_lines(scene, top, sensors, pos, origin, box)
     return out
 
 
@@ -196,27 +199,33 @@ def _grown(box):
     return lo - m, hi + m
 
 
-def _unit_of(p: np.ndarray, box) -> tuple[str, float] | None:
-    """The first unit of :data:`UNIT_GUESSES` in which ``p`` (far outside the box) would lie inside it."""
+def _unit_of(p: np.ndarray, box) -> tuple[str, float, tuple[str, ...]] | None:
+    """The unit of :data:`UNIT_GUESSES` in which ``p`` (far outside the box) would lie inside it, nearest the
+    box's centre (in units of its sides) where several would, and the others that would too."""
     lo, hi = _grown(box)
+    centre, half = (box[0] + box[1]) / 2, np.maximum((box[1] - box[0]) / 2, 1e-9)
+    fits = []
     for name, f in UNIT_GUESSES:
         q = p * f
         if np.all(q >= lo) and np.all(q <= hi):
-            return name, f
-    return None
+            fits.append((float(np.max(np.abs(q - centre) / half)), name, f))
+    if not fits:
+        return None
+    fits.sort()
+    return fits[0][1], fits[0][2], tuple(n for _, n, _ in fits[1:])
 
 
 def _unit_lines(sensors, pos, box, units) -> list[str]:
-    by_unit: dict[str, list[int]] = {}
+    by_unit: dict[tuple, list[int]] = {}
     for i, u in enumerate(units):
         if u is not None:
-            by_unit.setdefault(u[0], []).append(i)
+            by_unit.setdefault(u, []).append(i)
     out = []
-    for name, ids in by_unit.items():
-        f = dict(UNIT_GUESSES)[name]
+    for (name, f, also), ids in by_unit.items():
         p = pos[ids[0]]
+        alt = f" (or {' or '.join(also)})" if also else ""
         out.append(f"{_names(sensors, ids)} far outside the stage ({box_text(box)}): a position such as {_vec(p)} looks like "
-                   f"{name} ({_vec(p * f)} m lies inside the stage); positions in a config are metres")
+                   f"{name}{alt} ({_vec(p * f)} m lies inside the stage); positions in a config are metres")
     return out
 
 
