@@ -132,7 +132,7 @@ def test_a_sensor_outside_the_stage_and_its_closed_room_is_named(room):
 def test_a_sensor_inside_a_solid_is_named_with_the_prim(room):
     """Inside the slab (z 0.74), and on its top facing down (its rays start a hair inside the slab)."""
     (line,) = sensor_warnings(room, [DESK, sensor("in_slab", (2, 1.5, 0.74)), sensor("down", (2, 1.5, 0.76), (0, 0, -1))])
-    assert "2 sensors ('in_slab', 'down')" in line and "/World/Table" in line and "reads 0" in line
+    assert "2 sensors ('in_slab', 'down')" in line and "/World/Table" in line and "0 is read" in line
 
 
 def test_a_sensor_just_behind_a_face_is_named_with_the_prim(room):

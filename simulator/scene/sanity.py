@@ -11,31 +11,37 @@ same lines), in milliseconds for the bundled stages.
 The checks
 ----------
 Wrong unit
-    A sensor outside the stage's box (geometry and the lights that have a
-    place) whose position divided by 1000, by 100 or times 0.0254 lies
-    inside it: the position looks like millimetres, centimetres or inches
-    where a config's positions are metres (whatever the stage's
-    ``metersPerUnit``; the stage reader scales the stage, not the config).
+    A sensor more than :data:`FAR_REL` stage diagonals outside the stage's
+    box (geometry and the lights that have a place) whose position divided
+    by 1000, by 100 or times 0.0254 lies inside it: the position looks like
+    millimetres, centimetres or inches where a config's positions are metres
+    (whatever the stage's ``metersPerUnit``: the reader scales the stage,
+    not the config). Where several would, the one whose point lies nearest
+    the box's centre is named first. Nothing else is said of that sensor.
 Outside the stage
-    A sensor outside that box: nothing of the stage is around it (it reads
-    the open sky, the sun, or 0). The box is grown by
-    :data:`BOX_MARGIN_REL` of its diagonal, so a sensor on a face of the
-    stage is inside it.
+    A sensor outside that box, grown by :data:`BOX_MARGIN_REL` of its
+    diagonal (a sensor on a face of the stage is inside it): nothing of the
+    stage is around it (it reads the open sky, the sun, or 0). Named when it
+    is far away (:data:`FAR_REL`), or when the box is a room (no side under
+    :data:`ROOMY_REL` of the longest) that some other sensor stands in; an
+    occluder floating over its sensors (the verify stages) is not a room.
 Outside every lit room
     The stage's closed shells (connected components of the welded
-    triangles whose every edge is shared by an even number of them, as
-    :mod:`simulator.scene.usd.enclosures` finds them) that are opaque (every
-    face matte: no pane, cut-out or modelled surface) and hold a light
-    inside them (the parity rule on the light's centre). A sensor outside
-    every one of them sees none of their lights' light.
+    triangles whose every edge is shared by an even number of them,
+    :func:`simulator.scene.usd.enclosures.closed_shells`) that are opaque
+    (every face matte: no pane, cut-out or modelled surface) and hold a
+    light inside them (the parity rule on the light's centre). A sensor
+    outside every one of them sees none of their lights' light.
 Inside a dark solid
     An opaque closed shell with no light and no emitting face inside it
     passes no light in: a sensor inside it (a table slab, a wall) reads
     exactly 0.
 Facing the surface it sits on
     An irradiance or patch sensor whose ray along its normal meets a face
-    within :func:`mount_distance_m`: its normal points into the surface it
-    is mounted on, or it sits just behind a face; the face is named.
+    within :func:`mount_distance_m` (2 mm) sits just behind that face, or
+    points into the surface it is mounted on; one lying on an open face (in
+    no closed shell) whose front looks away from its normal sits on the
+    face's back. The face's prim is named.
 
 Points on the sensor's own side are tested at ``p + delta * n`` (``delta``
 a hair, :data:`_NUDGE_REL`), where a sensor's first rays start: a sensor
@@ -52,7 +58,8 @@ import numpy as np
 
 from simulator.scene.model import LightKind, Scene, Sensor, SensorKind
 
-__all__ = ["sensor_warnings", "stage_box", "outside_gap", "box_text", "mount_distance_m", "FAR_REL", "BOX_MARGIN_REL", "MAX_TRIANGLES", "MAX_PAIRS", "UNIT_GUESSES"]
+__all__ = ["sensor_warnings", "stage_box", "outside_gap", "box_text", "mount_distance_m", "FAR_REL", "BOX_MARGIN_REL", "ROOMY_REL",
+           "MOUNT_M", "MAX_TRIANGLES", "MAX_PAIRS", "UNIT_GUESSES"]
 
 #: the stage's box is grown by this fraction of its diagonal before a sensor counts as outside it
 BOX_MARGIN_REL = 0.01
@@ -116,7 +123,8 @@ def sensor_warnings(scene: Scene, sensors: list[Sensor]) -> list[str]:
     odd = (gap > 0) & np.array([u is None for u in units]) & (far | roomy)
     if odd.any():
         out.append(f"{_names(sensors, np.flatnonzero(odd))} outside the stage's bounds ({box_text(box)}) by up to "
-                   f"{float(gap[odd].max()):.3g} m: nothing of the stage is around it (it reads the open sky, the sun or 0)")
+                   f"{float(gap[odd].max()):.3g} m: nothing of the stage is around {_them(np.flatnonzero(odd))} "
+                   "(the open sky, the sun or 0 is read)")
     rest = [i for i, u in enumerate(units) if u is None]  # a wrong unit is the one thing said of a sensor
     sensors, pos = [sensors[i] for i in rest], pos[rest]
     origin = _nudged(sensors, pos)
@@ -264,13 +272,13 @@ def _shell_lines(scene: Scene, top: _Topology, sensors, origin) -> list[str]:
     out = []
     for k, ids in dark.items():
         out.append(f"{_names(sensors, ids)} inside the closed surface of {_prims_of(g, top.shells[k])}, which holds no light: "
-                   "no light reaches it (it reads 0)")
+                   f"no light reaches {_them(ids)} (0 is read)")
     away = np.flatnonzero(~in_lit)
     if lit_shells and len(away):
         held = sorted({n for _, names in lit_shells for n in names})
         rooms = ", ".join(_prims_of(g, top.shells[k]) for k, _ in lit_shells[:2]) + (" ..." if len(lit_shells) > 2 else "")
         out.append(f"{_names(sensors, away)} outside every closed room that holds a light ({rooms}, holding "
-                   f"{', '.join(held[:_NAMED])}{' ...' if len(held) > _NAMED else ''}): none of their light reaches it")
+                   f"{', '.join(held[:_NAMED])}{' ...' if len(held) > _NAMED else ''}): none of their light reaches {_them(away)}")
     return out
 
 
@@ -447,5 +455,12 @@ def _vec(p) -> str:
 
 
 def box_text(box) -> str:
+    """``x 0..5, y 0..4, z 0..2.8 m`` (a float32 hair off zero is shown as 0)."""
     lo, hi = box
-    return ", ".join(f"{a} {l:.3g}..{h:.3g}" for a, l, h in zip("xyz", lo, hi)) + " m"
+    tiny = 1e-6 * max(1.0, float(np.max(np.abs([lo, hi]))))
+    c = lambda x: 0.0 if abs(x) < tiny else float(x)  # noqa: E731
+    return ", ".join(f"{a} {c(l):.3g}..{c(h):.3g}" for a, l, h in zip("xyz", lo, hi)) + " m"
+
+
+def _them(ids) -> str:
+    return "it" if len(set(ids)) == 1 else "them"
