@@ -1,6 +1,7 @@
 """Cross-check of probesim's annual daylight against Radiance's daylight-coefficient method (two-phase).
 
     python benchmarks/annual_radiance.py [configs/studies/office_annual.toml] [--ab 5] [--ad 4096]
+        [--weather FILE.epw|FILE.csv] [--radiance-reads-epw]
 
 Needs ``pyradiance`` (``pip install pyradiance``: its wheel ships the Radiance
 binaries); it is an optional extra, not a test dependency.
@@ -20,7 +21,16 @@ What it does
 3. For ASE, Radiance's direct sun alone: ``gendaymtx -d`` (the sun only) with
    coefficients of the same points in the stage made black (``-ab 1``: the
    patches seen directly, nothing reflected).
-4. Prints the hourly RMS difference (lux, and relative to probesim's mean
+4. ``--weather`` runs both on another climate file (EPW or TMY3) in place of
+   the study's ``[annual] weather``. With an EPW, ``--radiance-reads-epw``
+   hands the EPW itself to gendaymtx instead of the ``.wea``: Radiance then
+   places each record in time by its own reader (``loadEPW``: an hourly
+   record at hour − 0.5) and derives the illuminances from the irradiances
+   with the Perez (1990) efficacies, so probesim's year is run with
+   ``illuminance = "efficacy"`` to match: an independent check of how the
+   EPW's hours are read (gendaymtx averages the dew point over 3 hours,
+   probesim takes each hour's, a small difference in the efficacies).
+5. Prints the hourly RMS difference (lux, and relative to probesim's mean
    over occupied hours), the mean difference, and each zone's sDA and ASE
    from both.
 
@@ -96,6 +106,25 @@ def _lux(rgb: np.ndarray) -> np.ndarray:
     return 179.0 * (0.265 * rgb[..., 0] + 0.670 * rgb[..., 1] + 0.065 * rgb[..., 2])
 
 
+def with_weather(study, path: Path, weather: str | None, radiance_reads_epw: bool = False):
+    """The study with ``weather`` (made absolute) as its ``[annual] weather``, and the EPW gendaymtx should read
+    itself (None: the ``.wea`` written from probesim's reading). ``radiance_reads_epw`` needs an EPW and sets
+    the study's ``illuminance`` to ``"efficacy"`` (gendaymtx derives illuminances from an EPW's irradiances)."""
+    upd = {}
+    if weather is not None:
+        upd["weather"] = str(Path(weather).resolve())
+    native = None
+    if radiance_reads_epw:
+        w = Path(upd.get("weather", study.annual.weather))
+        w = w if w.is_absolute() else (Path(path).parent / w).resolve()
+        if w.suffix.lower() != ".epw":
+            sys.exit(f"annual_radiance: --radiance-reads-epw needs an EPW weather file, not {w}")
+        native, upd["illuminance"] = w, "efficacy"
+    if upd:
+        study = study.model_copy(update={"annual": study.annual.model_copy(update=upd)})
+    return study, native
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("study", nargs="?", default=str(ROOT / "configs" / "studies" / "office_annual.toml"))
@@ -103,17 +132,21 @@ def main(argv=None) -> int:
     ap.add_argument("--ad", type=int, default=4096)
     ap.add_argument("--lw", type=float, default=1e-4)
     ap.add_argument("--procs", type=int, default=2)
+    ap.add_argument("--weather", help="an EPW (.epw) or TMY3 (.csv) file in place of the study's [annual] weather")
+    ap.add_argument("--radiance-reads-epw", action="store_true",
+                    help="gendaymtx reads the EPW itself (its own hour placement and efficacies; probesim uses illuminance = \"efficacy\")")
     a = ap.parse_args(argv)
     env = _radiance()
 
     from simulator.scene.usd import load_stage
-    from simulator.study.annual import run_annual
-    from simulator.study.candidates import build_candidates
+    from simulator.study.annual.year import run_annual
+    from simulator.study.inputs.candidates import build_candidates
     from simulator.study.runner import zone_members
-    from simulator.study.metrics import zone_metrics
+    from simulator.study.annual.metrics import zone_metrics
     from simulator.study.schema import load_study
 
     study, p = load_study(a.study)
+    study, native_epw = with_weather(study, p, a.weather, a.radiance_reads_epw)
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         t0 = time.process_time()
@@ -134,13 +167,18 @@ def main(argv=None) -> int:
                 subprocess.run(["oconv", "sky.rad", rad], cwd=tmp, env=env, check=True, stdout=fh)
         pts = "".join(f"{c.sensor.position[0]:.6f} {c.sensor.position[1]:.6f} {c.sensor.position[2]:.6f} "
                       f"{c.sensor.normal[0]:.6f} {c.sensor.normal[1]:.6f} {c.sensor.normal[2]:.6f}\n" for c in (cands[i] for i in wp))  # fmt: skip
-        write_wea(res.weather, tmp / "year.wea")
+        tape = "year.wea" if native_epw is None else "year.epw"
+        if native_epw is None:
+            write_wea(res.weather, tmp / tape)
+        else:  # Radiance's own reading of the EPW's hours
+            (tmp / tape).write_bytes(native_epw.read_bytes())
+            print(f"gendaymtx reads {native_epw.name} itself; probesim's year uses illuminance = \"efficacy\"")
         rho = study.annual.ground_reflectance
         t1 = time.perf_counter()
-        sky = subprocess.run(["gendaymtx", "-h", "-m", "1", "-g", str(rho), str(rho), str(rho), "-c", "1", "1", "1", "year.wea"],
+        sky = subprocess.run(["gendaymtx", "-h", "-m", "1", "-g", str(rho), str(rho), str(rho), "-c", "1", "1", "1", tape],
                              cwd=tmp, env=env, check=True, capture_output=True).stdout  # fmt: skip
-        sun = subprocess.run(["gendaymtx", "-h", "-m", "1", "-d", "year.wea"], cwd=tmp, env=env, check=True, capture_output=True).stdout
-        skyonly = subprocess.run(["gendaymtx", "-h", "-m", "1", "-s", "-g", str(rho), str(rho), str(rho), "-c", "1", "1", "1", "year.wea"],
+        sun = subprocess.run(["gendaymtx", "-h", "-m", "1", "-d", tape], cwd=tmp, env=env, check=True, capture_output=True).stdout
+        skyonly = subprocess.run(["gendaymtx", "-h", "-m", "1", "-s", "-g", str(rho), str(rho), str(rho), "-c", "1", "1", "1", tape],
                                  cwd=tmp, env=env, check=True, capture_output=True).stdout  # fmt: skip
         n_h = len(res.weather)
         skym = np.array(sky.split(), np.float64).reshape(146, n_h, 3)

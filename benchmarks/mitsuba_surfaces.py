@@ -86,7 +86,7 @@ def _metal(rough: float, rho: float) -> str:
     return _material("Metal", rho, f"float inputs:roughness = {rough}\n        float inputs:metallic = 1")
 
 
-PANE = _material("Glass", 0.5, f"float inputs:opacity = 0.1\n        float inputs:ior = {IOR}")
+PANE = _material("Glass", 0.5, f"float inputs:opacity = 0\n        float inputs:ior = {IOR}")
 
 
 def fresnel_sp(c: float, n: float) -> tuple[float, float]:

@@ -1,6 +1,6 @@
 """probesim: a radiometric light-probe sensor simulator.
 
-Public API (see the README, "From Python")::
+Public API (see docs/python-api.md)::
 
     import simulator
     cfg = simulator.load_config("configs/quickstart.toml")

@@ -1,7 +1,8 @@
 """Where the bundled stages, textures and configs are.
 
 The project's reference stages (``stages/``, with ``stages/textures/``) and
-their configs (``configs/``, with ``configs/stability/``) live at the top of
+their configs (``configs/``, with ``configs/stability/`` and the study files
+``configs/studies/``) live at the top of
 a source checkout. A built wheel carries a copy of both folders inside the
 package, as ``simulator/_data/stages`` and ``simulator/_data/configs`` (the
 build step is in ``setup.py``), so an installed probesim finds them too.
@@ -18,7 +19,8 @@ from pathlib import Path
 
 from simulator.errors import UserError
 
-__all__ = ["data_root", "configs_dir", "stages_dir", "bundled_configs", "example_names"]
+__all__ = ["data_root", "configs_dir", "stages_dir", "bundled_configs", "example_names", "run_example_names",
+           "study_example_names", "example_config", "STUDIES"]
 
 _PACKAGE = Path(__file__).resolve().parent
 #: the copy a built wheel installs inside the package
@@ -80,6 +82,29 @@ def bundled_configs(names: tuple[str, ...], command: str) -> list[Path]:
     return found
 
 
-def example_names(command: str = "example") -> list[str]:
-    """Names of the bundled top-level configs (``configs/<name>.toml``), sorted."""
+#: the folder of ``configs/`` holding the bundled study files, examples for ``probesim study``
+STUDIES = "studies"
+
+
+def run_example_names(command: str = "example") -> list[str]:
+    """Names of the bundled top-level configs (``configs/<name>.toml``, for ``probesim run``), sorted."""
     return sorted(p.stem for p in configs_dir(command=command).glob("*.toml"))
+
+
+def study_example_names(command: str = "example") -> list[str]:
+    """Names of the bundled study files (``configs/studies/<name>.toml``, for ``probesim study``), sorted."""
+    d = data_root(command) / "configs" / STUDIES
+    return sorted(p.stem for p in d.glob("*.toml")) if d.is_dir() else []
+
+
+def example_names(command: str = "example") -> list[str]:
+    """Every bundled example: the run configs, sorted, then the study files, sorted."""
+    return run_example_names(command) + study_example_names(command)
+
+
+def example_config(name: str, command: str = "example") -> Path | None:
+    """The bundled file of example ``name`` (a run config first, else a study file); None if none."""
+    for path in (configs_dir(command=command) / f"{name}.toml", data_root(command) / "configs" / STUDIES / f"{name}.toml"):
+        if path.is_file():
+            return path
+    return None

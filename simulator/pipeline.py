@@ -20,6 +20,7 @@ from simulator.plan.cache import cached_plan
 from simulator.plan.planner import Plan, make_plan, probe_method
 from simulator.io.results import Reading, probe_readings, readings_from, write_outputs
 from simulator.scene.model import Scene, Sensor, SensorKind
+from simulator.scene.light_flux import lights_record
 from simulator.scene.sanity import sensor_warnings
 
 __all__ = ["RunOutput", "load_scene", "cached_scene", "collect_sensors", "run"]
@@ -396,6 +397,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         **({} if engine.rr_pilot is None else {"roulette": _roulette_record(engine.rr_pilot)}),
         **({} if engine.split_pilot is None else {"split": dict(engine.split_pilot)}),
         **({} if engine.pieces_pilot is None else {"emitter_pieces": dict(engine.pieces_pilot)}),
+        "lights": lights_record(scene.lights),
         "sensors": len(sensors),
         "triangles": scene.geometry.n_triangles,
         "warnings": _scene_warnings(scene, engine) + list(misplaced) + list(res.warnings),
@@ -416,5 +418,6 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
     }
     if not write:
         return RunOutput(rows, None, None, record, scene, interrupted)
-    record_path = write_outputs(cfg.output.csv, rows, record, extra, encoded={"plan": plan.record_json()})
+    record_path = write_outputs(cfg.output.csv, rows, record, extra, encoded={"plan": plan.record_json()},
+                                csv_columns=cfg.output.csv_columns)
     return RunOutput(rows, cfg.output.csv, record_path, record, scene, interrupted)

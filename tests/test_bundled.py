@@ -19,6 +19,7 @@ from simulator.errors import UserError
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIGS = sorted(p.stem for p in (ROOT / "configs").glob("*.toml"))
+STUDIES = sorted(p.stem for p in (ROOT / "configs" / "studies").glob("*.toml"))
 
 
 def test_checkout_data_is_found_from_any_working_directory(tmp_path, monkeypatch):
@@ -31,7 +32,7 @@ def test_checkout_data_is_found_from_any_working_directory(tmp_path, monkeypatch
     assert bundled.configs_dir() == ROOT / "configs"
     assert bundled.configs_dir("stability") == ROOT / "configs" / "stability"
     assert bundled.stages_dir() == ROOT / "stages"
-    assert bundled.example_names() == CONFIGS
+    assert bundled.example_names() == CONFIGS + STUDIES
 
 
 def test_installed_copy_wins_and_missing_data_is_one_line(tmp_path, monkeypatch):
@@ -103,8 +104,30 @@ def test_example_command_runs_from_elsewhere(tmp_path, monkeypatch, capsys):
     capsys.readouterr()
     assert main(["example", "--list"]) == 0
     listed = capsys.readouterr().out.splitlines()
-    assert [line.split()[0] for line in listed] == CONFIGS
+    assert [line.split()[0] for line in listed] == CONFIGS + STUDIES
     assert dict(list_examples())["floor_grid"] == "rect.usda"
+    kinds = {line.split()[0]: line.split(None, 2)[2] for line in listed}
+    assert kinds["point"] == "run"
+    assert (kinds["office_study"], kinds["office_daylight"], kinds["office_annual"]) == (
+        "study: placement", "study: daylight", "study: annual")
+
+
+@pytest.mark.parametrize("name", STUDIES)
+def test_every_study_copies_to_a_study_that_loads(tmp_path, name, capsys):
+    """A bundled study file copies out (``probesim example office_study DIR``) to a study whose stage,
+    weather file and output folder lie inside DIR, and the command says to run it with ``probesim study``."""
+    from simulator.study.schema import load_study
+
+    dest = tmp_path / "ex"
+    assert main(["example", name, str(dest)]) == 0
+    assert f"probesim study {dest / (name + '.toml')}" in capsys.readouterr().out
+    study, path = load_study(dest / f"{name}.toml")
+    assert (path.parent / study.stage).resolve().is_relative_to(dest)
+    assert (path.parent / study.output.dir).resolve().is_relative_to(dest)
+    if study.annual is not None:
+        weather = (path.parent / study.annual.weather).resolve()
+        assert weather.is_file() and weather.is_relative_to(dest)
+        assert weather.read_bytes() == (ROOT / "stages" / "weather" / weather.name).read_bytes()
 
 
 def test_two_examples_sharing_a_stage_go_in_one_folder(tmp_path):

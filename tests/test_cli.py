@@ -97,12 +97,21 @@ def test_same_seed_same_bytes_and_columns(tmp_path, capsys):
     first = list(csv.DictReader(out.open()))
     assert main(["run", str(cfg), "-q", "--seed", "7"]) == 0
     second = list(csv.DictReader(out.open()))
-    assert tuple(first[0].keys()) == COLUMNS
+    # the columns of the kinds present (docs/DESIGN.md §The CSV's columns, per kind): no flux, probe or target_met
+    assert tuple(first[0].keys()) == (
+        "sensor", "kind", "x", "y", "z", "dx", "dy", "dz", "irradiance_W_m2", "irradiance_stderr_W_m2", "illuminance_lx",
+        "illuminance_stderr_lx", "radiance_W_m2_sr", "radiance_stderr_W_m2_sr", "luminance_cd_m2",
+        "luminance_stderr_cd_m2", "samples", "seconds", "method")
     for a, b in zip(first, second):
         a.pop("seconds"), b.pop("seconds")
         assert a == b
     irr, rad = first
-    assert irr["radiance_W_m2_sr"] == "" and irr["flux_W"] == ""  # not 0: does not apply
+    assert irr["radiance_W_m2_sr"] == "" and rad["irradiance_W_m2"] == ""  # not 0: does not apply
+    assert main(["run", str(cfg), "-q", "--seed", "7", "--csv-columns", "full"]) == 0
+    full = list(csv.DictReader(out.open()))
+    assert tuple(full[0].keys()) == COLUMNS and full[0]["flux_W"] == "" and full[0]["target_met"] == ""
+    for a, b in zip(first, full):  # the same cells, by name
+        assert all(b[k] == v for k, v in a.items() if k != "seconds")
     assert rad["irradiance_W_m2"] == "" and float(rad["luminance_cd_m2"]) == pytest.approx(1000.0)
     assert sorted(p.name for p in out.parent.iterdir()) == ["run.csv", "run.run.json"]
     umask = os.umask(0)

@@ -74,9 +74,8 @@ def test_no_import_cycles():
 
 
 def _development_table() -> list[tuple[str, str]]:
-    """README.md's Development table: (room, job) per row."""
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
-    part = text[text.index("## Development") :]
+    """docs/development.md's table of the package's rooms: (room, job) per row."""
+    part = (ROOT / "docs" / "development.md").read_text(encoding="utf-8")
     rows = []
     for line in part.splitlines()[1:]:
         if line.startswith("## "):
@@ -88,7 +87,7 @@ def _development_table() -> list[tuple[str, str]]:
 
 
 def test_the_development_table_names_what_is_there():
-    """Every room of README.md's Development table exists, and every file or folder
+    """Every room of docs/development.md's table exists, and every file or folder
     its job names (``x.py``, ``x/``) is inside that room; every subpackage of
     ``simulator`` has a row."""
     import re
@@ -111,16 +110,14 @@ def test_the_development_table_names_what_is_there():
         assert pkg.relative_to(ROOT).as_posix() in rooms, pkg
 
 
-def test_the_readme_claims_no_peer_figure_on_the_same_room():
-    """README.md's "How it compares" gives the Mitsuba figures for the bundled
-    office from the side-by-side script anyone can rerun (its command is
-    there), and says that the 5.7 s once quoted was measured on another
-    office, not claiming it for the bundled room."""
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
-    part = text[text.index("## How it compares") :]
-    part = part[: part.index("\n## ", 4)]
-    item = part[part.index("**Furnished, interreflecting rooms**") :]
-    item = item[: item.index("\n- **")]
+def test_the_docs_claim_no_peer_figure_on_the_same_room():
+    """docs/comparisons.md's "Furnished, interreflecting rooms" gives the Mitsuba
+    figures for the bundled office from the side-by-side script anyone can rerun
+    (its command is there), and says that the 5.7 s once quoted was measured on
+    another office, not claiming it for the bundled room."""
+    text = (ROOT / "docs" / "comparisons.md").read_text(encoding="utf-8")
+    item = text[text.index("## Furnished, interreflecting rooms") :]
+    item = item[: item.index("\n## ", 4)]
     assert "benchmarks/peer_mitsuba.py configs/office_bench.toml" in item
     if "5.7 s" in item:
         assert "another office" in item and "not this one" in item

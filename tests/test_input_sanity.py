@@ -242,7 +242,7 @@ def test_a_boost_asked_for_is_read(tmp_path):
 
 
 def _scenarios(tmp_path, scenario: str):
-    from simulator.study.scenarios import dark_scenarios, expand_scenarios, resolve_groups, trace_groups_of
+    from simulator.study.inputs.scenarios import dark_scenarios, expand_scenarios, resolve_groups, trace_groups_of
     from simulator.study.schema import load_study
 
     study, p = load_study(study_file(tmp_path, scenario))
@@ -269,7 +269,7 @@ def test_of_a_product_only_the_unlit_scenario_is_named(tmp_path):
 
 
 def _candidate_lines(tmp_path, height_m: float):
-    from simulator.study.candidates import build_candidates, candidate_warnings
+    from simulator.study.inputs.candidates import build_candidates, candidate_warnings
     from simulator.study.schema import load_study
 
     study, p = load_study(study_file(tmp_path, "levels = { lamps = 1 }",
@@ -309,7 +309,7 @@ def test_bundled_configs_raise_no_placement_warning(path):
 
 @pytest.mark.parametrize("path", sorted(glob.glob(str(ROOT / "configs" / "studies" / "*.toml"))), ids=lambda p: Path(p).name)
 def test_bundled_studies_raise_no_placement_warning(path):
-    from simulator.study.candidates import build_candidates, candidate_warnings
+    from simulator.study.inputs.candidates import build_candidates, candidate_warnings
     from simulator.study.schema import load_study
 
     study, p = load_study(path)

@@ -19,6 +19,7 @@ import signal
 import subprocess
 import sys
 import time
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -172,12 +173,16 @@ def test_interrupted_run_keeps_whole_batches_bit_identical(tmp_path, adaptive):
 
 
 def test_uninterrupted_fixed_run_leaves_target_met_empty(tmp_path):
-    """A fixed-budget run that is not interrupted keeps ``target_met`` empty
-    (every sensor got its samples) and records ``interrupted`` false."""
+    """A fixed-budget run that is not interrupted has no ``target_met`` (every
+    sensor got its samples: the column is left out of the kinds' CSV, and empty
+    in the full set) and records ``interrupted`` false."""
     cfg = apply_overrides(load_config(_config(tmp_path)), samples=4096, csv=tmp_path / "full.csv")
     out = run(cfg, log=lambda m: None)
     assert not out.interrupted
-    assert {r["target_met"] for r in _rows(tmp_path / "full.csv").values()} == {""}
+    assert all("target_met" not in r for r in _rows(tmp_path / "full.csv").values())
+    cfg = replace(cfg, output=replace(cfg.output, csv=tmp_path / "all.csv", csv_columns="full"))
+    run(cfg, log=lambda m: None)
+    assert {r["target_met"] for r in _rows(tmp_path / "all.csv").values()} == {""}
     record = json.loads((tmp_path / "full.run.json").read_text())
     assert record["interrupted"] is False and record["sensors_finished"] == record["sensors"] == 5
 

@@ -32,7 +32,7 @@ def test_levels_of_lights_with_a_split_dome():
 @pytest.fixture(scope="module")
 def office():
     from simulator.scene.usd import load_stage
-    from simulator.study.candidates import build_candidates
+    from simulator.study.inputs.candidates import build_candidates
     from simulator.study.schema import CandidateSpec
 
     sc = load_stage("stages/office.usda", light_units="photometric", radiometric_spectrum="E")
@@ -50,7 +50,7 @@ def _plain(sc, sensors, levels, groups, n, seed):
     from simulator.engine.driver import Engine
     from simulator.pipeline import run_plan
     from simulator.plan.planner import make_plan
-    from simulator.study.groups import group_scene
+    from simulator.study.trace.groups import group_scene
 
     lights = []
     for l in sc.lights:
@@ -71,7 +71,7 @@ def test_a_lamp_only_scenario_is_no_noisier_than_a_plain_run(office):
     on the median and on the root-mean-square ratio over sensors, for both scenarios; every recombined
     reading agrees with its plain run within 4 combined standard errors."""
     from simulator.config.loader import SimulationConfig
-    from simulator.study.groups import trace_groups
+    from simulator.study.trace.groups import trace_groups
 
     sc, sensors, groups = office
     n = 1024
@@ -91,7 +91,7 @@ def test_the_pass_picks_one_light_where_its_scenarios_agree(office):
     from simulator.config.loader import SimulationConfig
     from simulator.engine.driver import Engine, LightGroups
     from simulator.plan.planner import make_plan
-    from simulator.study.groups import group_scene
+    from simulator.study.trace.groups import group_scene
 
     sc, sensors, groups = office
     lamps = groups["window_row"] + groups["corridor_row"]

@@ -18,7 +18,7 @@ from scipy import stats
 
 from simulator.engine.driver import Engine, LightGroups
 from simulator.scene.model import Geometry, Light, LightKind, Scene, Sensor, SensorKind
-from simulator.study import sky_patches as sp
+from simulator.study.inputs import sky_patches as sp
 
 L_LM = 400.0  # the dome's authored luminance, cd/m²
 

@@ -1,11 +1,11 @@
-"""Tregenza's sky patches and the CIE skies as patch luminances (simulator.study.sky_patches)."""
+"""Tregenza's sky patches and the CIE skies as patch luminances (simulator.study.inputs.sky_patches)."""
 
 import math
 
 import numpy as np
 import pytest
 
-from simulator.study import sky_patches as sp
+from simulator.study.inputs import sky_patches as sp
 
 
 def test_patch_counts_and_solid_angles():
@@ -45,7 +45,7 @@ def test_patch_index_round_trip():
 
 def test_patch_azimuth_convention():
     """Patch 0 is centred on north (+Y) and azimuth runs toward east (+X), as the study's sun
-    (simulator.study.sun): in the horizon band of 30 patches 12° wide, a direction at azimuth 12°
+    (simulator.study.inputs.sun): in the horizon band of 30 patches 12° wide, a direction at azimuth 12°
     (north-north-east) is patch 1, one at −12° (west of north) the band's last, 29, and due east
     (90°, +X) is patch 90/12 = 7.5 → the boundary; at 93° it is patch 8."""
     a = math.radians(12.0)

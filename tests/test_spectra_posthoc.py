@@ -34,6 +34,12 @@ ROOT = Path(__file__).resolve().parents[1]
 LED = ROOT / "stages" / "spectra" / "grow_led_spd.csv"
 
 
+#: the CSV header of a fixed-budget run of irradiance sensors only (``[output] csv_columns = "kinds"``,
+#: docs/DESIGN.md §The CSV's columns, per kind): no column another kind fills, no ``target_met``
+IRRADIANCE_COLUMNS = ("sensor", "kind", "x", "y", "z", "dx", "dy", "dz", "irradiance_W_m2", "irradiance_stderr_W_m2",
+                      "illuminance_lx", "illuminance_stderr_lx", "samples", "seconds", "method")
+
+
 @pytest.fixture(scope="module")
 def greenhouse(tmp_path_factory):
     out = tmp_path_factory.mktemp("greenhouse")
@@ -62,7 +68,7 @@ def test_a_grey_run_writes_the_standard_columns_only(greenhouse):
     cfg, res, _ = greenhouse
     assert extra_columns(res.rows) == []
     with open(res.csv_path, newline="") as f:
-        assert tuple(next(csv.reader(f))) == COLUMNS
+        assert tuple(next(csv.reader(f))) == IRRADIANCE_COLUMNS
     assert choose_transport(res.scene)[:2] == ("grey", 1)
 
 

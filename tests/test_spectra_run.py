@@ -17,7 +17,7 @@ import pytest
 from simulator.commands.cli import main
 from simulator.config.loader import load_config
 from simulator.errors import UserError
-from simulator.io.results import COLUMNS
+from simulator.io.results import COLUMNS  # noqa: F401
 from simulator.pipeline import run
 from simulator.spectra import grid, sources, tables
 from simulator.spectra.reduce import posthoc_ratio
@@ -43,6 +43,12 @@ kind = "irradiance"
 position = [1.5, 1.0, 0]
 normal = [0, 0, 1]
 """
+
+
+#: the CSV header of a fixed-budget run of irradiance sensors only (``[output] csv_columns = "kinds"``,
+#: docs/DESIGN.md §The CSV's columns, per kind): no column another kind fills, no ``target_met``
+IRRADIANCE_COLUMNS = ("sensor", "kind", "x", "y", "z", "dx", "dy", "dz", "irradiance_W_m2", "irradiance_stderr_W_m2",
+                      "illuminance_lx", "illuminance_stderr_lx", "samples", "seconds", "method")
 
 
 def _config(tmp_path: Path, stage: str = "point.usda", units: str = "photometric", output: str = "", spectra: str = "") -> Path:
@@ -77,8 +83,8 @@ def test_par_and_melanopic_columns_on_a_grey_stage(tmp_path):
     out = run(cfg, log=lambda *a: None)
     table = _table(out.csv_path)
     header = list(table[0])
-    assert tuple(header[:len(COLUMNS)]) == COLUMNS
-    assert header[len(COLUMNS):] == ["ppfd_umol_m2_s", "ppfd_stderr_umol_m2_s", "melanopic_edi_lx", "melanopic_edi_stderr_lx"]
+    assert tuple(header[:len(IRRADIANCE_COLUMNS)]) == IRRADIANCE_COLUMNS
+    assert header[len(IRRADIANCE_COLUMNS):] == ["ppfd_umol_m2_s", "ppfd_stderr_umol_m2_s", "melanopic_edi_lx", "melanopic_edi_stderr_lx"]
     d65 = sources.emitter_spectrum("D65")
     for name, col in (("par", "ppfd_umol_m2_s"), ("melanopic_edi", "melanopic_edi_lx")):
         ratio = posthoc_ratio(response(name), d65.values)
@@ -114,7 +120,7 @@ def test_a_run_without_responses_writes_the_standard_columns(tmp_path):
     record has no "spectra" entry."""
     out = run(load_config(_config(tmp_path)), log=lambda *a: None)
     with open(out.csv_path, newline="") as f:
-        assert tuple(next(csv.reader(f))) == COLUMNS
+        assert tuple(next(csv.reader(f))) == IRRADIANCE_COLUMNS
     assert "spectra" not in out.record
 
 

@@ -387,12 +387,18 @@ def test_emissive_geometry_and_double_sided(tmp_path):
 
 
 def test_opacity_zero_prim_left_out(tmp_path):
-    """opacity 0: the prim blocks no light, so it is not in the geometry; a warning says so."""
+    """opacity 0 in presence mode: the prim blocks no light, so it is not in the geometry; a warning
+    says so. In the default transparent mode the same opacity is a clear pane, and kept."""
     tri = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]
-    body = material("Glass", opacity=0) + quad_mesh("Pane", tri, bound("Glass")) + quad_mesh("Wall", tri)
+    cut = material("Cut", opacity=0).replace("float inputs:opacity = 0", 'float inputs:opacity = 0\n'
+                                              '        token inputs:opacityMode = "presence"')
+    body = cut + quad_mesh("Pane", tri, bound("Cut")) + quad_mesh("Wall", tri)
     s = load_stage(write_stage(tmp_path, body))
     assert s.geometry.prim_names == ["/Wall"]
-    assert any("/Pane" in w and "opacity 0" in w for w in s.warnings)
+    assert any("/Pane" in w and "opacity 0 in presence mode" in w for w in s.warnings)
+    body = material("Glass", opacity=0) + quad_mesh("Pane", tri, bound("Glass")) + quad_mesh("Wall", tri)
+    s = load_stage(write_stage(tmp_path, body))
+    assert s.geometry.prim_names == ["/Pane", "/Wall"] and not any("left out" in w for w in s.warnings)
 
 
 @pytest.mark.parametrize("diffuse", [(1.2, 1.2, 1.2), (1.0, 1.0, 1.01), (-0.1, -0.1, -0.1)])

@@ -9,12 +9,12 @@ import numpy as np
 import pytest
 
 from simulator.errors import UserError
-from simulator.study import control as CT
-from simulator.study import sky_patches as SP
-from simulator.study.annual import run_annual, sky_levels_of
-from simulator.study.annual_outputs import write_annual_outputs
-from simulator.study.climate import derive_tmy3_lux, read_weather
-from simulator.study.perez import hour_skies, perez_parameters
+from simulator.study.annual import control as CT
+from simulator.study.inputs import sky_patches as SP
+from simulator.study.annual.year import run_annual, sky_levels_of
+from simulator.study.annual.outputs import write_annual_outputs
+from simulator.study.annual.climate import derive_tmy3_lux, read_weather
+from simulator.study.annual.perez import hour_skies, perez_parameters
 from simulator.study.schema import load_study
 
 pvlib = pytest.importorskip("pvlib")
@@ -69,7 +69,7 @@ def test_the_bundled_weather_file_is_derived_from_pvlibs_tmy3():
 
 def test_rows_label_the_end_of_the_hour_and_the_sun_is_at_its_centre():
     """Row 13 of 1 January (label 13:00) is 12:00–13:00: the sun is placed at 12:30 local standard time (UTC−5)."""
-    from simulator.study.sun import solar_position
+    from simulator.study.inputs.sun import solar_position
 
     w = read_weather(BUNDLED)
     r = 12
@@ -282,8 +282,8 @@ def _instant(res, base, k, sensors, samples, seed):
     from simulator.pipeline import run_plan
     from simulator.plan.planner import make_plan
     from simulator.scene.model import Light, LightKind
-    from simulator.study.groups import group_scene
-    from simulator.study.sun import sun_frame
+    from simulator.study.trace.groups import group_scene
+    from simulator.study.inputs.sun import sun_frame
 
     dome = next(l for l in base.lights if l.kind == LightKind.DOME)
     d = sky_levels_of(res.skies, dome.emission[1], 0.2)[k]
@@ -321,7 +321,7 @@ def test_recombined_hours_agree_with_single_instant_runs(office):
     """24 hours over four days (low sun at 06:30 and 18:30 included) on five work-plane sensors and two
     downward ceiling photosensors: every sky-only hour within 4 standard errors, all hours in at least
     95% of readings (the interreflected sun is spread over the 4 patches around it, an approximation;
-    see README "A year of daylight")."""
+    see docs/studies.md, "A year of daylight")."""
     _, _, res = office
     el = res.weather.sun_elevation_deg[res.rows]
     hours = list(np.nonzero(res.skies.dhi_lx > 0)[0][::2][:24])
@@ -444,9 +444,9 @@ def test_the_host_shadow_rays_read_the_suns_direct_light_as_the_engine_does():
     from simulator.plan.planner import make_plan
     from simulator.scene.model import Light, LightKind, Sensor, SensorKind
     from simulator.scene.usd import load_stage
-    from simulator.study.groups import group_scene
-    from simulator.study.sun import sun_direction, sun_frame
-    from simulator.study.sunlight import direct_sun
+    from simulator.study.trace.groups import group_scene
+    from simulator.study.inputs.sun import sun_direction, sun_frame
+    from simulator.study.annual.sunlight import direct_sun
 
     base = load_stage(ROOT / "stages" / "office.usda", light_units="photometric", radiometric_spectrum="E")
     xs = np.linspace(0.3, 5.7, 10)

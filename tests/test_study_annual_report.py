@@ -93,14 +93,21 @@ def both(tmp_path_factory):
 
 
 def test_the_report_holds_the_annual_section_after_the_heat_maps(both):
-    from simulator.study.metrics import METRICS
-
     _, _, raw = both
     page = raw.decode()
     assert page.index('id="heatmaps"') < page.index('id="annual"')
     sec = page[page.index('id="annual"'):]
-    for k in METRICS:  # every metric, with its error column
-        assert f"<td>{k}</td>" in sec, k
+    # every metric under the name designers use, with its definition in words
+    for name in ("DA300", "sDA300/50%", "ASE1000/250h", "UDI &lt; 100 lx", "UDI 100–2000 lx", "UDI &gt; 2000 lx",
+                 "EN 17037 300 lx over 50% of the area", "EN 17037 100 lx over 95% of the area", "EN 17037 minimum level",
+                 "DF (mean)"):  # fmt: skip
+        assert f"<td>{name}</td>" in sec, name
+    assert "Daylight autonomy: the share of occupied hours in which a point gets at least 300 lx" in sec
+    assert re.search(r'<td>EN 17037 minimum level</td><td class="(pass|fail)">(met|not met)', sec)
+    # no config key names, no 0/1 unit, no bare "DA" for DA300
+    for key in ("da_lx", "udi_lx", "ase_lx", "ase_hours", "en17037_lx", "E &gt;= ", "E >= ", "0/1", "<td>DA</td>",
+                "EN17037_pass", "UDI_useful"):  # fmt: skip
+        assert key not in page, key
     assert "relative energy" in sec and "hours below target" in sec and "chosen photosensor" in sec
     # the zone's name is text everywhere; the only script would be the name
     assert "<script" not in page.lower() and "&lt;script&gt;alert(1)&lt;/script&gt;" in sec
@@ -111,25 +118,35 @@ def test_the_report_holds_the_annual_section_after_the_heat_maps(both):
 
 
 def test_the_annual_tables_carry_the_runs_figures(both):
-    """The page's metric values and control figures are those of annual_metrics.csv / annual_control.csv."""
+    """The page's metric values and control figures are those of annual_metrics.csv / annual_control.csv,
+    each with its error by the report's one rule (simulator.io.numbers.with_error)."""
     import csv
+    import html
     import io
 
+    from simulator.io.numbers import with_error
+    from simulator.study.annual.report import metric_names
+    from simulator.study.schema import AnnualSpec
+
     d, _, raw = both
-    sec = raw.decode()[raw.decode().index('id="annual"'):]
+    sec = html.unescape(raw.decode()[raw.decode().index('id="annual"'):])
+    names = metric_names(AnnualSpec(weather="w.csv", sky_group="sky"))
     for r in csv.DictReader(io.StringIO((d / "out" / "annual_metrics.csv").read_text())):
         v, se = float(r["value"]), float(r["stderr"])
-        assert f"<td>{r['metric']}</td><td>{v:.4g}</td><td>{se:.4g}</td>" in sec, r
+        if r["metric"] == "EN17037_pass":
+            assert f"<td>{names[r['metric']][0]}</td><td class=\"{'pass' if v >= 0.5 else 'fail'}\">{'met' if v >= 0.5 else 'not met'}" in sec
+        else:
+            assert f"<td>{names[r['metric']][0]}</td><td class=\"n\">{with_error(v, se, '%')}</td>" in sec, r
     rows = list(csv.DictReader(io.StringIO((d / "out" / "annual_control.csv").read_text())))
     assert len(rows) == 2 and sum(int(r["chosen"]) for r in rows) == 1
     for r in rows:
-        assert f"<td>{float(r['relative_energy']):.4g}</td><td>{float(r['relative_energy_stderr']):.4g}</td>" in sec
+        assert f"<td class=\"n\">{with_error(float(r['relative_energy']), float(r['relative_energy_stderr']))}</td>" in sec
 
 
 def test_da_per_sensor_matches_the_zone_metric_and_the_temporal_grid_places_each_hour(tmp_path):
     """The DA map's values average to the zone's DA; the temporal grid puts each hour at its day and hour."""
-    from simulator.study.annual import run_annual
-    from simulator.study.annual_report import da_per_sensor, temporal_grid
+    from simulator.study.annual.year import run_annual
+    from simulator.study.annual.report import da_per_sensor, temporal_grid
     from simulator.study.schema import load_study
 
     tmp = tmp_path
@@ -164,6 +181,9 @@ def test_an_annual_only_study_gets_a_report_of_its_own(both):
     assert main_study(str(p), None, None) == 0
     page = (d / "out" / "report.html").read_text()
     assert 'id="annual"' in page and 'id="zones"' not in page and "<script" not in page.lower()
+    # its own title block (project: the stage's name), and the luminaire schedule of the lamps it controls
+    assert '<p class="kind">Annual daylight report</p><h1>office</h1>' in page and "<dt>Seed</dt><dd>7</dd>" in page
+    assert 'id="luminaires"' in page and "rectangular panel 1.20 × 0.30 m" in page
     imgs = _imgs(page)
     assert len(imgs) == 3 and all(b[:8] == b"\x89PNG\r\n\x1a\n" for b in imgs)
 
@@ -176,15 +196,9 @@ def test_the_annual_report_renders_in_headless_chromium_without_console_errors(b
     page = raw.decode()
     src = tmp_path / "report.html"
     src.write_bytes(raw)
-    probe = tmp_path / "probe.html"
-    probe.write_text(page.replace("<head>", "<head>" + _rep._PROBE, 1))
-    r = _rep._chromium(browser, tmp_path, "--virtual-time-budget=5000", "--dump-dom", probe.as_uri())
-    if r.returncode != 0 and not r.stdout:
-        pytest.skip(f"Chromium does not start here: {r.stderr.strip().splitlines()[-1:]}")
-    m = re.search(r"<title>PROBE errors=(\d+) images=(\d+) broken=(\d+)</title>", r.stdout)
-    assert m, r.stdout[:500]
-    assert m.groups() == ("0", "4", "0")  # every image decodes in the browser
-    assert "&lt;script&gt;alert(1)&lt;/script&gt;" in r.stdout and "alert(1)</script>" not in r.stdout
+    _rep.check_layout(browser, tmp_path, page, 1 + 3)  # every image decodes, nothing overflows, print CSS
+    dom = _rep.probe_page(browser, tmp_path, page, 1280)["dom"]
+    assert "&lt;script&gt;alert(1)&lt;/script&gt;" in dom and "alert(1)</script>" not in dom
     shot = tmp_path / "shot.png"
     r = _rep._chromium(browser, tmp_path, "--window-size=1280,3200", f"--screenshot={shot}", src.as_uri())
     assert shot.is_file() and shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 10_000

@@ -67,6 +67,38 @@ def test_a_study_prints_its_closing_note_and_writes_its_outputs(tmp_path, capsys
     assert len(rec["placement"]["steps"]) == 2
 
 
+def test_samples_seed_and_output_flags_override_the_study_file(tmp_path, capsys):
+    """``probesim study S -o DIR --samples N --seed K`` traces with those settings (the study record keeps
+    the study as run) and writes into DIR, as ``probesim run``'s flags do."""
+    import json
+
+    p = _write(tmp_path, TINY.replace("[compute]", "[compute]\nmode = \"inprocess\""))
+    out = tmp_path / "flags"
+    assert main(["study", str(p), "-o", str(out), "--samples", "32", "--seed", "5"]) == 0
+    capsys.readouterr()
+    rec = json.loads((out / "study.json").read_text())
+    assert rec["study"]["simulation"]["samples"] == 32 and rec["study"]["seed"] == 5
+
+
+def test_rel_error_flag_makes_the_study_adaptive_and_bad_flags_are_one_line(tmp_path, capsys):
+    """``--rel-error`` sets ``[simulation] rel_error``; a flag outside its key's range is refused in
+    one line naming the flag, before anything is written."""
+    from simulator.commands.study import flag_overrides
+    from simulator.study.schema import load_study
+
+    p = _write(tmp_path, TINY)
+    study, _ = load_study(p, flag_overrides(samples=16, seed=2, rel_error=0.1))
+    assert (study.simulation.samples, study.seed, study.simulation.rel_error) == (16, 2, 0.1)
+    for argv, needle in ((["--samples", "0"], "--samples: Input should be greater than or equal to 1"),
+                         (["--rel-error", "2"], "--rel-error: Input should be less than 1"),
+                         (["--seed", "-1"], "--seed: Input should be greater than or equal to 0")):
+        out = tmp_path / "bad"
+        assert main(["study", str(p), "-o", str(out), *argv]) == 2
+        err = capsys.readouterr().err.strip()
+        assert err.count("\n") == 0 and str(p) in err and needle in err, err
+        assert not out.exists()
+
+
 def test_progress_shows_chunks_and_time_left_on_a_terminal():
     import io
 

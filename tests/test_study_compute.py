@@ -110,9 +110,9 @@ def test_a_tls_scheduler_without_settings_is_one_line(tmp_path, capsys):
 
 
 def test_auto_block_keeps_the_modelled_cost_within_budget():
-    """The pilots' model (simulator.study.blocks): each chunk pays at least 16,384 + 256 pilot paths; the
+    """The pilots' model (simulator.study.trace.blocks): each chunk pays at least 16,384 + 256 pilot paths; the
     most chunks whose modelled cost is ≤ 1.2 runs."""
-    from simulator.study.blocks import BUDGET, MAX_BLOCK, auto_block, pass_cost
+    from simulator.study.trace.blocks import BUDGET, MAX_BLOCK, auto_block, pass_cost
 
     for s, n in [(18, 64), (54, 128), (300, 256), (1500, 1024), (5000, 256), (20000, 4096)]:
         b = auto_block(s, n)

@@ -6,7 +6,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from simulator.study.en12464 import en12464_grid, explicit_grid, grid_spacing_m
+from simulator.study.inputs.en12464 import en12464_grid, explicit_grid, grid_spacing_m
 
 
 @pytest.mark.parametrize("d_m, p_m", [(1.0, 0.2), (5.0, 0.6), (10.0, 1.0), (50.0, 3.0), (100.0, 5.0)])
@@ -50,7 +50,7 @@ def test_cell_centres_and_explicit_spacing():
 def test_candidates_on_the_office_floor():
     """The work plane sits 0.8 m above the floor, inside the wall band, and points in the shelf's box are dropped."""
     from simulator.scene.usd import load_stage
-    from simulator.study.candidates import build_candidates
+    from simulator.study.inputs.candidates import build_candidates
     from simulator.study.schema import CandidateSpec
 
     scene = load_stage("stages/office.usda", light_units="photometric", radiometric_spectrum="E")
@@ -68,7 +68,7 @@ def test_candidates_on_the_office_floor():
 def test_candidate_errors_name_the_key():
     from simulator.errors import UserError
     from simulator.scene.usd import load_stage
-    from simulator.study.candidates import build_candidates
+    from simulator.study.inputs.candidates import build_candidates
     from simulator.study.schema import CandidateSpec
 
     scene = load_stage("stages/office.usda", light_units="photometric", radiometric_spectrum="E")
@@ -85,8 +85,8 @@ def test_the_bundled_study_is_valid():
     from pathlib import Path
 
     from simulator.scene.usd import load_stage
-    from simulator.study.candidates import build_candidates
-    from simulator.study.scenarios import expand_scenarios, resolve_groups, trace_groups_of
+    from simulator.study.inputs.candidates import build_candidates
+    from simulator.study.inputs.scenarios import expand_scenarios, resolve_groups, trace_groups_of
     from simulator.study.schema import load_study
 
     study, path = load_study(Path(__file__).resolve().parent.parent / "configs" / "studies" / "office_study.toml")
@@ -160,7 +160,7 @@ horizontal = "eh"
 
 def test_surround_requirement_follows_the_task():
     """EN 12464-1 (2011 Table 1, kept in 2021): ≥ 750 → 500, 500 → 300, 300 → 200, ≤ 200 → the task's own."""
-    from simulator.study.areas import surround_required_lx
+    from simulator.study.figures.areas import surround_required_lx
 
     assert [surround_required_lx(x) for x in (1500, 750, 500, 300, 200, 100)] == [500, 500, 300, 200, 200, 100]
 
@@ -217,8 +217,17 @@ def test_areas_csv_parts_maintained_figures_and_verdicts(tmp_path, capsys):
             if not np.isfinite(v):
                 continue
             assert r[f"{key}_verdict"] == ("pass" if v - req > 2 * s else "fail" if v - req < -2 * s else "unsure")
-    # the report shows them
-    assert 'id="areas"' in (out / "report.html").read_text()
+    # the report shows them: every maintained Ē with its standard error, each verdict in its colour's class
+    import html
+
+    from simulator.io.numbers import with_error
+
+    page = html.unescape((out / "report.html").read_text())
+    sec = page[page.index('id="areas"'):page.index("</section>", page.index('id="areas"'))]
+    for r in rows:
+        if np.isfinite(float(r["mean"])):
+            assert f'<td class="n">{with_error(float(r["mean"]), float(r["mean_stderr"]))}</td>' in sec, r
+            assert f'<td class="{r["mean_verdict"]}">{r["mean_verdict"]}</td>' in sec
     # the cylindrical set's axis is the floor's normal
     ez = [x for x in read if x["candidates"] == "ez"]
     assert {x["kind"] for x in ez} == {"cylindrical"} and all(float(x["z"]) == pytest.approx(1.2) for x in ez)

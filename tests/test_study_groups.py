@@ -6,7 +6,7 @@ import numpy as np
 
 from simulator.config.loader import SimulationConfig
 from simulator.scene.model import Geometry, Sensor, SensorKind
-from simulator.study.groups import GroupReadings, derive_seed, trace_groups
+from simulator.study.trace.groups import GroupReadings, derive_seed, trace_groups
 
 
 def _office():
@@ -137,7 +137,7 @@ def test_the_single_run_stands_for_the_hardest_of_the_scenarios_with_most_groups
     from types import SimpleNamespace
 
     from simulator.study.runner import _reference_scenario
-    from simulator.study.scenarios import Scenario
+    from simulator.study.inputs.scenarios import Scenario
 
     mean = np.array([[[10.0, 10.0]], [[1.0, 1.0]]])
     cov = np.zeros((1, 2, 2, 2))

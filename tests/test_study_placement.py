@@ -5,8 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from simulator.study.objectives import calibrated_errors, compliance, zone_figures
-from simulator.study.placement import brute_force, gains, greedy_lazy, place_sensors, set_value
+from simulator.study.figures.objectives import calibrated_errors, compliance, zone_figures
+from simulator.study.figures.placement import brute_force, gains, greedy_lazy, place_sensors, set_value
 
 
 def _plain_greedy(q, k):

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from simulator.io.results import COLUMNS
-from simulator.study.report import write_outputs
+from simulator.study.report.outputs import write_outputs
 from simulator.study.runner import run_study
 from simulator.study.schema import load_study
 
@@ -29,7 +29,8 @@ EVIL = "<script>alert(1)</script>"
 TEXT = (_tiny.TINY.replace('name = "all"', f'name = "{EVIL}"').replace('name = "overcast"', 'name = "<b>overcast</b>"')
         .replace('objective = "correlation"', 'objective = "p95_rel_error"')
         .replace("drop_inside = [\"/Office/Furniture/*\"]", "drop_inside = [\"/Office/Furniture/*\"]\nwall_band_m = 0.3\n")
-        .replace("spacing_m = 1.0", "spacing_m = 0.4"))  # fmt: skip  (0.4 m: three points fall in the shelf)
+        .replace("spacing_m = 1.0", "spacing_m = 0.4")  # (0.4 m: three points fall in the shelf)
+        .replace("seed = 11", 'seed = 11\nproject = "Office <i>2</i>"', 1))  # fmt: skip
 
 
 @pytest.fixture(scope="module")
@@ -91,7 +92,7 @@ def test_placement_scores_are_percent(study_out):
 
 
 def test_heat_map_has_the_room_plan_and_dropped_points(study_out):
-    from simulator.study.heat_maps import dropped_in_zone, zone_plan
+    from simulator.study.report.heat_maps import dropped_in_zone, zone_plan
 
     res, out = study_out
     plan = zone_plan(res, EVIL)
@@ -110,7 +111,7 @@ def test_heat_map_has_the_room_plan_and_dropped_points(study_out):
 
 
 def test_per_scenario_scale_and_log_scale_differ_and_are_valid(study_out):
-    from simulator.study.heat_maps import heat_map_png
+    from simulator.study.report.heat_maps import heat_map_png
 
     res, _ = study_out
     import copy
@@ -129,13 +130,14 @@ def test_report_is_self_contained_and_escapes_names(study_out):
     assert "&lt;script&gt;alert(1)&lt;/script&gt;" in page and "&lt;b&gt;overcast&lt;/b&gt;" in page
     assert not re.search(r'(src|href)="(?!data:|#)', page)  # nothing fetched
     imgs = re.findall(r'src="data:image/png;base64,([A-Za-z0-9+/=]+)"', page)
-    assert len(imgs) == 2  # the marginal-gain curve and the zone's heat map
+    res, _ = study_out
+    assert len(imgs) == 1 + len(res.scenarios)  # the marginal-gain curve and one plan of the zone per scenario
     assert all(base64.b64decode(b)[:8] == b"\x89PNG\r\n\x1a\n" for b in imgs)
     assert "%" in page  # scores in percent
 
 
 def test_a_registered_section_joins_the_page(study_out):
-    from simulator.study import html_report as hr
+    from simulator.study.report import page as hr
 
     res, _ = study_out
     saved = list(hr.SECTIONS)
@@ -156,15 +158,31 @@ def _browser() -> str | None:
     return None
 
 
-#: injected at the top of a copy of the page: errors go to the title, and every image is checked once loaded
+#: injected at the top of a copy of the page: errors go to the title, every image is checked once loaded, the page
+#: and every table, figure, image and paragraph checked for overflowing the window's width (or its own box), and
+#: the print style sheet counted (rules under @media print, an A4 @page)
 _PROBE = """<script>
 window.__errors = [];
 window.onerror = function (m) { window.__errors.push(String(m)); };
 window.addEventListener('error', function (e) { if (e.target && e.target.tagName) window.__errors.push('load ' + e.target.tagName); }, true);
 window.addEventListener('load', function () {
-  var bad = 0, imgs = document.images;
+  var bad = 0, imgs = document.images, wide = 0, printed = 0, page = 0;
   for (var i = 0; i < imgs.length; i++) if (!imgs[i].complete || imgs[i].naturalWidth === 0) bad++;
-  document.title = 'PROBE errors=' + window.__errors.length + ' images=' + imgs.length + ' broken=' + bad;
+  var root = document.documentElement, over = root.scrollWidth > root.clientWidth + 1 ? 1 : 0;
+  var boxes = document.querySelectorAll('table, figure, img, header, p, .scroll');
+  for (var j = 0; j < boxes.length; j++) {
+    var r = boxes[j].getBoundingClientRect();
+    if (r.right > root.clientWidth + 1 || boxes[j].scrollWidth > boxes[j].clientWidth + 1) wide++;
+  }
+  for (var k = 0; k < document.styleSheets.length; k++) {
+    var rules = document.styleSheets[k].cssRules;
+    for (var m = 0; m < rules.length; m++) {
+      if (rules[m].type === CSSRule.MEDIA_RULE && rules[m].media.mediaText.indexOf('print') >= 0) printed += rules[m].cssRules.length;
+      if (rules[m].type === CSSRule.PAGE_RULE && /a4/i.test(rules[m].style.getPropertyValue('size'))) page++;
+    }
+  }
+  document.title = 'PROBE errors=' + window.__errors.length + ' images=' + imgs.length + ' broken=' + bad +
+    ' overflow=' + over + ' wide=' + wide + ' print=' + printed + ' a4=' + page;
 });
 </script>"""
 
@@ -178,26 +196,140 @@ def _chromium(browser: str, tmp: Path, *args: str) -> subprocess.CompletedProces
     return subprocess.run(cmd, capture_output=True, text=True, timeout=120, env={**os.environ, "HOME": str(tmp)})
 
 
+PROBE_RE = r"<title>PROBE errors=(\d+) images=(\d+) broken=(\d+) overflow=(\d+) wide=(\d+) print=(\d+) a4=(\d+)</title>"
+
+
+def probe_page(browser: str, tmp: Path, page: str, width_px: int) -> dict:
+    """The probe's counts for ``page`` laid out in a window ``width_px`` wide (None: Chromium does not start)."""
+    probe = tmp / "probe.html"
+    probe.write_text(page.replace("<head>", "<head>" + _PROBE, 1))
+    r = _chromium(browser, tmp, f"--window-size={width_px},1200", "--virtual-time-budget=5000", "--dump-dom", probe.as_uri())
+    if r.returncode != 0 and not r.stdout:
+        pytest.skip(f"Chromium does not start here: {r.stderr.strip().splitlines()[-1:]}")
+    m = re.search(PROBE_RE, r.stdout)
+    assert m, r.stdout[:500]
+    keys = ("errors", "images", "broken", "overflow", "wide", "print", "a4")
+    return {**dict(zip(keys, map(int, m.groups()))), "dom": r.stdout}
+
+
+def check_layout(browser: str, tmp: Path, page: str, images: int) -> None:
+    """No script error, every image decodes, nothing wider than the window on a desktop screen (1280 px) or an
+    A4 page's width at 96 dpi (794 px), and a print style sheet with an A4 page."""
+    for width in (1280, 794):
+        p = probe_page(browser, tmp, page, width)
+        assert (p["errors"], p["images"], p["broken"]) == (0, images, 0), (width, p["errors"], p["images"], p["broken"])
+        assert p["overflow"] == 0 and p["wide"] == 0, f"{width} px: the page overflows ({p['wide']} boxes too wide)"
+        assert p["print"] >= 5 and p["a4"] == 1, "no print style sheet"
+
+
+def print_pdf(browser: str, tmp: Path, html: Path) -> bytes:
+    """The page printed by Chromium (its print style sheet applies), PDF bytes."""
+    pdf = tmp / "page.pdf"
+    _chromium(browser, tmp, "--no-pdf-header-footer", f"--print-to-pdf={pdf}", html.as_uri())
+    assert pdf.is_file(), "Chromium printed nothing"
+    return pdf.read_bytes()
+
+
 def test_report_renders_in_headless_chromium_without_console_errors(study_out, tmp_path):
     browser = _browser()
     if browser is None:
         pytest.skip("no Chromium on this machine (Debian: apt-get install chromium)")
-    _, out = study_out
+    res, out = study_out
     page = (out / "report.html").read_text()
-    probe = tmp_path / "probe.html"
-    probe.write_text(page.replace("<head>", "<head>" + _PROBE, 1))
-    r = _chromium(browser, tmp_path, "--virtual-time-budget=5000", "--dump-dom", probe.as_uri())
-    if r.returncode != 0 and not r.stdout:
-        pytest.skip(f"Chromium does not start here: {r.stderr.strip().splitlines()[-1:]}")
-    m = re.search(r"<title>PROBE errors=(\d+) images=(\d+) broken=(\d+)</title>", r.stdout)
-    assert m, r.stdout[:500]
-    assert m.groups() == ("0", "2", "0")
+    check_layout(browser, tmp_path, page, 1 + len(res.scenarios))
+    dom = probe_page(browser, tmp_path, page, 1280)["dom"]
     # the zone's name is text in the rendered document, never an element
-    assert "&lt;script&gt;alert(1)&lt;/script&gt;" in r.stdout
-    assert "alert(1)</script>" not in r.stdout
+    assert "&lt;script&gt;alert(1)&lt;/script&gt;" in dom
+    assert "alert(1)</script>" not in dom
+    # printed: A4 pages (595 × 842 pt)
+    pdf = print_pdf(browser, tmp_path, out / "report.html")
+    assert pdf[:5] == b"%PDF-" and re.search(rb"/MediaBox \[0 0 59[45]\.\d+ 84[12]\.\d+\]", pdf), "not printed on A4"
     # the page itself, unmodified: a screenshot, and no console message at error level
     shot = tmp_path / "shot.png"
     r = _chromium(browser, tmp_path, "--window-size=1280,2400", f"--screenshot={shot}", (out / "report.html").as_uri())
     assert shot.is_file() and shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 10_000
     console = [ln for ln in r.stderr.splitlines() if "CONSOLE" in ln]
     assert not [ln for ln in console if "ERROR" in ln or "Uncaught" in ln], console
+
+
+def _text(page: str) -> str:
+    """The page without its embedded images."""
+    return re.sub(r'src="data:[^"]*"', 'src=""', page)
+
+
+def test_report_opens_with_a_title_block(study_out):
+    """Project (from the study's ``project``, escaped), stage, study file, date, probesim version and seed."""
+    from simulator import __version__
+
+    res, out = study_out
+    page = (out / "report.html").read_text()
+    head = page[page.index('<header class="title">'):page.index("</header>")]
+    assert "<h1>Office &lt;i&gt;2&lt;/i&gt;</h1>" in head
+    fields = dict(re.findall(r"<dt>([^<]+)</dt><dd>([^<]*)</dd>", head))
+    assert fields["Stage"] == "office.usda" and fields["Study file"] == "evil_study.toml"
+    assert re.fullmatch(r"\d{4}-\d{2}-\d{2}", fields["Date"]) and fields["probesim"] == __version__
+    assert fields["Seed"] == str(res.study.seed) == "11"
+    assert all(v.strip() for v in fields.values())  # no empty cell
+    assert "<th></th>" not in page  # no empty header cell anywhere
+
+
+def test_the_summary_has_emin_emax_u0_with_errors_and_coloured_verdicts(study_out):
+    import html
+
+    from simulator.io.numbers import with_error
+
+    res, out = study_out
+    page = (out / "report.html").read_text()
+    sec = html.unescape(page[page.index('id="zones"'):page.index("</section>", page.index('id="zones"'))])
+    for h in ("Ē (lx)", "Emin (lx)", "Emax (lx)", "U0 = Emin/Ē", "Ē verdict"):
+        assert f"<th>{h}</th>" in sec, h
+    assert "required: Ē ≥ 300\u00a0lx" in sec
+    n = {"pass": 0, "fail": 0, "unsure": 0}
+    for (z, sc), f in res.figures.items():
+        for v, se in ((f.mean, f.mean_se), (f.min, f.min_se), (f.max, f.max_se), (f.u0, f.u0_se)):
+            assert f"<td class=\"n\">{with_error(v, se)}</td>" in sec, (sc, v, se)
+        n[res.checks[(z, sc)]["mean"]] += 1
+    for verdict, count in n.items():  # each verdict in its colour's class
+        assert sec.count(f'<td class="{verdict}">{verdict}</td>') == count, verdict
+    assert "more samples decide" in sec  # what "unsure" means, under the table
+
+
+def test_every_figure_has_a_sane_precision(study_out):
+    """No exponent (2.216e+04) and no error with more than 2 significant digits (± 0.007362) anywhere on the page."""
+    import html
+
+    res, out = study_out
+    text = html.unescape(_text((out / "report.html").read_text()))
+    assert not re.search(r"\d\.?\d*e[+-]\d", text)
+    # every zone figure (Ē, Emin, Emax, U0) carries its error beside it, not in a column of its own
+    assert text.count("\u00a0±\u00a0") >= 4 * len(res.figures)
+    for err in re.findall(r"±\u00a0([\d.,]+)", text):
+        digits = err.replace(",", "").replace(".", "").lstrip("0")
+        assert len(digits.rstrip("0") if "." not in err else digits) <= 2, err
+
+
+def test_the_report_has_a_luminaire_schedule(study_out):
+    import html
+
+    _, out = study_out
+    page = html.unescape((out / "report.html").read_text())
+    sec = page[page.index('id="luminaires"'):]
+    assert "rectangular panel 1.20 × 0.30 m" in sec and "4,524\u00a0lm" in sec and "27,143\u00a0lm" in sec
+    assert "<th>IES file</th>" in sec
+
+
+def test_plans_share_one_scale_by_default_and_each_its_own_on_request(study_out):
+    from simulator.study.report.heat_maps import zone_scales
+
+    res, _ = study_out
+    assert res.study.output.heat_map_scale == "shared"
+    shared = zone_scales(res, EVIL, res.scenarios)
+    assert len({(s.lo, s.hi) for s in shared}) == 1
+    own = res.study.model_copy(update={"output": res.study.output.model_copy(update={"heat_map_scale": "per_scenario"})})
+    import copy
+
+    r2 = copy.copy(res)
+    r2.study = own
+    per = zone_scales(r2, EVIL, res.scenarios)
+    ids = res.zones[EVIL]
+    assert [s.hi for s in per] == pytest.approx([float(res.mean[j, ids, 1].max()) for j in range(len(res.scenarios))], rel=1e-12)

@@ -5,8 +5,8 @@ from pathlib import Path
 
 import pytest
 
-from simulator.study.chunks import StudyInterrupted
-from simulator.study.report import write_outputs
+from simulator.study.trace.chunks import StudyInterrupted
+from simulator.study.report.outputs import write_outputs
 from simulator.study.runner import run_study
 from simulator.study.schema import load_study
 

@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 
 from simulator.errors import UserError
-from simulator.study.scenarios import expand_scenarios, resolve_groups, trace_groups_of
+from simulator.study.inputs.scenarios import expand_scenarios, resolve_groups, trace_groups_of
 from simulator.study.schema import GroupSpec, ScenarioSpec
-from simulator.study.sun import solar_position, sun_direction, sun_frame
+from simulator.study.inputs.sun import solar_position, sun_direction, sun_frame
 
 
 def test_noon_elevation_at_the_june_solstice():

@@ -8,10 +8,10 @@ import numpy as np
 import pytest
 
 from simulator.errors import UserError
-from simulator.study.groups import patch_names
+from simulator.study.trace.groups import patch_names
 from simulator.study.runner import run_study
 from simulator.study.schema import load_study
-from simulator.study import sky_patches as sp
+from simulator.study.inputs import sky_patches as sp
 
 _spec = importlib.util.spec_from_file_location("_study_tiny", Path(__file__).with_name("test_study_resume.py"))
 _tiny = importlib.util.module_from_spec(_spec)
@@ -106,7 +106,7 @@ def test_the_bundled_daylight_study_is_one_trace():
     (210°–270°), both above the horizon."""
     pytest.importorskip("pvlib")
     from simulator.scene.usd import load_stage
-    from simulator.study.scenarios import check_split_groups, expand_scenarios, resolve_groups, trace_groups_of
+    from simulator.study.inputs.scenarios import check_split_groups, expand_scenarios, resolve_groups, trace_groups_of
 
     study, path = load_study(Path(__file__).resolve().parent.parent / "configs" / "studies" / "office_daylight.toml")
     scene = load_stage(path.parent / study.stage, light_units="photometric", radiometric_spectrum="E")

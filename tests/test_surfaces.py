@@ -144,7 +144,7 @@ def test_all_matte_stage_has_no_surface_table(tmp_path):
 
 def test_inputs_are_read_per_material_into_one_table(tmp_path):
     """Two panes bound to one material share one row; a presence sheet has its own; the floor is matte."""
-    body = (material("Glass", "float inputs:opacity = 0.2\n        float inputs:ior = 1.52\n"
+    body = (material("Glass", "float inputs:opacity = 0\n        float inputs:ior = 1.52\n"
                               "        float inputs:roughness = 0.1\n        float inputs:metallic = 0.25")
             + material("Mesh", 'float inputs:opacity = 0.3\n        token inputs:opacityMode = "presence"')
             + material("Matte") + quad("A", 1, "Glass") + quad("B", 2, "Glass") + quad("C", 3, "Mesh")
@@ -233,7 +233,7 @@ def test_datasheet_transmittance_is_an_absorbing_slab(tmp_path):
 
 def test_closed_pane_mesh_is_found_with_its_orientation(tmp_path):
     """A box pane is closed with its front outward (+1); flipped winding gives −1; a sheet is open (0)."""
-    body = material("G", "float inputs:opacity = 0.1") + box("Box", 1.0, 1.008, "G") + quad("Sheet", 3, "G")
+    body = material("G", "float inputs:opacity = 0") + box("Box", 1.0, 1.008, "G") + quad("Sheet", 3, "G")
     body += box("Flipped", 5.0, 5.008, "G").replace('def Mesh "Flipped"\n{', 'def Mesh "Flipped"\n{\n    uniform token orientation = "leftHanded"')
     g = load_stage(stage(tmp_path, body)).geometry
     side = {g.prim_names[g.prim[t]]: int(g.solid_side[t]) for t in range(g.n_triangles)}
@@ -270,8 +270,8 @@ def test_presence_sheet_passes_its_share_of_sky_to_direction_samples(tmp_path):
 @pytest.mark.parametrize("zenith", [0.0, 30.0, 60.0])
 @pytest.mark.parametrize("method", ["light", "path"])
 def test_clear_pane_passes_e_cos_t(tmp_path, zenith, method):
-    """A clear pane (opacity < 1, ior 1.52) under a delta sun: E cosθ T(θ) of the thin slab."""
-    body = material("G", "float inputs:opacity = 0.1\n        float inputs:ior = 1.52") + quad("Pane", 1.0, "G")
+    """A clear pane (opacity 0, ior 1.52) under a delta sun: E cosθ T(θ) of the thin slab."""
+    body = material("G", "float inputs:opacity = 0\n        float inputs:ior = 1.52") + quad("Pane", 1.0, "G")
     v, _ = run(stage(tmp_path, body + sun(zenith)), up(), method, 64)
     c = math.cos(math.radians(zenith))
     truth = E_SUN * c * slab(c, 1.52)[1]
@@ -286,7 +286,7 @@ def test_clear_pane_reflects_r(tmp_path, zenith):
     d = (0.0, math.sin(th), -math.cos(th))
     meter = [Sensor(name="m", kind=SensorKind.RADIANCE, position=np.array([0.0, -2.0 * d[1], 2.0]),
                     normal=np.array(d))]
-    body = (material("G", "float inputs:opacity = 0.1\n        float inputs:ior = 1.52") + material("Black", rho=0.0)
+    body = (material("G", "float inputs:opacity = 0\n        float inputs:ior = 1.52") + material("Black", rho=0.0)
             + quad("Pane", 0.0, "G", half=50) + quad("Floor", -0.5, "Black", half=1e3) + DOME)
     v, se = run(stage(tmp_path, body), meter, "path", 40000)
     truth = slab(math.cos(th), 1.52)[0] * L_DOME
@@ -310,7 +310,7 @@ def test_datasheet_pane_passes_its_transmittance(tmp_path, zenith):
 def test_box_pane_reads_as_the_sheet(tmp_path, thickness):
     """A pane exported as a closed thin box (6 and 10 mm) reads as the same pane as one sheet: the sun
     exactly, and a uniform sky (direction samples, inner reflections followed) within 1% and 4 σ."""
-    mats = material("G", "float inputs:opacity = 0.1\n        float inputs:ior = 1.52")
+    mats = material("G", "float inputs:opacity = 0\n        float inputs:ior = 1.52")
     for light, method, n in ((sun(30), "light", 16), (DOME, "bsdf", 20000)):
         sheet, se_s = run(stage(tmp_path, mats + quad("Pane", 1.0, "G", half=200) + light, "a.usda"), up(), method, n)
         boxed, se_b = run(stage(tmp_path, mats + box("Pane", 1.0, 1.0 + thickness, "G", half=200) + light, "b.usda"),
@@ -324,7 +324,7 @@ def test_clear_pane_passes_the_sky(tmp_path):
     2πL ∫ T(θ) cosθ sinθ dθ (adaptive quadrature of the slab formula)."""
     from scipy.integrate import quad as integrate
 
-    body = material("G", "float inputs:opacity = 0.1\n        float inputs:ior = 1.52")
+    body = material("G", "float inputs:opacity = 0\n        float inputs:ior = 1.52")
     v, se = run(stage(tmp_path, body + quad("Pane", 1.0, "G", half=1e3) + DOME), up(), "mis", 20000)
     truth = 2 * math.pi * L_DOME * integrate(lambda t: slab(math.cos(t), 1.52)[1] * math.cos(t) * math.sin(t),
                                              0, math.pi / 2, epsabs=1e-12)[0]
@@ -335,7 +335,7 @@ def test_plan_names_the_surfaces_and_why(tmp_path):
     """probesim plan: one line per surface beyond Lambert, what it needs and why; none for a matte stage."""
     from simulator.plan.planner import format_plan, make_plan
 
-    body = (material("G", "float inputs:opacity = 0.1\n        float inputs:roughness = 0.2")
+    body = (material("G", "float inputs:opacity = 0\n        float inputs:roughness = 0.2")
             + material("M", 'float inputs:opacity = 0.3\n        token inputs:opacityMode = "presence"')
             + quad("Pane", 1.0, "G") + box("Box", 2.0, 2.008, "G") + quad("Sheet", 3.0, "M") + sun(0))
     scene = load_stage(stage(tmp_path, body))
@@ -343,7 +343,7 @@ def test_plan_names_the_surfaces_and_why(tmp_path):
     text = format_plan(plan)
     assert plan.sensors[0].method != "exact"
     pane = next(l for l in plan.surfaces if "dielectric slab" in l)
-    assert "opacity 0.1 in transparent mode" in pane and "12 on closed meshes" in pane and "roughness" in pane
+    assert "opacity 0 in transparent mode" in pane and "12 on closed meshes" in pane and "roughness" in pane
     assert any("coverage 0.3" in l and "presence mode" in l for l in plan.surfaces)
     assert text.count("\nsurface ") == 2
     matte = load_stage(stage(tmp_path, material("X") + quad("F", 0, "X") + sun(0), "m.usda"))

@@ -104,7 +104,7 @@ def _reduced_study(name: str):
 
 
 def _study_csvs(name: str, out: Path, **kw):
-    from simulator.study.report import write_outputs
+    from simulator.study.report.outputs import write_outputs
     from simulator.study.runner import run_study
 
     study, path = _reduced_study(name)

@@ -271,7 +271,7 @@ def Xform "World" (
 def test_geom_subsets_bind_per_face(tmp_path):
     """A 2-face mesh with one materialBind subset (face 1): face 0 keeps the mesh's
     material (0.5), face 1 reads the subset's (0.9); a subset with opacity 0
-    removes its faces."""
+    in presence mode removes its faces."""
     quads = """
 def Mesh "M"
 {{
@@ -288,7 +288,7 @@ def Mesh "M"
     }}
 }}
 """
-    mats = grey("Half", 0.5) + grey("White", 0.9) + shader_material("Glass", "float inputs:opacity = 0")
+    mats = grey("Half", 0.5) + grey("White", 0.9) + shader_material("Glass", 'float inputs:opacity = 0\n        token inputs:opacityMode = "presence"')
     g = load_stage(stage(tmp_path, mats + quads.format(mat="White"))).geometry
     centre_x = g.points[g.triangles].mean(axis=1)[:, 0]
     np.testing.assert_allclose(g.albedo, np.where(centre_x < 1, 0.5, 0.9), rtol=1e-12)

@@ -43,6 +43,9 @@ def _parser() -> argparse.ArgumentParser:
     _stage_flags(r)
     r.add_argument("--confidence", type=float, metavar="C", help="confidence of that interval (default 0.95; 0.999 for a guarantee over many sensors)")
     r.add_argument("--device", choices=("cpu", "cuda", "auto"), help="Warp device (auto: CUDA when present)")
+    r.add_argument("--csv-columns", choices=("kinds", "full"),
+                   help="CSV columns: those of the run's sensor kinds (kinds, the default) or all 32 (full); "
+                        "overrides [output] csv_columns")
     r.add_argument("-q", "--quiet", action="store_true", help="print no table")
 
     pl = sub.add_parser("plan", help="print how each sensor of a config would be read, and why")
@@ -91,7 +94,12 @@ def _parser() -> argparse.ArgumentParser:
     ex.add_argument("--list", action="store_true", help="list the bundled examples")
     sd = sub.add_parser("study", help="placement study: candidates x scenarios, zone figures, the best K sensors (resumable, dask)")
     sd.add_argument("study", metavar="STUDY.toml", help="study file (.toml)")
-    sd.add_argument("--out", metavar="DIR", help="output and chunk folder (default: the study's [output] dir)")
+    sd.add_argument("-o", "--out", metavar="DIR", help="output and chunk folder (default: the study's [output] dir)")
+    sd.add_argument("--samples", type=int, help="samples per sensor (overrides [simulation] samples)")
+    sd.add_argument("--seed", type=int, help="study seed, from which every chunk's derives (overrides seed)")
+    sd.add_argument("--rel-error", type=float, metavar="R",
+                    help="adaptive: stop each sensor when its confidence half-width is under R × its reading "
+                         "(overrides [simulation] rel_error)")
     sd.add_argument("--scheduler", metavar="ADDRESS",
                     help="dask scheduler, e.g. tcp://host:8786 or tls://host:8786 (TLS from dask's distributed.comm.tls settings)")
     sd.add_argument("--local", action="store_true", help="run the chunks on a dask LocalCluster on this machine")
@@ -208,6 +216,11 @@ def _cmd_run(args) -> int:
         cfg, seed=args.seed, samples=args.samples, device=args.device, csv=args.output, method=args.method, rel_error=args.rel_error,
         confidence=args.confidence, variants=args.variant, time=args.time,
     )
+    if args.csv_columns is not None:
+        from dataclasses import replace
+
+        cfg = replace(cfg, output=replace(cfg.output, csv_columns=args.csv_columns),
+                      overrides={**cfg.overrides, "csv_columns": args.csv_columns})
     t0 = time.perf_counter()
     bar = ProgressBar("tracing")
     note = (lambda m: print(m, file=sys.stderr))
@@ -227,7 +240,7 @@ def _cmd_run(args) -> int:
               f"({rec['sensors_finished']} finished)", file=sys.stderr)  # fmt: skip
         return 130
     if not args.quiet:
-        print(format_table(out.rows))
+        print(format_table(out.rows, photometric_first=cfg.light_units == "photometric"))
     n = rec["sensors"]
     total = rec["samples_total"]
     trace = rec["timings_s"]["trace"]
@@ -280,7 +293,8 @@ def main(argv: list[str] | None = None) -> int:
         if args.command == "study":
             from simulator.commands.study import main_study
 
-            return main_study(args.study, args.out, args.scheduler, workers=args.workers, local=args.local)
+            return main_study(args.study, args.out, args.scheduler, workers=args.workers, local=args.local,
+                              samples=args.samples, seed=args.seed, rel_error=args.rel_error)
     except UserError as e:
         print(f"probesim: error: {e}", file=sys.stderr)
         return e.exit_code

@@ -1,4 +1,4 @@
-"""``probesim example NAME DIR``: a bundled config and its stage, copied out.
+"""``probesim example NAME DIR``: a bundled config (or study file) and its stage, copied out.
 
 The copy is self-contained and editable::
 
@@ -11,7 +11,10 @@ the config only two values change: ``stage`` (``"../stages/x.usda"`` becomes
 ``"stages/x.usda"``) and an ``[output] csv`` that would land outside DIR
 (``"../out/x.csv"`` becomes ``"out/x.csv"``); a ``[spectra] lights`` SPD
 file under ``stages/`` is copied too and its path rewritten alike; comments
-stay as they are.
+stay as they are. The study files of ``configs/studies/`` (placement,
+daylight, annual) are examples too, for ``probesim study DIR/NAME.toml``:
+their ``[output] dir`` becomes ``"out/<name>"`` and an ``[annual] weather``
+file is copied beside the stage (``stages/weather/...``).
 
 Nothing is written if the name is unknown or any file to be written already
 exists with other, non-empty contents: that is a one-line :class:`UserError`
@@ -26,22 +29,42 @@ import shutil
 import tomllib
 from pathlib import Path, PurePosixPath
 
-from simulator.bundled import configs_dir, example_names, stages_dir
+from simulator.bundled import STUDIES, example_config, example_names, stages_dir
 from simulator.errors import UserError
 
-__all__ = ["list_examples", "example_files", "copy_example"]
+__all__ = ["list_examples", "example_kind", "example_files", "copy_example"]
 
 #: an asset path in a .usda layer, ``@./textures/x.exr@`` (not ``@@@`` text)
 _ASSET = re.compile(r"(?<!@)@([^@\n]+)@(?!@)")
 
 
 def list_examples() -> list[tuple[str, str]]:
-    """``(name, stage)`` of every bundled example, ``stage`` relative to ``stages/``."""
+    """``(name, stage)`` of every bundled example (run configs, then studies), ``stage`` relative to ``stages/``."""
     out = []
     for name in example_names():
-        stage = _stage_of(configs_dir(command="example") / f"{name}.toml")
+        stage = _stage_of(example_config(name))
         out.append((name, stage.relative_to(stages_dir("example").resolve()).as_posix()))
     return out
+
+
+def example_kind(name: str) -> str:
+    """What example ``name`` is: ``"run"`` (a run config), or a study file: ``"study: annual"`` (an
+    ``[annual]`` year), ``"study: daylight"`` (a group traced as sky patches), ``"study: placement"``."""
+    config = example_config(name)
+    if config is None or config.parent.name != STUDIES:
+        return "run"
+    with open(config, "rb") as fh:
+        raw = tomllib.load(fh)
+    if "annual" in raw:
+        return "study: annual"
+    if any("sky" in g for g in raw.get("group", [])):
+        return "study: daylight"
+    return "study: placement"
+
+
+def _command(name: str) -> str:
+    """The command that runs example ``name``: ``run`` or ``study``."""
+    return "run" if example_kind(name) == "run" else "study"
 
 
 def _stage_of(config: Path) -> Path:
@@ -80,10 +103,9 @@ def example_files(name: str) -> tuple[str, dict[Path, Path]]:
     UserError
         No bundled config has that name.
     """
-    names = example_names()
-    if name not in names:
-        raise UserError(f"example: no bundled example {name!r} (one of: {', '.join(names)})")
-    config = configs_dir(command="example") / f"{name}.toml"
+    config = example_config(name)
+    if config is None:
+        raise UserError(f"example: no bundled example {name!r} (one of: {', '.join(example_names())})")
     root = stages_dir("example").resolve()
     text = config.read_text(encoding="utf-8")
     raw = tomllib.loads(text)
@@ -91,11 +113,21 @@ def example_files(name: str) -> tuple[str, dict[Path, Path]]:
     files = {p: Path("stages", p.relative_to(root)) for p in [stage, *_assets(stage, root)]}
     stage_to = PurePosixPath(*files[stage].parts).as_posix()
     text = _replace_value(text, "stage", raw["stage"], stage_to)
-    csv = raw.get("output", {}).get("csv")
-    csv_to = None
-    if csv is not None and PurePosixPath(csv).parts[:1] == ("..",):
-        csv_to = f"out/{PurePosixPath(csv).name}"
-        text = _replace_value(text, "csv", csv, csv_to)
+    outputs = {}  # ("output", key): new value, for an output (a run's csv, a study's dir) outside the folder
+    for key in ("csv", "dir"):
+        value = raw.get("output", {}).get(key)
+        if value is not None and PurePosixPath(value).parts[:1] == ("..",):
+            outputs[key] = f"out/{PurePosixPath(value).name}"
+            text = _replace_value(text, key, value, outputs[key])
+    weather = raw.get("annual", {}).get("weather")
+    weather_to = None
+    if isinstance(weather, str):  # a study's climate file: copied beside the stage
+        src = (config.parent / weather).resolve()
+        if not src.is_relative_to(root) or not src.is_file():
+            raise RuntimeError(f"bundled study {config} names {weather}, which is not a bundled file")
+        files[src] = Path("stages", src.relative_to(root))
+        weather_to = PurePosixPath(*files[src].parts).as_posix()
+        text = _replace_value(text, "weather", weather, weather_to)
     lights = raw.get("spectra", {}).get("lights")
     lights_to = None
     if isinstance(lights, str) and lights.lower().endswith(".csv"):  # an SPD file: copied beside the stage
@@ -106,8 +138,9 @@ def example_files(name: str) -> tuple[str, dict[Path, Path]]:
         lights_to = PurePosixPath(*files[spd].parts).as_posix()
         text = _replace_value(text, "lights", lights, lights_to)
     new = tomllib.loads(text)  # the rewrite must have changed exactly those values
-    if (new["stage"] != stage_to or (csv_to and new["output"]["csv"] != csv_to)
-            or (lights_to and new["spectra"]["lights"] != lights_to)):
+    if (new["stage"] != stage_to or any(new["output"][k] != v for k, v in outputs.items())
+            or (lights_to and new["spectra"]["lights"] != lights_to)
+            or (weather_to and new["annual"]["weather"] != weather_to)):
         raise RuntimeError(f"bundled config {config}: could not rewrite its paths")
     return text, files
 
@@ -154,12 +187,13 @@ def main_example(name: str | None, dest: str | None, list_only: bool, log=print)
     if list_only:
         rows = list_examples()
         width = max(len(n) for n, _ in rows)
+        swidth = max(len(stage) for _, stage in rows) + len("stages/")
         for n, stage in rows:
-            log(f"{n:<{width}}  stages/{stage}")
+            log(f"{n:<{width}}  {'stages/' + stage:<{swidth}}  {example_kind(n)}")
         return 0
     if name is None or dest is None:
         raise UserError("example: give an example's NAME and the DIR to copy it into (names: probesim example --list)")
     written = copy_example(name, dest)
     log(f"wrote {', '.join(str(p) for p in written)}")
-    log(f"run it: probesim run {written[0]}")
+    log(f"run it: probesim {_command(name)} {written[0]}")
     return 0

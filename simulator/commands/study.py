@@ -10,7 +10,7 @@ from pathlib import Path
 from simulator.commands.progress import ProgressBar
 from simulator.errors import UserError
 
-__all__ = ["main_study", "ChunkProgress", "closing_note"]
+__all__ = ["main_study", "ChunkProgress", "closing_note", "flag_overrides"]
 
 
 class ChunkProgress(ProgressBar):
@@ -70,7 +70,7 @@ def closing_note(res) -> list[str]:
     lines.append(f"wall time {t['total']:.1f} s (setup {t['setup']:.1f} s, chunks {t['chunks']:.1f} s); {cost}")
     pl = res.placement
     if pl is not None:
-        from simulator.study.scores import score_text
+        from simulator.study.figures.scores import score_text
 
         st = lambda v, e: score_text(pl.objective, v, e)  # noqa: E731  (relative errors in percent)
         what = "mean correlation" if pl.objective == "correlation" else "relative error"
@@ -111,15 +111,34 @@ def compute_overrides(scheduler: str | None, workers: int | None, local: bool) -
     return None, None
 
 
-def main_study(path: str, out: str | None, scheduler: str | None, workers: int | None = None, local: bool = False) -> int:
+def flag_overrides(samples: int | None = None, seed: int | None = None, rel_error: float | None = None) -> dict:
+    """The study-file keys the command line sets, as :func:`simulator.study.schema.load_study` takes them.
+
+    ``--samples`` and ``--rel-error`` are ``[simulation] samples`` and
+    ``rel_error`` (so ``--rel-error`` makes the study adaptive, with
+    ``samples`` as the first batch), ``--seed`` the study's top-level
+    ``seed``. Chunk ids hash the settings and the seed, so a run with other
+    flags never resumes another's chunks."""
+    out = {}
+    if samples is not None:
+        out[("simulation", "samples")] = ("--samples", samples)
+    if rel_error is not None:
+        out[("simulation", "rel_error")] = ("--rel-error", rel_error)
+    if seed is not None:
+        out[("seed",)] = ("--seed", seed)
+    return out
+
+
+def main_study(path: str, out: str | None, scheduler: str | None, workers: int | None = None, local: bool = False,
+               samples: int | None = None, seed: int | None = None, rel_error: float | None = None) -> int:
     from simulator.pipeline import _versions
-    from simulator.study.annual_outputs import annual_note, write_annual_outputs
-    from simulator.study.report import write_outputs
+    from simulator.study.annual.outputs import annual_note, write_annual_outputs
+    from simulator.study.report.outputs import write_outputs
     from simulator.study.runner import run_study
     from simulator.study.schema import load_study
 
     mode, n_workers = compute_overrides(scheduler, workers, local)
-    study, p = load_study(path)
+    study, p = load_study(path, flag_overrides(samples, seed, rel_error))
     out_dir = _out_dir(study, p, out)
     bar = ChunkProgress()
     t0 = time.perf_counter()
@@ -154,7 +173,7 @@ def main_study(path: str, out: str | None, scheduler: str | None, workers: int |
 
 def _annual(study, p: Path, out_dir: Path, scheduler: str | None):
     """The study's ``[annual]`` part: run (or resume) it; its files are written by the caller."""
-    from simulator.study.annual import run_annual
+    from simulator.study.annual.year import run_annual
 
     try:
         return run_annual(study, p, out_dir, scheduler=scheduler, log=lambda m: print(m, file=sys.stderr))

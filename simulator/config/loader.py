@@ -90,7 +90,8 @@ def load_config(path: str | os.PathLike) -> RunConfig:
         raise user_error(label, "stage", f"not a file: {stage}")
 
     default_csv = base / f"{cfg_path.stem}.csv"
-    output = OutputConfig(csv=default_csv if doc.output.csv is None else resolve_path(base, doc.output.csv))
+    output = OutputConfig(csv=default_csv if doc.output.csv is None else resolve_path(base, doc.output.csv),
+                          csv_columns=doc.output.csv_columns)
     sensors, grids = _sensors(doc, label)
     spectra = None
     if doc.output.responses is not None or doc.spectra is not None:

@@ -32,6 +32,8 @@ __all__ = [
 
 #: device names accepted by ``simulation.device`` and ``--device``
 DEVICES = ("cpu", "cuda", "auto")
+#: accepted values of ``[output] csv_columns``: the columns of the run's sensor kinds, or all of them
+CSV_COLUMN_SETS = ("kinds", "full")
 #: accepted values of ``light_units``
 LIGHT_UNITS = ("photometric", "radiometric")
 #: per-sensor sample cap of an adaptive run when ``max_samples`` is absent
@@ -188,9 +190,12 @@ class OutputConfig:
     ----------
     csv : Path
         Absolute path of the results CSV.
+    csv_columns : str
+        Its column set, one of :data:`CSV_COLUMN_SETS` (see :func:`simulator.io.results.csv_columns`).
     """
 
     csv: Path
+    csv_columns: str = "kinds"
 
 
 @dataclass(frozen=True)

@@ -55,6 +55,7 @@ flags are checked by these same models (:mod:`simulator.config.overrides`).
 
     [output]
     csv = "out.csv"       # default: "<config stem>.csv" beside the config
+    csv_columns = "kinds" # the columns of the run's sensor kinds; "full": all 32
     responses = ["par", "melanopic_edi"]  # optional: extra response columns
 
     [spectra]             # optional: the lights' spectral shape
@@ -78,7 +79,7 @@ from simulator.config.fields import (
     nonblank, tables,
 )  # fmt: skip
 from simulator.config.records import (
-    COMPONENTS, DEVICES, LIGHT_UNITS, METHODS, SEED_LIMIT, GridConfig, SimulationConfig,
+    COMPONENTS, CSV_COLUMN_SETS, DEVICES, LIGHT_UNITS, METHODS, SEED_LIMIT, GridConfig, SimulationConfig,
 )  # fmt: skip
 from simulator.config.sensors import SensorEntry
 from simulator.config.table import Table
@@ -94,18 +95,47 @@ _D = SimulationConfig()  # the defaults
 class Simulation(Table):
     """``[simulation]``; see :class:`~simulator.config.records.SimulationConfig` for the meaning of each key."""
 
-    samples: Count = _D.samples
-    seed: Annotated[Integer, Field(ge=0, lt=SEED_LIMIT)] = _D.seed
-    method: Annotated[Text, choice(METHODS, "method")] = _D.method
-    device: Annotated[Text, choice(DEVICES, "device")] = _D.device
-    rel_error: Annotated[Number, interval(0.0, 1.0)] | None = _D.rel_error
-    abs_error: Annotated[Number, Field(ge=0.0)] = _D.abs_error
-    max_samples: Count | None = _D.max_samples
-    time_limit_s: Positive | None = _D.time_limit_s
-    max_depth: Annotated[Integer, Field(ge=-1)] = _D.max_depth
-    threads: Annotated[Integer, Field(ge=0)] = _D.threads
-    component: Annotated[Text, choice(COMPONENTS, "component")] = _D.component
-    confidence: Annotated[Number, interval(0.5, 1.0)] = _D.confidence
+    samples: Count = Field(
+        _D.samples,
+        description="samples per sensor (fixed budget); adaptive: the first batch, a floor (left out: the engine "
+        "sizes it from a pilot, at most 1024)",
+    )
+    seed: Annotated[
+        Integer,
+        Field(ge=0, lt=SEED_LIMIT, description="random seed, 0 ≤ seed < 2³¹: the same seed, config and device give the "
+              "same CSV"),
+    ] = _D.seed
+    method: Annotated[
+        Text, choice(METHODS, "method"),
+        Field(description="estimator: auto | analytic | exact | light | bsdf | mis | path | guided (auto plans each "
+              "sensor)"),
+    ] = _D.method
+    device: Annotated[Text, choice(DEVICES, "device"), Field(description="cpu | cuda | auto")] = _D.device
+    rel_error: Annotated[Number, interval(0.0, 1.0)] | None = Field(
+        _D.rel_error,
+        description="adaptive: stop each sensor when its confidence half-width is under this share of its reading, "
+        "0 < x < 1 (unset: fixed budget)",
+    )
+    abs_error: Annotated[
+        Number,
+        Field(ge=0.0, description="adaptive: or when the half-width is under this absolute floor, in the reading's "
+              "unit (readings near 0)"),
+    ] = _D.abs_error
+    max_samples: Count | None = Field(_D.max_samples, description="adaptive: per-sensor sample cap")
+    time_limit_s: Positive | None = Field(_D.time_limit_s, description="adaptive: wall-clock limit of the run")
+    max_depth: Annotated[
+        Integer, Field(ge=-1, description="path bounce cap; -1: none (unbiased Russian roulette ends paths)")
+    ] = _D.max_depth
+    threads: Annotated[Integer, Field(ge=0, description="CPU worker threads; 0: all cores")] = _D.threads
+    component: Annotated[
+        Text, choice(COMPONENTS, "component"),
+        Field(description="total | direct (straight from emitters) | indirect (reflected at least once)"),
+    ] = _D.component
+    confidence: Annotated[
+        Number, interval(0.5, 1.0),
+        Field(description="adaptive: confidence of the stopping interval, 0.5 < x < 1 (0.999: the target for nearly "
+              "every sensor of many)"),
+    ] = _D.confidence
 
     def to_record(self) -> SimulationConfig:
         return SimulationConfig(**dict(self), samples_set="samples" in self.model_fields_set)
@@ -118,12 +148,16 @@ class Grid(Table):
     ``max(1, round(height / sy))`` cells for ``spacing`` ``(sx, sy)``.
     """
 
-    name: Annotated[Text, nonblank("empty name")]
-    position: Point
-    normal: Direction
-    size: Size
-    up: UpDirection
-    spacing: Spacing
+    name: Annotated[Text, nonblank("empty name"), Field(description="the cells are named name[i,j]")]
+    position: Annotated[Point, Field(description="centre of the rectangle", json_schema_extra={"unit": "m"})]
+    normal: Annotated[Direction, Field(description="the side the cells face (toward the light they measure)")]
+    size: Annotated[Size, Field(description="width, height of the rectangle", json_schema_extra={"unit": "m"})]
+    up: Annotated[UpDirection, Field(description="direction of the height side (not parallel to normal)")]
+    spacing: Annotated[
+        Spacing,
+        Field(description="cell size: one number or [sx, sy]; cells = round(size / spacing)",
+              json_schema_extra={"unit": "m"}),
+    ]
 
     def cells(self) -> tuple[int, int]:
         """``(nx, ny)``: the cell counts along the width and height, from size and spacing alone."""
@@ -154,9 +188,22 @@ class Grid(Table):
 class Output(Table):
     """``[output]``: ``csv`` is resolved against the config's folder (default ``<config stem>.csv`` there)."""
 
-    csv: Annotated[Text, nonblank("empty path")] | None = None
+    csv: Annotated[Text, nonblank("empty path")] | None = Field(
+        None,
+        description="the CSV written, relative to the config (default: <config stem>.csv beside it); the run "
+        "record, maps and probes go beside it",
+    )
+    csv_columns: Annotated[Text, choice(CSV_COLUMN_SETS, "CSV column set")] = Field(
+        "kinds",
+        description='the CSV\'s columns: "kinds", those of the run\'s sensor kinds (no cell empty in a run of one '
+        'kind), or "full", all 32 whatever the kinds (--csv-columns)',
+    )
     #: response names / custom tables, checked by :mod:`simulator.spectra.config`
-    responses: Any = None
+    responses: Any = Field(
+        None, json_schema_extra={"type": "list"},
+        description='extra spectral response columns: "par", "epar", "scotopic", "melanopic", "melanopic_edi", ... '
+        'or { custom = "diode.csv", name = "diode" }',
+    )
 
 
 
@@ -164,14 +211,33 @@ class Output(Table):
 class RunFile(Table):
     """A whole run config file."""
 
-    stage: Annotated[Text, nonblank("empty path")]
-    light_units: Annotated[Text, choice(LIGHT_UNITS, "light units")] = "photometric"
-    radiometric_spectrum: Annotated[Text, choice(tuple(SPECTRA), "spectrum")] = "E"
-    variants: Variants = {}
-    time: Number | None = None
+    stage: Annotated[
+        Text, nonblank("empty path"), Field(description="the USD stage (.usda/.usdc/.usdz), relative to the config")
+    ]
+    light_units: Annotated[
+        Text, choice(LIGHT_UNITS, "light units"),
+        Field(description="photometric: a light's intensity is cd/m² (lx for a normalized DistantLight); "
+              "radiometric: W/m²/sr (W/m²)"),
+    ] = "photometric"
+    radiometric_spectrum: Annotated[
+        Text, choice(tuple(SPECTRA), "spectrum"),
+        Field(description="spectrum of radiometric lights: E (equal energy) or D65"),
+    ] = "E"
+    variants: Variants = Field(
+        {},
+        description='USD variant selections applied before reading: { set = "variant" } on every prim with that '
+        'set, or "/Prim/Path" = { set = "variant" } on one prim',
+    )
+    time: Number | None = Field(
+        None, description="USD time code the stage is read at (default: each attribute's earliest sample)"
+    )
     simulation: Simulation = Simulation()
     sensor: Annotated[list[SensorEntry], tables("sensor")] = []
     grid: Annotated[list[Grid], tables("grid")] = []
     output: Output = Output()
     #: ``[spectra]``, checked by :mod:`simulator.spectra.config`
-    spectra: Any = None
+    spectra: Any = Field(
+        None, json_schema_extra={"type": "table"},
+        description='one key, lights: the lights\' spectral shape, an illuminant ("D65", "A"), a temperature (3000) '
+        'or an SPD .csv (default: D65, or radiometric_spectrum)',
+    )

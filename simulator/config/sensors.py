@@ -64,9 +64,13 @@ class SensorFields(Table):
     #: the sensor kind built
     KIND: ClassVar[SensorKind]
 
-    name: Annotated[Text, nonblank("empty name")] | None = None
-    kind: str
-    position: Point
+    name: Annotated[Text, nonblank("empty name")] | None = Field(
+        None, description="the CSV row's name (default: sensor[<index>])"
+    )
+    kind: str = Field(description="irradiance | radiance | patch | probe | cylindrical | semicylindrical")
+    position: Annotated[
+        Point, Field(description="where the sensor is (a patch's centre)", json_schema_extra={"unit": "m"})
+    ]
 
     @classmethod
     def key_not_allowed(cls, key: str) -> PydanticCustomError:
@@ -84,7 +88,7 @@ class IrradianceEntry(SensorFields):
 
     KIND = SensorKind.IRRADIANCE
     kind: Literal["irradiance"]
-    normal: Direction
+    normal: Annotated[Direction, Field(description="the side it faces (toward the light it measures)")]
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.normal, source=source)
@@ -95,8 +99,9 @@ class RadianceEntry(SensorFields):
 
     KIND = SensorKind.RADIANCE
     kind: Literal["radiance"]
-    direction: Direction
-    half_angle_deg: Annotated[Number, interval(0.0, 90.0, closed_lo=True, unit="degrees")] = 0.0
+    direction: Annotated[Direction, Field(description="the direction it looks (toward the light it measures)")]
+    half_angle_deg: Annotated[Number, interval(0.0, 90.0, closed_lo=True, unit="degrees")] = Field(
+        0.0, description="half angle of the cone it averages over; 0: one direction")
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         return Sensor(
@@ -111,8 +116,8 @@ class PatchEntry(SensorFields):
     KIND = SensorKind.PATCH
     kind: Literal["patch"]
     normal: Direction
-    size: Size
-    up: UpDirection
+    size: Annotated[Size, Field(description="width, height of the rectangle", json_schema_extra={"unit": "m"})]
+    up: Annotated[UpDirection, Field(description="direction of the height side")]
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         return Sensor(
@@ -126,7 +131,7 @@ class ProbeEntry(SensorFields):
 
     KIND = SensorKind.PROBE
     kind: Literal["probe"]
-    resolution: Resolution = DEFAULT_PROBE_RESOLUTION
+    resolution: Resolution = Field(DEFAULT_PROBE_RESOLUTION, description="lat-long map width, height in pixels")
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         # a probe has no facing; normal and up are placeholders (the map's
@@ -165,7 +170,7 @@ class CylindricalEntry(SensorFields):
 
     KIND = SensorKind.CYLINDRICAL
     kind: Literal["cylindrical"]
-    axis: Direction = Field(default_factory=_z_axis)
+    axis: Direction = Field(default_factory=_z_axis, description="the cylinder's axis")
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         return Sensor(name=name, kind=self.KIND, position=self.position, normal=_perpendicular(self.axis), up=self.axis,
@@ -179,7 +184,8 @@ class SemicylindricalEntry(SensorFields):
     KIND = SensorKind.SEMICYLINDRICAL
     kind: Literal["semicylindrical"]
     axis: Direction = Field(default_factory=_z_axis)
-    facing: Annotated[Direction, AfterValidator(_facing_beside_axis)]
+    facing: Annotated[Direction, AfterValidator(_facing_beside_axis), Field(
+        description="the way the half cylinder faces (made orthogonal to axis)")]
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.facing, up=self.axis, source=source)

@@ -240,7 +240,7 @@ class DeviceScene:
         for s in (g.surfaces if modelled else []):
             r = SurfRec()
             r.coverage = float(s.coverage)
-            r.pane = 1 if s.pane else 0
+            r.pane = (2 if s.layered else 1) if s.pane else 0  # kernels.surface_rec codes
             r.ior = float(s.ior)
             r.tau = float(s.tau)
             r.glossy = 1 if s.glossy else 0

@@ -118,7 +118,7 @@ class LightGroups:
         Per light: −1, or (a dome split into sky patches) the first of its
         146 groups, ``patch_base + p`` for Tregenza patch p and
         ``patch_base + 145`` below the horizon
-        (:mod:`simulator.study.sky_patches`).
+        (:mod:`simulator.study.inputs.sky_patches`).
     batch : bool
         Covariance from batch means (each kernel thread's block of samples a
         batch; :class:`~simulator.engine.stats.GroupBatchStats`) in place of

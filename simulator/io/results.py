@@ -17,10 +17,11 @@ from pathlib import Path
 
 import numpy as np
 
+from simulator.config.records import CSV_COLUMN_SETS  # declared once, with the config's choices
 from simulator.errors import UserError
 from simulator.scene.model import SENSOR_SPECS, SensorKind, Sensor
 
-__all__ = ["COLUMNS", "PROBE_COLUMNS", "Reading", "readings_from", "probe_readings", "extra_columns", "write_outputs", "record_text", "format_table", "json_default"]
+__all__ = ["COLUMNS", "CSV_COLUMN_SETS", "csv_columns", "PROBE_COLUMNS", "Reading", "readings_from", "probe_readings", "extra_columns", "write_outputs", "record_text", "format_table", "json_default"]
 
 
 def _value_columns() -> tuple[str, ...]:
@@ -38,6 +39,10 @@ def _value_columns() -> tuple[str, ...]:
 #: CSV columns, in order; units are in the names. A column that does not
 #: apply to a sensor's kind is left empty, never 0.
 COLUMNS = ("sensor", "kind", "x", "y", "z", "dx", "dy", "dz", *_value_columns(), "samples", "seconds", "method", "target_met")
+#: ``[output] csv_columns`` (``probesim run --csv-columns``): ``"kinds"``, the columns of the sensor kinds
+#: the run holds (:func:`csv_columns`); ``"full"``, every column of :data:`COLUMNS` whatever the kinds
+#: the columns every row of a run fills: who, what, where
+_ALWAYS = ("sensor", "kind", "x", "y", "z")
 #: columns only a probe fills: scalar irradiance (fluence rate, ∫L dω over the
 #: sphere) and the unit mean direction of arrival (normalised ∫L·ω dω,
 #: radiometric) with its angular standard error; the six face irradiances and
@@ -129,6 +134,41 @@ def extra_columns(rows: list[Reading]) -> list[str]:
     return list(seen)
 
 
+def csv_columns(rows: list[Reading], columns: str = "full") -> tuple[str, ...]:
+    """The CSV header of a run's rows.
+
+    Parameters
+    ----------
+    columns : {"kinds", "full"}
+        ``"full"``: :data:`COLUMNS` then :func:`extra_columns`, the 32-column
+        layout whatever the sensors. ``"kinds"``: the same columns in the
+        same order, keeping only those the run's sensor kinds have:
+        ``sensor, kind, x, y, z``; ``dx, dy, dz`` if a kind is directed (all
+        but probes); each present kind's value columns
+        (``SensorKindSpec.columns``: irradiance 4, radiance 4, patch 8 with
+        its flux, probe 8, cylindrical 4, semicylindrical 4); the extra
+        (response) columns; ``samples, seconds, method``; and ``target_met``
+        where a row has one (an adaptive or interrupted run). So a run of
+        one kind leaves no cell empty; a run mixing kinds leaves a kind's
+        cells empty in the other kinds' rows, as the full set does.
+    """
+    full = COLUMNS + tuple(extra_columns(rows))
+    if columns == "full":
+        return full
+    if columns != "kinds":
+        raise ValueError(f"columns must be one of {CSV_COLUMN_SETS}, not {columns!r}")
+    specs = {r.sensor.kind: r.sensor.spec for r in rows}.values()
+    keep = set(_ALWAYS) | {"samples", "seconds", "method"}
+    if any(spec.directed for spec in specs):
+        keep |= {"dx", "dy", "dz"}
+    for spec in specs:
+        keep |= {c for group in spec.columns for c in group.columns}
+    if any(r.target_met is not None for r in rows):
+        keep.add("target_met")
+    keep |= set(extra_columns(rows))
+    return tuple(c for c in full if c in keep)
+
+
 def _cells(values: list) -> list[str]:
     """:func:`_fmt` of each value of one column, with fast paths for a column of one type (a
     1,024-row CSV's 32 columns cell by cell took ~15 ms)."""
@@ -144,12 +184,13 @@ def _cells(values: list) -> list[str]:
     return [_fmt(x) for x in values]
 
 
-def _csv_text(rows: list[Reading]) -> str:
-    """The CSV: a header of :data:`COLUMNS` (and :func:`extra_columns`), one row per reading, each
-    cell :func:`_fmt` of its value (empty where the column does not apply), built column by column."""
+def _csv_text(rows: list[Reading], column_set: str = "full") -> str:
+    """The CSV: a header of :func:`csv_columns` (``column_set`` "full": :data:`COLUMNS` and
+    :func:`extra_columns`), one row per reading, each cell :func:`_fmt` of its value (empty where the
+    column does not apply), built column by column."""
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    columns = COLUMNS + tuple(extra_columns(rows))
+    columns = csv_columns(rows, column_set)
     w.writerow(columns)
     sensors = [r.sensor for r in rows]
     directed = [s.spec.directed for s in sensors]
@@ -218,10 +259,13 @@ def _atomic_write_all(files: dict) -> None:
 
 
 def write_outputs(csv_path: Path, rows: list[Reading], record: dict, extra: dict | None = None,
-                  encoded: dict[str, str] | None = None) -> Path:
+                  encoded: dict[str, str] | None = None, csv_columns: str = "full") -> Path:
     """Write the CSV, its run record (``<csv stem>.run.json``) and ``extra``
     files (path → text, bytes or a writer callable, e.g. from
     :mod:`simulator.io.maps`) atomically, all renamed into place together.
+
+    ``csv_columns``: the CSV's column set (:data:`CSV_COLUMN_SETS`, see :func:`csv_columns`; ``probesim
+    run`` passes its config's ``[output] csv_columns``, "kinds" by default).
 
     ``encoded``: top-level keys of ``record`` whose value is given already
     encoded, as ``json.dumps(value, indent=2, sort_keys=True)`` (see
@@ -233,7 +277,7 @@ def write_outputs(csv_path: Path, rows: list[Reading], record: dict, extra: dict
     _atomic_write_all(
         {
             **(extra or {}),
-            csv_path: _csv_text(rows),
+            csv_path: _csv_text(rows, csv_columns),
             record_path: record_text(record, encoded),
         }
     )
@@ -270,14 +314,24 @@ def json_default(o):
     raise TypeError(f"not JSON serialisable: {type(o).__name__}")
 
 
-def format_table(rows: list[Reading], max_rows: int = 30) -> str:
-    """A terminal table: one line per sensor (grids summarised past ``max_rows``)."""
-    lines = [f"{'sensor':<24} {'kind':<10} {'reading':>14} {'± stderr':>12} {'rel':>7}  {'photometric':>14}  {'samples':>8}"]
+def format_table(rows: list[Reading], max_rows: int = 30, photometric_first: bool = False) -> str:
+    """A terminal table: one line per sensor (grids summarised past ``max_rows``).
+
+    ``photometric_first`` (a run whose ``light_units`` are photometric): the
+    reading, its ± and relative error are the photometric quantity (lx,
+    cd/m², lm) and the radiometric twin (W/m², W/m²/sr, W) is the second
+    column; otherwise the other way round. The relative error is the same
+    either way for a grey scene, the two channels' own for a coloured one.
+    """
+    second = "radiometric" if photometric_first else "photometric"
+    lines = [f"{'sensor':<24} {'kind':<10} {'reading':>14} {'± stderr':>12} {'rel':>7}  {second:>14}  {'samples':>8}"]
     shown = rows if len(rows) <= max_rows else [r for r in rows if r.sensor.grid is None][:max_rows]
     for r in shown:
         v = r.values
         g = r.sensor.spec.columns[r.sensor.spec.headline]  # a probe's: scalar irradiance (fluence rate)
-        val, err, unit, ph, phu = v[g.columns[0]], v[g.columns[1]], g.unit, v[g.columns[2]], g.photometric_unit
+        first, twin = ((2, 3, g.photometric_unit), (0, g.unit)) if photometric_first else ((0, 1, g.unit), (2, g.photometric_unit))
+        val, err, unit = v[g.columns[first[0]]], v[g.columns[first[1]]], first[2]
+        ph, phu = v[g.columns[twin[0]]], twin[1]
         rel = f"{100 * err / abs(val):.2f}%" if val else "-"
         lines.append(
             f"{r.sensor.name[:24]:<24} {r.sensor.spec.name:<10} {val:>9.4g} {unit:<4} {err:>12.3g} {rel:>7}  {ph:>9.4g} {phu:<5} {r.samples:>8}"
@@ -290,8 +344,12 @@ def format_table(rows: list[Reading], max_rows: int = 30) -> str:
         for name, g in grids.items():
             lx = np.array([r.values["illuminance_lx"] for r in g])
             w = np.array([r.values["irradiance_W_m2"] for r in g])
-            lines.append(
-                f"grid {name}: {len(g)} sensors, irradiance min/mean/max {w.min():.4g}/{w.mean():.4g}/{w.max():.4g} W/m², "
-                f"illuminance {lx.min():.4g}/{lx.mean():.4g}/{lx.max():.4g} lx, uniformity (min/mean) {lx.min() / lx.mean() if lx.mean() else 0:.3f}"
-            )
+            radiometric = f"irradiance min/mean/max {w.min():.4g}/{w.mean():.4g}/{w.max():.4g} W/m²"
+            photometric = f"illuminance {lx.min():.4g}/{lx.mean():.4g}/{lx.max():.4g} lx"
+            if photometric_first:
+                photometric = photometric.replace("illuminance ", "illuminance min/mean/max ")
+                radiometric = radiometric.replace("irradiance min/mean/max ", "irradiance ")
+            pair = (photometric, radiometric) if photometric_first else (radiometric, photometric)
+            lines.append(f"grid {name}: {len(g)} sensors, {pair[0]}, {pair[1]}, "
+                         f"uniformity (min/mean) {lx.min() / lx.mean() if lx.mean() else 0:.3f}")
     return "\n".join(lines)

@@ -12,13 +12,13 @@ docs/DESIGN.md "Light groups in one pass".
 
 import warp as wp
 
-from simulator.study.sky_patches import BAND_COUNTS, BAND_DEG, BAND_START, GROUND
+from simulator.study.inputs.sky_patches import BAND_COUNTS, BAND_DEG, BAND_START, GROUND
 
 from .records import TraceParams
 from .sampling import PI
 
 
-# Tregenza's bands, from the one table the host uses (simulator.study.sky_patches)
+# Tregenza's bands, from the one table the host uses (simulator.study.inputs.sky_patches)
 _BAND_VEC = wp.types.vector(length=len(BAND_COUNTS), dtype=wp.int32)
 BAND_COUNT = wp.constant(_BAND_VEC(*BAND_COUNTS))
 BAND_FIRST = wp.constant(_BAND_VEC(*BAND_START))
@@ -30,7 +30,7 @@ BAND_WIDTH_DEG = wp.constant(BAND_DEG)
 @wp.func
 def tregenza_patch(d: wp.vec3) -> int:
     """Tregenza sky patch of direction ``d`` (world frame, +Z up, +Y north, +X east): 0…144 above the
-    horizon, 145 at or below it; the twin of :func:`simulator.study.sky_patches.patch_index`
+    horizon, 145 at or below it; the twin of :func:`simulator.study.inputs.sky_patches.patch_index`
     (12° altitude bands, the last the polar cap; patch 0 of a band centred on north)."""
     if d[2] <= 0.0:
         return GROUND_SLOT

@@ -12,6 +12,7 @@ from .lights import SceneRec, tri_params, tri_vertex
 from .rays import first_hit, offset_length
 from .records import TraceParams
 from .sampling import INV_PI, sample_triangle_bary
+from .coverage import coverage_at
 from .surfaces import pass_factor, transmittance_along
 
 
@@ -178,11 +179,15 @@ def scatter_share(scene: SceneRec, face: int, d: wp.vec3, ng: wp.vec3, p: wp.vec
     there (the SCATTER event of :func:`.surfaces.surface_event`): 1 on a
     matte face, 1 − (what passes) = the coverage c on a cut-out (its
     texture's at p where one drives it), 0 on a pane (a pane reflects,
-    passes or absorbs, it never scatters diffusely)."""
+    passes or absorbs, it never scatters diffusely), the matte share c on
+    a translucent layer (pane 2, whose gap is the slab)."""
     sid = scene.surf_id[face]
     if sid < 0:
         return 1.0
-    if scene.surf[sid].pane != 0:
+    s = scene.surf[sid]
+    if s.pane == 2:
+        return coverage_at(scene, s, face, p)
+    if s.pane != 0:
         return 0.0
     return 1.0 - pass_factor(scene, face, d, ng, p)
 

@@ -12,7 +12,9 @@ import warp as wp
 @wp.struct
 class SurfRec:
     coverage: float  # probability in (0, 1] that a ray meets the surface (presence, cut-outs); 1: opaque
-    pane: int  # 1: a dielectric slab of ior (thin pane, or a face of a slab-like closed mesh)
+    # 1: a dielectric slab of ior where the surface is (thin pane, or a face of a slab-like closed mesh);
+    # 2: a translucent layer: the share ``coverage`` is the matte face, the rest (the gap) that slab
+    pane: int
     ior: float  # index of refraction (≥ 1)
     tau: float  # internal transmittance of one normal pass through the pane (1: clear)
     # the UsdPreviewSurface BSDF (kernels.bsdf), when glossy is 1; the diffuse ρ is the face's albedo

@@ -27,6 +27,12 @@ two ways:
   less variance per sample in the office behind a pane of τ = 0.9,
   docs/DESIGN.md).
 
+A translucent layer (``SurfRec.pane`` 2: UsdPreviewSurface's transparent
+mode, 0 < opacity < 1) swaps the roles: its share c is the face's own
+(matte) scattering and its gap 1 − c is the clear slab, so a shadow ray
+passes (1 − c)·T and a path ray draws the slab's pass or mirror (with
+the same weights) where u ≥ c.
+
 Where an opacity texture drives the coverage, c is read at the hit point
 (:mod:`.coverage`), so both expectations hold texel by texel.
 
@@ -107,13 +113,15 @@ def pane_rt(scene: SceneRec, face: int, d: wp.vec3, ng: wp.vec3) -> wp.vec2:
 def pass_factor(scene: SceneRec, face: int, d: wp.vec3, ng: wp.vec3, p: wp.vec3) -> float:
     """The fraction of light along ``d`` that passes ``face`` at p: 0 for a matte face, (1 − c) + c·T for
     a surface of coverage c (its texture's at p where one drives it, :func:`.coverage.coverage_at`)
-    whose part that is there transmits T (0 unless it is a pane)."""
+    whose part that is there transmits T (0 unless it is a pane); (1 − c)·T on a translucent layer."""
     sid = scene.surf_id[face]
     if sid < 0:
         return 0.0
     s = scene.surf[sid]
     c = coverage_at(scene, s, face, p)
     t = float(0.0)
+    if s.pane == 2:  # a translucent layer: the gap is the slab, the share c the matte face
+        return (1.0 - c) * pane_rt(scene, face, d, ng)[1]
     if s.pane != 0:
         t = pane_rt(scene, face, d, ng)[1]
     return (1.0 - c) + c * t
@@ -168,7 +176,11 @@ def surface_event(scene: SceneRec, face: int, d: wp.vec3, ng: wp.vec3, p: wp.vec
     s = scene.surf[sid]
     x = u
     c = coverage_at(scene, s, face, p)
-    if c < 1.0:
+    if s.pane == 2:  # a translucent layer: its share c scatters, its gap is the slab
+        if x < c:
+            return ev
+        x = (x - c) / (1.0 - c)  # uniform again on [0, 1)
+    elif c < 1.0:
         if x >= c:
             ev.kind = PASS
             return ev

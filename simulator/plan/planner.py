@@ -588,12 +588,12 @@ def _light_sampling(scene: Scene, plans: list[SensorPlan]) -> dict[str, str]:
 
 def _diffuse_faces(g) -> np.ndarray:
     """Per triangle: whether it has a diffuse lobe the surface guide can stand in for, shape (T,):
-    albedo > 0 and neither a pane (which only reflects, passes or absorbs) nor a metal (metallic 1:
-    no diffuse lobe)."""
+    albedo > 0 and neither a pane (which only reflects, passes or absorbs; a translucent layer keeps its
+    matte share) nor a metal (metallic 1: no diffuse lobe)."""
     out = g.albedo > 0
     if g.has_surfaces:
         for k, s in enumerate(g.surfaces):
-            if s.pane or (s.glossy and s.metallic >= 1.0):
+            if (s.pane and not s.layered) or (s.glossy and s.metallic >= 1.0):
                 out &= g.surface_id != k
     return out
 

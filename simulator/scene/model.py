@@ -106,6 +106,10 @@ class Light:
     spectrum_authored: bool = False
     #: linear sRGB ``color`` input (``emission`` holds its BT.709 grey), for spectral transport
     color: tuple[float, float, float] = (1.0, 1.0, 1.0)
+    #: what the stage stated of its output, for the run record: ``{"flux_lm": ...}`` (or with ``power_W`` and
+    #: ``efficacy_lm_per_W``) where it gave lumens, else its ``intensity``, ``exposure``, ``normalize`` and
+    #: ``color_grey``; empty for a light not read from a stage
+    authored: dict = field(default_factory=dict)
     #: DomeLight only: the UsdLux PortalLights that guide its sampling (see :class:`Portal`)
     portals: tuple["Portal", ...] = ()
 

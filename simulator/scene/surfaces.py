@@ -16,7 +16,7 @@ warning):
   "fragments with opacity < opacityThreshold are fully transparent").
   Where a ``UsdUVTexture`` drives ``opacity`` the coverage is read per
   texel at the hit (:class:`CoverageTexture`; ``Surface.opacity_texture``).
-- **panes** (``opacity`` < 1 in the default ``transparent`` mode, or a
+- **panes** (``opacity`` 0 in the default ``transparent`` mode, or a
   ``probesim:transmittance``): a dielectric of the material's ``ior``. An
   open surface is a *thin slab*: two parallel interfaces with no offset
   between them, the inner reflections summed (:func:`slab_rt`). A face of a
@@ -27,6 +27,16 @@ warning):
   thin box) are then exactly the sheet; a solid that is not a parallel slab
   (a lens, a glass sphere) keeps the slab's reflectance and transmittance
   but not refraction's bend (named in the summary warning).
+- **translucent layers** (0 < ``opacity`` < 1 in ``transparent`` mode,
+  ``Surface.layered``): the face is its opaque (matte) surface over a share
+  ``opacity`` of it and a clear pane of its ``ior`` over the rest, so it
+  passes (1 − o)·T(θ) and reflects (1 − o)·R(θ) of the light as a mirror,
+  and a share o scatters off the matte part. This is the reading of
+  UsdPreviewSurface's own path-traced reference (OpenUSD's hdPrman,
+  ``UsdPreviewSurfaceParameters.osl``: for opacity < 1 the diffuse gain is
+  ``opacity``, the refraction gain ``1 − opacity``, glass of ``ior`` at
+  roughness 0). Two such layers pass (1 − o)²·T² (at ior 1: (1 − o)²).
+  ``coverage`` holds o; an opacity texture gives o per texel.
 
 Thin-slab formulas (unpolarised light, each polarisation summed on its own,
 then averaged; Born & Wolf, *Principles of Optics*, §1.5; the incoherent
@@ -109,10 +119,20 @@ class Surface:
     name : str
         The material's prim path.
     coverage : float
-        Probability in (0, 1] that a ray meets the surface (1: opaque).
+        Probability in (0, 1] that a ray meets the surface (1: opaque); on a
+        ``layered`` row the share o of the face that is opaque (the rest is
+        the pane).
     pane : bool
         A dielectric pane of ``ior``: thin slab (open surface) or slab-like
         solid (closed mesh).
+    layered : bool
+        A translucent layer (``transparent`` mode, 0 < opacity < 1; module
+        docstring): ``coverage`` of the face is its matte surface, the rest
+        the pane (``pane`` is then True too).
+    thin_walled : bool
+        A pane whose every face is a thin sheet, on a closed mesh too (MaterialX
+        ``thin_walled``, MDL ``thin_walled``); else a closed pane mesh is a
+        slab-like solid entered once.
     ior : float
         Index of refraction (≥ 1).
     tau : float
@@ -146,6 +166,8 @@ class Surface:
     name: str
     coverage: float = 1.0
     pane: bool = False
+    layered: bool = False
+    thin_walled: bool = False
     ior: float = 1.5
     tau: float = 1.0
     transmittance: float | None = None
@@ -183,11 +205,14 @@ class Surface:
         """What this surface needs beyond a matte face, in words, for the plan."""
         out = []
         if self.opacity_texture >= 0:
-            rule = f"opacity >= {self.opacity_threshold:g}" if self.opacity_threshold > 0 else "presence"
+            rule = (f"opacity >= {self.opacity_threshold:g}" if self.opacity_threshold > 0
+                    else "translucent layer" if self.layered else "presence")
             out.append(f"coverage per texel ({rule})")
-        elif self.coverage < 1.0:
+        elif self.coverage < 1.0 and not self.layered:
             out.append(f"coverage {self.coverage:g}")
-        if self.pane:
+        if self.layered:
+            out.append(f"translucent: matte over {self.coverage:g} of it, a clear slab (ior {self.ior:g}) over the rest")
+        elif self.pane:
             what = f"T0 {self.transmittance:g}" if self.transmittance is not None else "clear"
             if self.transmittance_spectrum is not None:
                 what += f" from {self.transmittance_spectrum[0]}"

@@ -10,13 +10,13 @@ from typing import Callable
 import numpy as np
 
 from simulator.errors import UserError
-from simulator.study.candidates import build_candidates, candidate_warnings
-from simulator.study.chunks import ChunkStore, StudyInterrupted, chunk_scene, make_chunks, readings_of
-from simulator.study.distributed import choose_mode, run_chunks
-from simulator.study.groups import derive_seed, group_scene
-from simulator.study.objectives import compliance, zone_figures
-from simulator.study.placement import place_sensors
-from simulator.study.scenarios import check_split_groups, dark_scenarios, expand_scenarios, resolve_groups, trace_groups_of
+from simulator.study.inputs.candidates import build_candidates, candidate_warnings
+from simulator.study.trace.chunks import ChunkStore, StudyInterrupted, chunk_scene, make_chunks, readings_of
+from simulator.study.trace.distributed import choose_mode, run_chunks
+from simulator.study.trace.groups import derive_seed, group_scene
+from simulator.study.figures.objectives import compliance, zone_figures
+from simulator.study.figures.placement import place_sensors
+from simulator.study.inputs.scenarios import check_split_groups, dark_scenarios, expand_scenarios, resolve_groups, trace_groups_of
 from simulator.study.schema import Study
 
 __all__ = ["StudyResult", "run_study", "zone_members"]
@@ -52,7 +52,7 @@ class StudyResult:
     reference: dict | None = None
     warnings: list = field(default_factory=list)
     files: list = field(default_factory=list)
-    areas: list = field(default_factory=list)  #: simulator.study.areas.AreaRow, EN 12464-1 areas
+    areas: list = field(default_factory=list)  #: simulator.study.figures.areas.AreaRow, EN 12464-1 areas
     scene: object | None = None  #: the stage as read (geometry for the heat maps' plans); not in any output file
 
 
@@ -133,7 +133,7 @@ def _reference_scenario(first: list, specs: list, results: dict, adaptive: bool)
 def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None = None, log: Callable[[str], None] = print,
               on_chunk: Callable[[int, int, float], None] | None = None, stop_after: int | None = None,
               mode: str | None = None, workers: int | None = None, reference_run: bool = True) -> StudyResult:  # fmt: skip
-    """Run (or resume) a validated study and return its numbers (outputs are written by :mod:`simulator.study.report`).
+    """Run (or resume) a validated study and return its numbers (outputs are written by :mod:`simulator.study.report.outputs`).
 
     Parameters
     ----------
@@ -182,7 +182,7 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
 
     block = study.compute.sensor_block
     if block == "auto":  # from the study's size alone, so chunks (and bytes) are the same in every mode
-        from simulator.study.blocks import auto_block
+        from simulator.study.trace.blocks import auto_block
 
         block = auto_block(len(sensors), study.simulation.samples)
     specs = make_chunks(tgs, sensors, groups, stage, study.light_units, _sim_dict(study), study.seed, block, sky_split)
@@ -242,7 +242,7 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
             figures[(z.name, sc.name)] = f
             checks[(z.name, sc.name)] = compliance(f, dict(z.targets))
 
-    from simulator.study.areas import area_rows
+    from simulator.study.figures.areas import area_rows
 
     areas = area_rows(study, sets, candidates, scenarios, mean, stderr, label)
     placement = None

@@ -7,13 +7,14 @@ name the file and the key, in the style of ``probesim run``, e.g.
 Cross-references (a zone naming a candidate set, a scenario naming a group)
 are checked here too; what needs the stage (prim paths, light patterns,
 variant names) is checked when the stage is read (see
-:mod:`simulator.study.scenarios` and :mod:`simulator.study.candidates`).
+:mod:`simulator.study.inputs.scenarios` and :mod:`simulator.study.inputs.candidates`).
 
 Schema
 ------
 ::
 
     stage = "../stages/office.usda"    # required
+    project = "Office, level 2"        # the report's title (default: the stage's file name)
     light_units = "photometric"        # or "radiometric"
     seed = 1                           # study seed: chunk seeds derive from it
 
@@ -96,9 +97,10 @@ Schema
 
     [output]
     dir = "../out/office_study"        # default: "<study stem>.out/" beside the file
-    heat_map_scale = "per_scenario"    # or "log": one logarithmic scale for all panels
+    heat_map_scale = "shared"          # the plans' colour scale: one per zone for all scenarios;
+                                       # "per_scenario": each plan its own; "log": one logarithmic
 
-    [annual]                           # a year of daylight (simulator.study.annual);
+    [annual]                           # a year of daylight (simulator.study.annual.year);
     weather = "../stages/weather/greensboro_tmy3_lux.csv"  # EPW or TMY3
     sky_group = "sky"                  # a group with sky = "tregenza"
     illuminance = "file"               # or "efficacy" (Perez 1990 on the irradiances)
@@ -107,7 +109,7 @@ Schema
     # da_lx, ase_lx, ase_hours, udi_lx, en17037_lx, step_h, replicates, sun_patches;
     # sun_indirect = "traced" with sun_group (the DistantLight's group) and sun_bin_deg
 
-    [[control]]                        # photosensor control (simulator.study.control)
+    [[control]]                        # photosensor control (simulator.study.annual.control)
     zone = "window_zone"
     groups = ["window_row"]            # light groups it dims
     model = "closed_loop"              # closed_loop | open_loop | switched
@@ -146,24 +148,38 @@ class SimulationSpec(_Model):
     (the study's seed drives per-chunk seeds) and ``time_limit_s`` (a
     wall-clock stop would make results depend on the machine)."""
 
-    samples: int = Field(256, ge=1)
-    method: Literal["auto", "light", "bsdf", "mis", "path", "guided"] = "auto"
-    device: Literal["cpu", "cuda", "auto"] = "cpu"
-    rel_error: float | None = Field(None, gt=0.0, lt=1.0)
-    abs_error: float = Field(0.0, ge=0.0)
-    max_samples: int | None = Field(None, ge=1)
-    max_depth: int = Field(-1, ge=-1)
-    threads: int = Field(0, ge=0)
-    component: Literal["total", "direct", "indirect"] = "total"
-    confidence: float = Field(0.95, gt=0.5, lt=1.0)
+    samples: int = Field(256, ge=1, description="samples per sensor and pass (adaptive: the first batch)")
+    method: Literal["auto", "light", "bsdf", "mis", "path", "guided"] = Field(
+        "auto", description="estimator, as a run config's (no analytic/exact)"
+    )
+    device: Literal["cpu", "cuda", "auto"] = Field("cpu", description="cpu | cuda | auto")
+    rel_error: float | None = Field(
+        None, gt=0.0, lt=1.0,
+        description=(
+            "adaptive: a sensor stops when every scenario's recombined reading meets this relative half-width"
+        )
+    )
+    abs_error: float = Field(0.0, ge=0.0, description="adaptive: or this absolute half-width, in the reading's unit")
+    max_samples: int | None = Field(None, ge=1, description="adaptive: per-sensor sample cap")
+    max_depth: int = Field(-1, ge=-1, description="path bounce cap; -1: none (Russian roulette)")
+    threads: int = Field(0, ge=0, description="CPU worker threads; 0: all cores")
+    component: Literal["total", "direct", "indirect"] = Field("total", description="total | direct | indirect")
+    confidence: float = Field(0.95, gt=0.5, lt=1.0, description="adaptive: confidence of the stopping interval")
 
 
 class ComputeSpec(_Model):
-    mode: Literal["auto", "inprocess", "local"] = "auto"
-    workers: int = Field(0, ge=0)
-    scheduler: str | None = None
-    retries: int = Field(2, ge=0, le=20)
-    sensor_block: Union[Literal["auto"], Annotated[int, Field(ge=1)]] = "auto"  #: sensors per chunk (simulator.study.blocks)
+    mode: Literal["auto", "inprocess", "local"] = Field(
+        "auto",
+        description=(
+            "where chunks run: auto (in this process on ≤ 2 cores, else a dask LocalCluster), inprocess, local"
+        )
+    )
+    workers: int = Field(0, ge=0, description="LocalCluster worker processes; 0: one per core")
+    scheduler: str | None = Field(None, description="a running dask scheduler, tcp://host:8786 or tls://...")
+    retries: int = Field(2, ge=0, le=20, description="re-runs of a failed chunk")
+    sensor_block: Union[Literal["auto"], Annotated[int, Field(ge=1)]] = Field(
+        "auto", description="sensors per chunk, or \"auto\": the smallest block whose chunks cost ≤ 1.2× one run"
+    )
 
     @field_validator("scheduler")
     @classmethod
@@ -174,17 +190,30 @@ class ComputeSpec(_Model):
 
 
 class CandidateSpec(_Model):
-    name: str = Field(min_length=1)
-    kind: Literal["irradiance", "photosensor", "cylindrical", "semicylindrical"] = "irradiance"
-    half_angle_deg: float = Field(30.0, gt=0.0, lt=90.0)
-    facing: Vec3 | None = None  #: semicylindrical: where the half cylinders face (across the axis)
-    on: list[str] | None = None
-    height_m: float = 0.0
-    spacing_m: Union[float, str] = "en12464"
-    wall_band_m: float = Field(0.5, ge=0.0)
-    drop_inside: list[str] = []
-    points: list[Vec3] | None = None
-    normal: Vec3 | None = None
+    name: str = Field(min_length=1, description="the set's name (zones, areas, placement and control refer to it)")
+    kind: Literal["irradiance", "photosensor", "cylindrical", "semicylindrical"] = Field(
+        "irradiance",
+        description=(
+            "irradiance (cosine) | photosensor (radiance in a cone) | cylindrical | semicylindrical"
+        )
+    )
+    half_angle_deg: float = Field(30.0, gt=0.0, lt=90.0, description="photosensor: half angle of its cone")
+    facing: Vec3 | None = Field(None, description="semicylindrical: where the half cylinders face (across the axis)")
+    on: list[str] | None = Field(None, description="flat prims (paths) to grid; the grid lies on their plane")
+    height_m: float = Field(
+        0.0, description="the grid's offset along each prim's front normal (0.8: a work plane over the floor)"
+    )
+    spacing_m: Union[float, str] = Field(
+        "en12464", description="grid spacing, or \"en12464\": p = 0.2·5^log10(d), d the longer side"
+    )
+    wall_band_m: float = Field(0.5, ge=0.0, description="band along the prim's edges left out")
+    drop_inside: list[str] = Field(
+        [], description="prims (paths or patterns) whose boxes drop the points inside them (furniture)"
+    )
+    points: list[Vec3] | None = Field(
+        None, description="an explicit list of [x, y, z] instead of on", json_schema_extra={"unit": "m"}
+    )
+    normal: Vec3 | None = Field(None, description="points: the direction the sensors face")
 
     @field_validator("spacing_m")
     @classmethod
@@ -221,10 +250,20 @@ class CandidateSpec(_Model):
 class GroupSpec(_Model):
     """A light group: prim paths or patterns (``lights``), a USD collection, or both (their union)."""
 
-    name: str = Field(min_length=1)
-    lights: list[str] = []
-    collection: str | None = Field(None, min_length=1)
-    sky: Literal["tregenza"] | None = None
+    name: str = Field(min_length=1, description="the group's name (scenario levels refer to it)")
+    lights: list[str] = Field([], description="light prim paths or fnmatch patterns")
+    collection: str | None = Field(
+        None, min_length=1,
+        description=(
+            "a USD collection, \"/Prim.collection:name\", resolved to the lights it includes"
+        )
+    )
+    sky: Literal["tregenza"] | None = Field(
+        None,
+        description=(
+            "\"tregenza\": the group's one DomeLight traced as 145 sky patches and a ground (daylight coefficients)"
+        )
+    )
 
     @model_validator(mode="after")
     def _some_lights(self):
@@ -234,11 +273,15 @@ class GroupSpec(_Model):
 
 
 class SunSpec(_Model):
-    azimuth_deg: float | None = Field(None, ge=-360.0, le=360.0)
-    elevation_deg: float | None = Field(None, ge=-90.0, le=90.0)
-    latitude_deg: float | None = Field(None, ge=-90.0, le=90.0)
-    longitude_deg: float | None = Field(None, ge=-180.0, le=180.0)
-    time: str | None = None
+    azimuth_deg: float | None = Field(
+        None, ge=-360.0, le=360.0, description="sun azimuth from north (+Y) toward east (+X)"
+    )
+    elevation_deg: float | None = Field(None, ge=-90.0, le=90.0, description="sun elevation above the horizon")
+    latitude_deg: float | None = Field(
+        None, ge=-90.0, le=90.0, description="or: site latitude (with longitude_deg and time; pvlib's solar position)"
+    )
+    longitude_deg: float | None = Field(None, ge=-180.0, le=180.0, description="site longitude, east positive")
+    time: str | None = Field(None, description="ISO 8601 date and time with its UTC offset")
 
     @model_validator(mode="after")
     def _one_way(self):
@@ -256,11 +299,28 @@ class SunSpec(_Model):
 class SkySpec(_Model):
     """A sky on a split sky group (``[[group]] sky = "tregenza"``): its patch levels L_p / L_dome."""
 
-    group: str = Field(min_length=1)
-    cie: Union[Literal["overcast", "uniform"], Annotated[int, Field(ge=1, le=15)]]
-    horizontal_lx: float | None = Field(None, gt=0.0, allow_inf_nan=False)
-    ground: float = Field(0.0, ge=0.0, le=1e6, allow_inf_nan=False)
-    sun: SunSpec | None = None
+    group: str = Field(min_length=1, description="the split sky group (sky = \"tregenza\") it sets")
+    cie: Union[Literal["overcast", "uniform"], Annotated[int, Field(ge=1, le=15)]] = Field(
+        description="CIE standard general sky type 1–15, \"overcast\" or \"uniform\""
+    )
+    horizontal_lx: float | None = Field(
+        None, gt=0.0, allow_inf_nan=False,
+        description=(
+            "the sky's unobstructed horizontal illuminance (default: the dome's authored π·L)"
+        )
+    )
+    ground: float = Field(
+        0.0, ge=0.0, le=1e6, allow_inf_nan=False,
+        description=(
+            "the dome below the horizon, relative to its authored radiance"
+        )
+    )
+    sun: SunSpec | None = Field(
+        None,
+        description=(
+            "the sun for the sky's formula only, as scenario.sun (default: the scenario's, else the stage's)"
+        )
+    )
 
 
 class ScenarioSpec(_Model):
@@ -272,12 +332,21 @@ class ScenarioSpec(_Model):
     typed as a percentage (``100``) is not traced as a hundredfold lamp.
     """
 
-    name: str = Field(min_length=1)
-    levels: dict[str, Union[Level, list[Level]]]
-    sun: SunSpec | None = None
-    sky: SkySpec | None = None
-    variants: dict[str, str] = {}
-    allow_boost: bool = False  #: levels above 1 are meant (more output than the stage authors)
+    name: str = Field(min_length=1, description="the scenario's name")
+    levels: dict[str, Union[Level, list[Level]]] = Field(
+        description="group → dimming level; lists expand into their product"
+    )
+    sun: SunSpec | None = Field(
+        None,
+        description=(
+            "turns the stage's DistantLight: azimuth_deg/elevation_deg, or latitude_deg/longitude_deg/time"
+        )
+    )
+    sky: SkySpec | None = Field(None, description="a CIE sky on a split sky group: its patch levels")
+    variants: dict[str, str] = Field({}, description="USD variant selections, set → variant")
+    allow_boost: bool = Field(
+        False, description="levels above 1 are meant (a boost beyond the stage's output); without it they are refused"
+    )
 
     @field_validator("levels")
     @classmethod
@@ -302,10 +371,14 @@ class ScenarioSpec(_Model):
 
 
 class ZoneSpec(_Model):
-    name: str = Field(min_length=1)
-    candidates: str
-    region: tuple[float, float, float, float] | None = None
-    targets: dict[Literal["mean", "min", "max", "u0", "min_max"], float] = {}
+    name: str = Field(min_length=1, description="the zone's name")
+    candidates: str = Field(description="the candidate set it judges")
+    region: tuple[float, float, float, float] | None = Field(
+        None, description="x0, y0, x1, y1: the candidates inside (default: all)", json_schema_extra={"unit": "m"}
+    )
+    targets: dict[Literal["mean", "min", "max", "u0", "min_max"], float] = Field(
+        {}, description="mean, min, max (reading units), u0, min_max: pass/fail/unsure per scenario"
+    )
 
     @field_validator("region")
     @classmethod
@@ -316,20 +389,30 @@ class ZoneSpec(_Model):
 
 
 class AreaSpec(_Model):
-    """An EN 12464-1 area (:mod:`simulator.study.areas`)."""
+    """An EN 12464-1 area (:mod:`simulator.study.figures.areas`)."""
 
-    name: str = Field(min_length=1)
-    kind: Literal["task", "walls", "ceiling", "cylindrical"] = "task"
-    candidates: str
-    task: tuple[float, float, float, float] | None = None  #: kind task: x0, y0, x1, y1 (m)
-    region: tuple[float, float, float, float] | None = None  #: other kinds: the candidates inside it (default all)
-    required_lx: float | None = Field(None, gt=0.0)  #: task: the task's Ē_m; others: default from the standard
-    u0: float | None = Field(None, gt=0.0, le=1.0)  #: task: the task's U0; others: default 0.10
-    surround_m: float = Field(0.5, ge=0.5)
-    background_m: float = Field(3.0, ge=3.0)
-    space: Literal["general", "office"] = "general"  #: walls/ceiling: 50/30 lx, or 75/50 lx in offices, education, health care
-    maintenance_factor: float = Field(1.0, gt=0.0, le=1.0)
-    horizontal: str | None = None  #: cylindrical: a horizontal set at the same points, for E_z/E_h
+    name: str = Field(min_length=1, description="the area's name")
+    kind: Literal["task", "walls", "ceiling", "cylindrical"] = Field(
+        "task", description="task | walls | ceiling | cylindrical"
+    )
+    candidates: str = Field(description="the candidate set it is read on")
+    task: tuple[float, float, float, float] | None = Field(
+        None, description="task: x0, y0, x1, y1 of the task area", json_schema_extra={"unit": "m"}
+    )
+    region: tuple[float, float, float, float] | None = Field(
+        None, description="other kinds: the candidates inside it (default: all)", json_schema_extra={"unit": "m"}
+    )
+    required_lx: float | None = Field(
+        None, gt=0.0, description="task: the task's maintained Ē_m; others: default from the standard"
+    )
+    u0: float | None = Field(None, gt=0.0, le=1.0, description="task: the task's U0; others: default 0.10")
+    surround_m: float = Field(0.5, ge=0.5, description="width of the immediate surrounding band")
+    background_m: float = Field(3.0, ge=3.0, description="width of the background band")
+    space: Literal["general", "office"] = Field(
+        "general", description="walls/ceiling: general (50/30 lx) or office (75/50 lx)"
+    )
+    maintenance_factor: float = Field(1.0, gt=0.0, le=1.0, description="every figure is maintained: × this factor")
+    horizontal: str | None = Field(None, description="cylindrical: a horizontal set at the same points, for E_z/E_h")
 
     @model_validator(mode="after")
     def _fields(self):
@@ -347,37 +430,56 @@ class AreaSpec(_Model):
 
 
 class PlacementSpec(_Model):
-    k: int = Field(1, ge=1, le=64)
-    candidates: list[str] = Field(min_length=1)
-    target: str = "each_zone"
-    objective: Literal["correlation", "max_rel_error", "p95_rel_error"] = "correlation"
-    replicates: int = Field(200, ge=20, le=10000)
+    k: int = Field(1, ge=1, le=64, description="sensors to choose")
+    candidates: list[str] = Field(min_length=1, description="candidate sets to choose from")
+    target: str = Field("each_zone", description="\"each_zone\", or one zone's name")
+    objective: Literal["correlation", "max_rel_error", "p95_rel_error"] = Field(
+        "correlation", description="correlation | max_rel_error | p95_rel_error (after a per-sensor linear calibration)"
+    )
+    replicates: int = Field(200, ge=20, le=10000, description="parametric bootstrap replicates for the score errors")
 
 
 class OutputSpec(_Model):
-    dir: str | None = None
-    heat_map_scale: Literal["per_scenario", "log"] = "per_scenario"
+    dir: str | None = Field(
+        None, description="output folder, relative to the study (default: <study stem>.out/ beside it)"
+    )
+    heat_map_scale: Literal["shared", "per_scenario", "log"] = Field(
+        "shared", description="the plans' colour scale: shared (one per zone for all scenarios), per_scenario (each "
+                              "plan its own) or log (one logarithmic scale)"
+    )
 
 
 class AnnualSpec(_Model):
-    """A year of daylight from a climate file (:mod:`simulator.study.annual`)."""
+    """A year of daylight from a climate file (:mod:`simulator.study.annual.year`)."""
 
-    weather: str = Field(min_length=1)             # EPW (.epw) or TMY3 (.csv), relative to the study file
-    sky_group: str = Field(min_length=1)           # a [[group]] with sky = "tregenza"
-    illuminance: Literal["file", "efficacy"] = "file"
-    ground_reflectance: float = Field(0.2, ge=0.0, le=1.0)
-    step_h: int = Field(1, ge=1, le=24)            # every n-th daylight hour
-    occupied_h: tuple[float, float] = (8.0, 18.0)  # local standard time, IES LM-83
-    da_lx: float = Field(300.0, gt=0.0)
-    ase_lx: float = Field(1000.0, gt=0.0)
-    ase_hours: float = Field(250.0, ge=0.0)
-    udi_lx: tuple[float, float] = (100.0, 2000.0)
-    en17037_lx: tuple[float, float] = (300.0, 100.0)
-    replicates: int = Field(64, ge=8, le=4096)
-    sun_patches: int = Field(4, ge=1, le=8)        # nearest patches the sun's interreflected light is spread over
-    sun_indirect: Literal["patches", "traced"] = "patches"  # or traced: the sun traced at binned positions
-    sun_group: str | None = Field(None, min_length=1)       # traced: a [[group]] holding the stage's one DistantLight
-    sun_bin_deg: float = Field(6.0, ge=1.0, le=30.0)        # traced: size of the sun-position bins
+    weather: str = Field(min_length=1, description="EPW (.epw) or TMY3 (.csv) climate file, relative to the study")
+    sky_group: str = Field(min_length=1, description="a [[group]] with sky = \"tregenza\"")
+    illuminance: Literal["file", "efficacy"] = Field(
+        "file", description="file (the file's illuminance fields) or efficacy (Perez 1990 on its irradiances)"
+    )
+    ground_reflectance: float = Field(0.2, ge=0.0, le=1.0, description="the ground below the horizon")
+    step_h: int = Field(1, ge=1, le=24, description="every n-th daylight hour")
+    occupied_h: tuple[float, float] = Field(
+        (8.0, 18.0), description="occupied hours [start, end], local standard time (IES LM-83)"
+    )
+    da_lx: float = Field(300.0, gt=0.0, description="daylight autonomy threshold (DA300)")
+    ase_lx: float = Field(1000.0, gt=0.0, description="annual sunlight exposure threshold (ASE1000)")
+    ase_hours: float = Field(250.0, ge=0.0, description="ASE: hours above ase_lx that count a point (ASE1000/250h)")
+    udi_lx: tuple[float, float] = Field((100.0, 2000.0), description="useful daylight illuminance band [lower, upper]")
+    en17037_lx: tuple[float, float] = Field(
+        (300.0, 100.0), description="EN 17037 minimum: [target, minimum target] illuminances"
+    )
+    replicates: int = Field(64, ge=8, le=4096, description="bootstrap replicate years for the metrics' standard errors")
+    sun_patches: int = Field(
+        4, ge=1, le=8, description="nearest sky patches the sun's interreflected light is spread over"
+    )
+    sun_indirect: Literal["patches", "traced"] = Field(
+        "patches", description="patches (no extra trace) or traced (the sun traced at binned positions)"
+    )
+    sun_group: str | None = Field(
+        None, min_length=1, description="traced: a [[group]] holding the stage's one DistantLight"
+    )
+    sun_bin_deg: float = Field(6.0, ge=1.0, le=30.0, description="traced: size of the sun-position bins")
 
     @model_validator(mode="after")
     def _ranges(self):
@@ -389,23 +491,30 @@ class AnnualSpec(_Model):
 
 
 class ControlSpec(_Model):
-    """Photosensor control of a zone's light groups over the annual hours (:mod:`simulator.study.control`)."""
+    """Photosensor control of a zone's light groups over the annual hours (:mod:`simulator.study.annual.control`)."""
 
-    zone: str
-    groups: list[str] = Field(min_length=1)        # light groups the control dims
-    model: Literal["closed_loop", "open_loop", "switched"] = "closed_loop"
-    photosensor: str                               # a candidate's name, or a [[candidates]] set to choose from
-    target_lx: float | None = Field(None, gt=0.0)  # default: the zone's mean target
-    min_level: float = Field(0.1, ge=0.0, le=1.0)  # dimming floor (closed and open loop)
-    deadband: float = Field(0.2, ge=0.0, le=10.0)  # switched: off above target·(1 + deadband), on below target
+    zone: str = Field(description="the zone whose lamps it dims")
+    groups: list[str] = Field(min_length=1, description="light groups the control dims")
+    model: Literal["closed_loop", "open_loop", "switched"] = Field(
+        "closed_loop", description="closed_loop | open_loop | switched"
+    )
+    photosensor: str = Field(description="a candidate's name, or a candidate set: the best annual control")
+    target_lx: float | None = Field(None, gt=0.0, description="default: the zone's mean target")
+    min_level: float = Field(0.1, ge=0.0, le=1.0, description="dimming floor (closed and open loop)")
+    deadband: float = Field(
+        0.2, ge=0.0, le=10.0, description="switched: off above target·(1 + deadband), on below target"
+    )
 
 
 class Study(_Model):
     """A whole study file; see the module docstring for the schema."""
 
-    stage: str
-    light_units: Literal["photometric", "radiometric"] = "photometric"
-    seed: int = Field(1, ge=0, lt=_SEED_LIMIT)
+    stage: str = Field(description="the USD stage, relative to the study")
+    project: str | None = Field(None, min_length=1, description="the report's title (default: the stage's file name)")
+    light_units: Literal["photometric", "radiometric"] = Field(
+        "photometric", description="photometric | radiometric, as a run config's"
+    )
+    seed: int = Field(1, ge=0, lt=_SEED_LIMIT, description="study seed: each chunk's seed derives from it")
     simulation: SimulationSpec = SimulationSpec()
     compute: ComputeSpec = ComputeSpec()
     candidates: list[CandidateSpec] = Field(min_length=1)
@@ -526,8 +635,16 @@ def _message(err: dict) -> str:
     return " ".join(msg.split())
 
 
-def load_study(path: str | os.PathLike) -> tuple[Study, Path]:
+def load_study(path: str | os.PathLike, overrides: dict | None = None) -> tuple[Study, Path]:
     """Read and validate a study file.
+
+    Parameters
+    ----------
+    overrides : dict, optional
+        Command-line values, ``{(table, ..., key): (flag, value)}`` (e.g.
+        ``{("simulation", "samples"): ("--samples", 64)}``), written into the
+        file's tables before validation, so a flag obeys its key's own rule;
+        a message about one names the flag.
 
     Returns
     -------
@@ -553,6 +670,15 @@ def load_study(path: str | os.PathLike) -> tuple[Study, Path]:
         raise UserError(f"{label}: cannot read study file: {exc.strerror or exc}") from None
     except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
         raise UserError(f"{label}: invalid TOML: {exc}") from None
+    flags = {}
+    for loc, (flag, value) in (overrides or {}).items():
+        table = raw
+        for part in loc[:-1]:
+            table = table.setdefault(part, {})
+            if not isinstance(table, dict):
+                raise UserError(f"{label}: {_key_path(loc[:-1])}: must be a table")
+        table[loc[-1]] = value
+        flags[tuple(loc)] = flag
     try:
         study = Study.model_validate(raw)
     except ValidationError as exc:
@@ -560,7 +686,7 @@ def load_study(path: str | os.PathLike) -> tuple[Study, Path]:
         ctx_err = (err.get("ctx") or {}).get("error")
         if isinstance(ctx_err, _RefError):
             raise UserError(f"{label}: {ctx_err.key}: {ctx_err}") from None
-        key = _key_path(err["loc"])
+        key = flags.get(tuple(err["loc"])) or _key_path(err["loc"])
         if err["type"] == "extra_forbidden" and err["loc"]:
             hint = _allowed_hint(err["loc"])
             raise UserError(f"{label}: {key}: unknown key{hint}") from None

@@ -426,6 +426,8 @@ def glazing(ctx: CaseContext, s: Sensor, ch: int) -> float:
     cos_sheet = abs(float(toward[2]))
     if row.pane:
         t = float(cf.thin_slab(cos_sheet, row.ior, row.transmittance)[1])
+        if row.layered:  # a translucent layer: the slab over the share 1 − opacity
+            t *= 1.0 - row.coverage
     else:
         t = 1.0 - row.coverage
     return l.emission[ch] * c * t

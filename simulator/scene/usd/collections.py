@@ -10,7 +10,7 @@ included collections, and the ``expansionRule`` (``expandPrims`` and
 its prim path is included. UsdLux's linking collections (``lightLink``,
 ``shadowLink`` of every light, ``filterLink`` of a light filter) select the
 geometry a light or filter acts on, not lights, and are left out. A study's light group can name a collection
-instead of prim patterns (:func:`simulator.study.scenarios.resolve_groups`).
+instead of prim patterns (:func:`simulator.study.inputs.scenarios.resolve_groups`).
 
 References
 ----------

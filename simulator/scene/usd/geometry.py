@@ -101,7 +101,8 @@ class _GeometryBuilder:
         points = np.concatenate(self._points).astype(np.float64)
         triangles = np.concatenate(self._tris).astype(np.int32)
         prim = np.concatenate(self._prim)
-        pane = np.array([s.pane for s in surfaces] + [False], bool)[sid]
+        # (a thin-walled pane is a sheet on every face: not a solid, whatever the mesh)
+        pane = np.array([s.pane and not s.thin_walled for s in surfaces] + [False], bool)[sid]
         side = solid_sides(points, triangles, prim, pane) if pane.any() else None
         ids = np.concatenate(self._reflectance_id).astype(np.int32)
         emission_rgb = np.concatenate(self._emission_rgb)

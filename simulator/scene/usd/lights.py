@@ -6,7 +6,10 @@ emission follows the UsdLux "Quantities and units" rule (see
 
     value = intensity * 2**exposure * grey(color) / sizeFactor
 
-with its sizes in world metres. A textured DomeLight carries its lat-long
+with its sizes in world metres, or, where the prim states its lumens
+(``probesim:flux_lm``, or ``probesim:power_W`` × ``probesim:efficacy_lm_per_W``),
+the emission that sends those lumens out (:mod:`simulator.scene.usd.flux`).
+A textured DomeLight carries its lat-long
 OpenEXR map as luminance grey. A gprim with ``MeshLightAPI`` (or
 ``LightAPI`` applied directly) is geometry that emits: the same light
 inputs give its radiance, and its bound material gives only its albedo.
@@ -26,6 +29,7 @@ from simulator.scene.model import Light, LightKind
 from simulator.scene.usd.legacy import lux_get
 from simulator.scene.usd.context import _Context, _get, _layer_relative, _not_uniform
 from simulator.scene.usd.materials import _albedo, _albedo_colour, _grey, _material_inputs
+from simulator.scene.usd.flux import apply_stated_output, stated_output
 from simulator.scene.usd.shaping import has_shaping, read_shaping
 from simulator.scene.usd.tessellation import _parallelogram_areas
 from simulator.scene.usd.transforms import _axis_scales, _frame, _mean_scale, _world_affine
@@ -85,6 +89,7 @@ def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:
         return None
     a, t = _world_affine(ctx, prim)
     raw, spectrum, normalize, source = _light_inputs(ctx, prim)
+    stated = stated_output(ctx, prim)
     light = Light(name=str(prim.GetPath()), kind=kind, position=t, frame=_frame(ctx, prim, a, right_handed=False),
                   emission=(0.0, 0.0))
     value = _shape_light(ctx, prim, light, a, raw, normalize)
@@ -97,11 +102,27 @@ def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:
     if colour.size == 3 and np.ptp(colour) > 0.0:
         light.color = tuple(float(c) for c in colour)
     read_shaping(ctx, prim, light)
+    if stated is not None:  # lumens (or W × lm/W): the emission that sends them out, after size and shaping
+        apply_stated_output(ctx, prim, light, stated, spectrum)
+        light.authored = dict(stated)
+        return light
+    light.authored = _authored_inputs(ctx, prim, normalize)
+    if light.shaping is not None and light.shaping.absolute:  # the file's candelas × LLF: intensity is not used
+        light.authored = {"ies_absolute": True, "light_loss_factor": light.shaping.light_loss_factor}
     if light.kind == LightKind.POINT and light.emission[1] == 0.0 and raw > 0:
         # a radius-0 sphere without normalize has I = L pi r^2 = 0, unless absolute photometry
         # (probesim:ies:absolute) set its candelas from the file: warn only when nothing is left
         ctx.warn(f"{prim.GetPath()}: SphereLight of radius 0 without normalize emits nothing")
     return light
+
+
+def _authored_inputs(ctx: _Context, prim: Usd.Prim, normalize: bool) -> dict:
+    """The inputs that set a light's output as the run record states them: intensity, exposure,
+    normalize and the grey of its colour (``intensity × 2**exposure × grey`` before any size factor)."""
+    api = UsdLux.LightAPI(prim)
+    return {"intensity": float(lux_get(ctx, prim, api.GetIntensityAttr())),
+            "exposure": float(lux_get(ctx, prim, api.GetExposureAttr())), "normalize": bool(normalize),
+            "color_grey": float(_grey(ctx, prim, lux_get(ctx, prim, api.GetColorAttr())))}
 
 
 def _light_inputs(ctx: _Context, prim: Usd.Prim) -> tuple[float, str | float, bool, str]:
@@ -373,6 +394,7 @@ def _geometry_light_emission(ctx: _Context, prim: Usd.Prim, world: np.ndarray,
     """Emission pair of a geometry light: ``intensity * 2**exposure * grey(color)``,
     divided by its world area (one side) when ``normalize`` is on."""
     raw, spectrum, normalize, source = _light_inputs(ctx, prim)
+    stated_output(ctx, prim, "mesh light")  # lumens are not read on a mesh light: refused if authored
     if has_shaping(prim):
         ctx.warn(f"{prim.GetPath()}: UsdLuxShapingAPI on a mesh light ignored")
     value = raw

@@ -2,7 +2,9 @@
 
 A gprim's bound ``UsdPreviewSurface`` gives its Lambertian albedo
 (``diffuseColor``), its front-face emitted radiance (``emissiveColor``) and
-whether it is there at all (``opacity`` 0 removes it). The binding is the
+how much of it is there (``opacity``: in ``presence`` mode or under an
+``opacityThreshold`` its coverage, 0 removes it; in the default
+``transparent`` mode a clear pane of its ``ior`` over 1 − opacity of it). The binding is the
 one ``UsdShadeMaterialBindingAPI.ComputeBoundMaterial`` resolves for the
 ``full`` purpose (a final render), which falls back to the all-purpose
 binding and honours collection bindings (``material:binding:collection:*``)
@@ -79,7 +81,7 @@ _IGNORED_DEFAULTS = IGNORED_PREVIEW_DEFAULTS
 def _surface(ctx: _Context, prim: Usd.Prim,
              bind_prim: Usd.Prim | None = None) -> tuple[float, tuple[float, float], np.ndarray, int, np.ndarray, int] | None:
     """``(albedo, emission pair, albedo colour (3,), reflectance id, emission colour (3,), surface id)`` of a
-    gprim, or None when opacity 0 (or a cut-out threshold above it) removes it.
+    gprim, or None when presence opacity 0 (or a cut-out threshold above it) removes it.
 
     The surface id indexes ``ctx.surfaces`` (:func:`_surface_row`), -1 for a
     matte face.
@@ -127,7 +129,7 @@ def _in_unit(ctx: _Context, prim: Usd.Prim, inputs: dict, name: str) -> float:
 
 def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
     """The ``ctx.surfaces`` index of the surface these material inputs make (-1: matte), None when the
-    face is left out (opacity 0, or a cut-out threshold above it).
+    face is left out (opacity 0 in presence mode, or a cut-out threshold above it).
 
     Reads and validates, from the inputs dict only (so any reader that fills
     it, UsdPreviewSurface or another network mapped onto its inputs, is read
@@ -135,7 +137,10 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
     :data:`TRANSMITTANCE_ATTR`, and ``roughness``, ``metallic``,
     ``specularColor``, ``useSpecularWorkflow``, ``clearcoat``,
     ``clearcoatRoughness`` (the BSDF's lobes, modelled where any is authored
-    away from its fallback). Rules: :mod:`simulator.scene.surfaces`.
+    away from its fallback). Rules: :mod:`simulator.scene.surfaces`; in the
+    default ``transparent`` mode opacity 0 is a clear pane of the ``ior`` and
+    0 < opacity < 1 a translucent layer, and only ``presence`` mode or an
+    ``opacityThreshold`` removes a face.
 
     Raises
     ------
@@ -190,22 +195,28 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
             raise ctx.error(prim, f"{TRANSMITTANCE_ATTR} {spectrum[0]}: its peak {peak:.4g} is above the "
                                   f"{clear:.4f} a clear slab of ior {ior:g} transmits")
     tex, tex_why = inputs.get("_opacity_texture", (-1, ""))
-    per_texel = tex >= 0 and (threshold > 0.0 or mode == "presence") and t0 is None
+    # transparent mode (no threshold): opacity 0 is clear glass of the ior ("even a fully transparent
+    # object still receives lighting as, for example, perfectly clear glass still has a specular
+    # response", UsdPreviewSurface spec), 0 < o < 1 a translucent layer (matte over o, the clear pane
+    # over 1 - o; scene.surfaces); only presence mode or a threshold removes a surface
+    transparent = threshold == 0.0 and mode == "transparent"
+    layered = transparent and 0.0 < opacity < 1.0 and t0 is None
+    per_texel = tex >= 0 and (threshold > 0.0 or mode == "presence" or layered) and t0 is None
     coverage, pane = 1.0, False
     if threshold > 0.0:  # a cut-out: opacity below the threshold is not there, at or above it is opaque
         coverage = 1.0 if opacity >= threshold else 0.0
     elif mode == "presence":
         coverage = opacity
-    elif opacity <= 0.0:  # wholly transparent, nothing left to reflect: left out, as a clear presence
-        coverage = 0.0
-    elif opacity < 1.0:
+    elif opacity <= 0.0:  # wholly transparent: a clear pane of the ior
         pane = True
+    elif layered:
+        coverage, pane = opacity, True
     if t0 is not None:
         pane = True
-        if coverage <= 0.0 or (threshold == 0.0 and mode == "transparent"):
+        if coverage <= 0.0 or transparent:
             coverage = 1.0  # a datasheet pane: its transmittance, not its opacity, lets light through
     if coverage <= 0.0 and not per_texel:
-        why = f"opacity {opacity:g} below opacityThreshold {threshold:g}" if threshold > 0 else "opacity 0"
+        why = f"opacity {opacity:g} below opacityThreshold {threshold:g}" if threshold > 0 else "opacity 0 in presence mode"
         ctx.warn(f"{prim.GetPath()}: {why}; left out (it blocks no light)")
         ctx.surface_index[key] = why
         return None
@@ -215,7 +226,7 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
                      if not np.allclose(np.asarray(got[n], float), np.asarray(fallback[n], float), rtol=0, atol=1e-6))
     # a face with any of these away from its fallback gets the UsdPreviewSurface BSDF (kernels.bsdf); on a
     # pane they are read but not modelled (the slab is what it is), counted in the summary warning
-    glossy = bool(authored) and not pane
+    glossy = bool(authored) and not pane  # (a translucent layer's opaque share is matte)
     unmodelled = authored if pane else ()
     for n in unmodelled:
         ctx.ignored[f"inputs:{n}"] += 1  # read and validated; not modelled on a pane
@@ -226,11 +237,12 @@ def _surface_row(ctx: _Context, prim: Usd.Prim, inputs: dict) -> int | None:
     if (coverage < 1.0 or threshold > 0.0) and not per_texel and "mean of the texture" in inputs.get("opacity", ("", ""))[1]:
         how = f"{tex_why}: " if tex_why else ""
         ctx.ignored[f"inputs:opacity from a texture ({how}coverage is its mean, not per texel)"] += 1
-    row = Surface(name=str(prim.GetPath()), coverage=coverage, pane=pane, ior=ior, tau=tau, transmittance=t0,
+    row = Surface(name=str(prim.GetPath()), coverage=coverage, pane=pane, layered=layered, ior=ior, tau=tau, transmittance=t0,
                   roughness=values["roughness"], metallic=values["metallic"], clearcoat=values["clearcoat"],
                   clearcoat_roughness=values["clearcoatRoughness"], specular_color=spec,
                   use_specular_workflow=workflow, opacity=opacity, opacity_threshold=threshold, opacity_mode=mode,
                   unmodelled=unmodelled, glossy=glossy, opacity_texture=tex if per_texel else -1,
+                  thin_walled=bool(inputs.get("_thin_walled", (False, ""))[0]) and pane,
                   transmittance_spectrum=spectrum if pane else None)
     sid = -1
     if row.modelled:

@@ -58,7 +58,8 @@ from pxr import Sdf, Usd, UsdShade
 
 from simulator.scene.usd.context import _Context, _get, _layer_relative
 from simulator.scene.usd.shading_graph import Node, Port
-from simulator.scene.usd.surface_mapping import SurfaceInputs, colour, complete, nits_in_light_units, transmission
+from simulator.scene.usd.surface_mapping import (SurfaceInputs, colour, complete, nits_in_light_units, thin_walled,
+                                                 transmission)
 
 _WHITE = (1.0, 1.0, 1.0)
 
@@ -415,7 +416,7 @@ def _map_layered(ctx: _Context, ins: SurfaceInputs, k: dict, nits: bool) -> dict
     _specular(out, ins, k["specular"], k["specular_color"], metal, ior)
     transmission(out, ins, k["transmission"], k["transmission_color"], ior)
     _cutout(out, ins, k["opacity"])
-    ins.flag(k["thin"])  # one sheet or a solid is read from the mesh, not this flag
+    thin_walled(out, ins, k["thin"])  # each face a sheet; else a closed mesh is a solid
     return out
 
 

@@ -26,7 +26,9 @@ OmniPBR (``OmniPBR``, ``OmniPBR_Opacity``, ``OmniPBR_ClearCoat*``)
     luminous exitance in lm/m², so luminance is exitance / π (a Lambertian
     emitter), in cd/m² converted to the stage's light units; with
     ``enable_opacity``, ``opacity = opacity_constant`` (or
-    ``mean(opacity_texture)``), ``opacityMode = "presence"`` (MDL's
+    ``opacity_texture`` per texel, the value ``opacity_mode`` selects: 0
+    alpha, 1 the mean of RGB, 2 their luminance, 3 their maximum, MDL's
+    ``base::mono_mode``), ``opacityMode = "presence"`` (MDL's
     ``cutout_opacity``), ``opacityThreshold = opacity_threshold``.
 OmniGlass (``OmniGlass``, ``OmniGlass_Opacity``)
     A dielectric: ``opacity = 0``, ``diffuseColor = 0``, ``ior = glass_ior``,
@@ -68,8 +70,9 @@ from simulator.scene.usd.materialx import _coat, _specular, _usd_node
 from simulator.scene.usd.mdl_wrapper import wrapper_arguments
 from simulator.scene.usd.shading_graph import Port
 from simulator.scene.usd.surface_mapping import (SurfaceInputs, colour, complete, ior_of_f0,
-                                                 nits_in_light_units, slab_transmittance, transmission)
-from simulator.scene.usd.textures import _mean_rgba
+                                                 nits_in_light_units, slab_transmittance, thin_walled,
+                                                 transmission)
+from simulator.scene.usd.textures import MONO_MODES, _mean_rgba
 
 _WHITE = (1.0, 1.0, 1.0)
 
@@ -136,6 +139,56 @@ def _texture(ctx: _Context, ins: SurfaceInputs, name: str) -> np.ndarray | None:
     return rgba
 
 
+def _mono_mode(ctx: _Context, ins: SurfaceInputs, mode_name: str) -> int:
+    """The ``base::mono_mode`` input ``mode_name`` as 0–3 (:data:`.textures.MONO_MODES`): an int or the
+    enum's name (``base::mono_alpha``, as wrapper modules and some exporters write it).
+
+    Raises
+    ------
+    UserError
+        ``<stage>: <prim>: inputs:<mode_name> <value> must be one of ...``: not one of the four modes.
+    """
+    ins.inert(mode_name)
+    port = ins.node.inputs.get(mode_name)
+    raw = port.value if port is not None and port.node is None and port.value is not None else ins.defaults[mode_name]
+    if isinstance(raw, str):
+        name = raw.strip().rpartition("::")[2]
+        mode = MONO_MODES.index(name) if name in MONO_MODES else (int(name) if name.isdigit() else -1)
+    else:
+        mode = int(np.asarray(raw).ravel()[0])
+    if not 0 <= mode < len(MONO_MODES):
+        raise ctx.error(ins.node.where, f"inputs:{mode_name} {raw!r} must be one of "
+                                        f"{', '.join(f'{k} ({v})' for k, v in enumerate(MONO_MODES))}")
+    return mode
+
+
+def _opacity_map(ctx: _Context, ins: SurfaceInputs, mode_name: str, texture: str) -> tuple[float, str, tuple]:
+    """An MDL opacity map read as the material selects it: ``(mean opacity, where, (coverage texture index,
+    why not))``. The mono value per texel is the one ``base::mono_mode`` ``mode_name`` selects
+    (:func:`.textures.mono_texels`: alpha, the mean of RGB, their luminance or their maximum); it is kept
+    per texel (:mod:`simulator.kernels.coverage`, read at the hit through ``primvars:st``) unless an
+    input that places the texture (tiling, rotation, projection, another uv set) is authored, then its
+    mean is the coverage and that is named. None when the map is not authored or cannot be read."""
+    from simulator.scene.usd.textures import _file_coverage, _read_rgba, mono_texels
+
+    port = ins.asset(texture)
+    if port is None or _texture(ctx, ins, texture) is None:
+        return None
+    mode = _mono_mode(ctx, ins, mode_name)
+    where = f"{MONO_MODES[mode]} of {ins.where(texture)}"
+    placed = sorted(k for k in ins.node.inputs if k.startswith(_PLACEMENT) and ins.authored(k))
+    space = port.colorspace or "auto"
+    if placed:
+        rgba = _read_rgba(port.value, space)
+        return float(np.mean(mono_texels(rgba, mode))), where, (-1, f"placed by {', '.join(placed)}")
+    idx = _file_coverage(ctx, port.value, space, mode, f"{ins.node.where}.inputs:{texture} "
+                                                       f"({os.path.basename(port.value)}, {MONO_MODES[mode]})")
+    ctx.textured[texture] -= 1  # read per texel, not as the mean the summary's textured inputs count
+    if ctx.textured[texture] <= 0:
+        del ctx.textured[texture]
+    return float(ctx.coverage_textures[idx].mean), where, (idx, "")
+
+
 def _lerp_map(ctx, ins, constant: str, influence: str, texture: str, channel=None) -> float:
     """``lerp(constant, mean(texture), influence)``: a map's mean blended over a constant."""
     c = ins.scalar(constant)
@@ -181,12 +234,15 @@ def _map_omnipbr(ctx: _Context, ins: SurfaceInputs) -> dict:
     else:
         ins.inert("emissive_color", "emissive_intensity", "emissive_color_texture", "emissive_mask_texture")
     if ins.flag("enable_opacity") or ins.flag("enable_opacity_texture"):
-        m = _texture(ctx, ins, "opacity_texture") if ins.flag("enable_opacity_texture") else None
-        op = ins.scalar("opacity_constant") if m is None else float(np.mean(m[:3]))
-        out["opacity"] = (op, w("opacity_constant"))
+        m = _opacity_map(ctx, ins, "opacity_mode", "opacity_texture") if ins.flag("enable_opacity_texture") else None
+        if m is None:
+            op, src = ins.scalar("opacity_constant"), w("opacity_constant")
+            ins.inert("opacity_mode")  # the channel of a map there is none of
+        else:
+            op, src, out["_opacity_texture"] = m
+        out["opacity"] = (op, src)
         out["opacityMode"] = ("presence", "OmniPBR cutout_opacity")
         out["opacityThreshold"] = (ins.scalar("opacity_threshold"), w("opacity_threshold"))
-        ins.inert("opacity_mode")  # which channel of the opacity map: its mean over RGB is read
     else:
         ins.inert("opacity_constant", "opacity_texture", "opacity_mode", "opacity_threshold")
     return out
@@ -211,7 +267,7 @@ def _map_omniglass(ctx: _Context, ins: SurfaceInputs) -> dict:
         out["probesim:transmittance"] = (slab_transmittance(max(tau, 0.0), ior),
                                          f"a thin slab of internal transmittance {tau:g} ({w('glass_color')})")
     ins.not_mapped("depth", "the distance the glass colour is reached at; the colour is read as one pass")
-    ins.flag("thin_walled")  # one sheet or a solid is read from the mesh
+    thin_walled(out, ins, "thin_walled")  # each face a sheet; else a closed mesh is a solid
     if ins.flag("enable_opacity"):
         op = _texture(ctx, ins, "cutout_opacity_texture")
         out["opacity"] = (ins.scalar("cutout_opacity") if op is None else float(np.mean(op[:3])),
@@ -266,7 +322,7 @@ def _map_omnisurface(ctx: _Context, ins: SurfaceInputs) -> dict:
             out["opacityThreshold"] = (ins.scalar("geometry_opacity_threshold"), w("geometry_opacity_threshold"))
     else:
         ins.inert("geometry_opacity", "geometry_opacity_threshold")
-    ins.flag("thin_walled")
+    thin_walled(out, ins, "thin_walled")
     return out
 
 

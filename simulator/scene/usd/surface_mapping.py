@@ -221,6 +221,15 @@ def transmission(out: dict, ins: SurfaceInputs, weight_name: str, tint_name: str
             ins.not_mapped(tint_name, "a tint on a partial transmission")
 
 
+def thin_walled(out: dict, ins: SurfaceInputs, name: str) -> None:
+    """Map a thin-walled flag onto ``_thin_walled``: a glass (any transmission mapped to ``opacity``
+    < 1) whose every face is a thin sheet, also on a closed mesh, where a solid (the flag's default)
+    is a slab-like body entered once (:mod:`simulator.scene.surfaces`). Without transmission the
+    flag changes nothing."""
+    if ins.flag(name) and out.get("opacity", (1.0, ""))[0] < 1.0:
+        out["_thin_walled"] = (True, ins.where(name))
+
+
 def complete(ctx: _Context, inputs: dict, where: str) -> dict:
     """A mapping's inputs with UsdPreviewSurface's fallbacks for the three every surface reads
     (``diffuseColor`` 0.18, ``emissiveColor`` 0, ``opacity`` 1) where it set none, and the carried inputs

@@ -105,6 +105,42 @@ def _read_rgba(resolved: str, colour_space: str) -> np.ndarray | None:
     return np.concatenate([rgb, alpha[..., None]], axis=-1)
 
 
+#: MDL ``base::mono_mode`` (base.mdl, in its order): how ``base::file_texture(...).mono`` makes one number
+#: of a texel: 0 its alpha, 1 the mean of R, G, B, 2 their luminance (BT.709 weights), 3 their maximum
+MONO_MODES = ("mono_alpha", "mono_average", "mono_luminance", "mono_maximum")
+
+
+def mono_texels(rgba: np.ndarray, mode: int) -> np.ndarray:
+    """One number per texel of decoded RGBA texels (H, W, 4) as ``base::mono_mode`` ``mode`` (0–3,
+    :data:`MONO_MODES`) makes it, shape (H, W)."""
+    if mode == 0:
+        return rgba[..., 3]
+    if mode == 1:
+        return rgba[..., :3].mean(axis=-1)
+    if mode == 2:
+        return rgba[..., :3] @ np.array([0.2126, 0.7152, 0.0722])
+    return rgba[..., :3].max(axis=-1)
+
+
+def _file_coverage(ctx: _Context, resolved: str, colour_space: str, mode: int, name: str,
+                   wrap: tuple = ("repeat", "repeat"), primvar: str = "st") -> int:
+    """Index into ``ctx.coverage_textures`` of a texture file's per-texel opacity read by ``base::mono_mode``
+    ``mode`` (an MDL ``texture_2d``: no scale or bias, repeat wrap, the first uv set ``st``), -1 when the
+    file cannot be read (the caller has named it)."""
+    from simulator.scene.surfaces import CoverageTexture
+
+    key = ("mdl", resolved, colour_space, mode, wrap, primvar)
+    if key not in ctx.coverage_texture_index:
+        rgba = _read_rgba(resolved, colour_space)
+        if rgba is None:
+            return -1
+        opacity = np.clip(mono_texels(rgba, mode), 0.0, 1.0).astype(np.float32)
+        ctx.coverage_texture_index[key] = len(ctx.coverage_textures)
+        ctx.coverage_textures.append(CoverageTexture(name=name, opacity=opacity, wrap=wrap, border=0.0,
+                                                     primvar=primvar))
+    return ctx.coverage_texture_index[key]
+
+
 def _coverage_texture(ctx: _Context, output: Usd.Attribute, where: str):
     """The per-texel opacity of the UsdUVTexture output ``output`` (a float output: ``r``, ``g``, ``b``
     or ``a``), as ``(index into ctx.coverage_textures, "")``, or ``(-1, why)`` when it is not read per

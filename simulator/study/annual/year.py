@@ -1,0 +1,440 @@
+"""A year of daylight: one trace of the sky's patches, every hour a recombination with its error, the sun exact.
+
+Method
+------
+1. The climate file (:mod:`simulator.study.annual.climate`) gives each hour's sky
+   and sun; the sky is the Perez all-weather model over Tregenza's patches,
+   scaled to the hour's diffuse horizontal illuminance
+   (:mod:`simulator.study.annual.perez`), the dome below the horizon a uniform
+   ground of luminance ρ_g (E_dh + E_n sin h)/π.
+2. The split sky group (``[annual] sky_group``) is traced twice per sensor
+   block, once for its *direct* light and once for its *interreflected*
+   light (``component = "direct"`` / ``"indirect"``, independent seeds), each
+   as 146 daylight coefficients with their covariance
+   (:mod:`simulator.study.trace.groups`). The lamp groups that ``[[control]]``
+   dims are traced once more, as ordinary light groups.
+3. Each hour's reading is
+
+   .. math:: E_h = d_h^\\top c^{dir} + (d_h + q_h)^\\top c^{ind} + E^{sun}_h,
+             \\qquad \\sigma_h^2 = d_h^\\top C^{dir} d_h + (d_h + q_h)^\\top C^{ind} (d_h + q_h),
+
+   with d_h the hour's patch levels L_p/L_dome, E^sun_h the sun's direct
+   light computed exactly by a shadow ray per sensor and hour
+   (:mod:`simulator.study.annual.sunlight`), and q_h the sun's light put into the
+   ``sun_patches`` patches nearest the sun (weights 1/(1.002 − cos ψ), ψ the
+   angle to a patch's centre, as Radiance's gendaymtx spreads it), at
+   luminance w_p E_n / Ω_p: the sun's *interreflected* light comes from
+   the indirect coefficients of the patches around it, its direct light is
+   never approximated. A cone photosensor's direct coefficients hold the
+   surfaces it sees lit directly (a radiance meter's direct component is
+   its first hit's light), so for it q_h enters them too:
+   E_h += q_hᵀ c^{dir}, and only a sun inside its cone is left to E^sun.
+   With ``sun_indirect = "traced"`` q_h = 0 and the stage's DistantLight is
+   traced at the mean sun of each bin of the year's sun positions
+   (:func:`sun_bins`); its exact direct light at that position is taken off
+   the bin's coefficient t_b, and hour h adds (E_n,h / E_n,authored)·t_b of
+   its bin (variance scaled alike).
+4. Annual metrics (:mod:`simulator.study.annual.metrics`) and control
+   (:mod:`simulator.study.annual.control`) are functions of the hourly series. An
+   hour's readings of one sensor share its coefficients, so errors are
+   correlated across hours: each figure's standard error is its standard
+   deviation over ``replicates`` whole years recombined from coefficient
+   vectors redrawn from N(ĉ, C) per sensor (a parametric bootstrap; sensors
+   are independent, each has its own random stream).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from simulator.errors import UserError
+from simulator.study.inputs import sky_patches as SP
+from simulator.study.trace.groups import derive_seed
+
+__all__ = ["AnnualResult", "run_annual", "sun_patch_levels", "Coefficients", "hourly", "replicate_years"]
+
+#: CIE overcast sky horizontal illuminance the daylight factor is read at (any value: DF is a ratio)
+_DF_SKY_LX = 10000.0
+
+
+@dataclass
+class Coefficients:
+    """Per sensor, the photometric daylight coefficients of the sky's patches (146 slots) and of the lamp groups.
+
+    ``dir``/``ind`` (S, 146) with covariances (S, 146, 146); ``lamp`` (S, G) with (S, G, G)."""
+
+    dir: np.ndarray
+    dir_cov: np.ndarray
+    ind: np.ndarray
+    ind_cov: np.ndarray
+    lamp: np.ndarray
+    lamp_cov: np.ndarray
+    lamp_names: list
+    samples: np.ndarray
+    sun: np.ndarray | None = None  #: (S, B) traced sun per bin less its exact direct part, for the authored sun
+    sun_var: np.ndarray | None = None  #: (S, B) its variance
+
+
+def sun_patch_levels(sun_dir: np.ndarray, sun_lx: np.ndarray, k: int, l_dome: float) -> np.ndarray:
+    """Patch levels q_h (H, 146) carrying the sun's light for the interreflected part (see the module's Notes)."""
+    cent = np.stack([SP.patch_direction(p) for p in range(SP.N_PATCHES)])
+    omega = np.array([SP.patch_solid_angle(p) for p in range(SP.N_PATCHES)])
+    out = np.zeros((len(sun_dir), SP.N_PATCHES + 1))
+    cosp = sun_dir @ cent.T
+    near = np.argsort(-cosp, axis=1, kind="stable")[:, :k]
+    w = 1.0 / (1.002 - np.take_along_axis(cosp, near, axis=1))
+    w /= w.sum(axis=1, keepdims=True)
+    rows = np.arange(len(sun_dir))[:, None]
+    out[rows, near] = w * (np.asarray(sun_lx)[:, None] / (omega[near] * l_dome))
+    out[np.asarray(sun_lx) <= 0] = 0.0
+    return out
+
+
+def sky_levels_of(skies, l_dome: float, ground_reflectance: float) -> np.ndarray:
+    """Patch levels d_h (H, 146): the Perez patches over L_dome and the ground slot."""
+    d = np.zeros((len(skies.dhi_lx), SP.N_PATCHES + 1))
+    d[:, : SP.N_PATCHES] = skies.patch_cd_m2 / l_dome
+    d[:, SP.N_PATCHES] = ground_reflectance * skies.global_lx / math.pi / l_dome
+    return d
+
+
+def hourly(co: Coefficients, d: np.ndarray, q: np.ndarray, sun_direct: np.ndarray, stderr: bool = True,
+           sun_bin: np.ndarray | None = None, sun_scale: np.ndarray | None = None, cone: np.ndarray | None = None):  # fmt: skip
+    """Hourly readings (H, S) and their standard errors (see the module's Notes).
+
+    ``cone`` (S,) marks cone photosensors: their *direct* coefficients hold
+    the surfaces they see lit directly (the engine's direct component of a
+    radiance meter is its first hit's light), so the sun in patches ``q``
+    enters their direct coefficients too (and ``sun_direct`` holds only a
+    sun inside the cone). With ``sun_bin`` (H,) and ``sun_scale`` (H,): the
+    sun's light apart from ``sun_direct`` is the traced bin's coefficient
+    times the hour's E_n over the authored sun's (``q`` is then 0)."""
+    dq = d + q
+    mean = d @ co.dir.T + dq @ co.ind.T + sun_direct
+    if cone is not None and cone.any():
+        mean[:, cone] += q @ co.dir[cone].T
+    traced = sun_bin is not None and co.sun is not None
+    if traced:
+        on = sun_bin >= 0
+        mean[on] += co.sun[:, sun_bin[on]].T * sun_scale[on, None]
+    if not stderr:
+        return mean, None
+    var = np.zeros_like(mean)
+    for s in range(co.dir.shape[0]):
+        dd = dq if (cone is not None and cone[s]) else d
+        var[:, s] = np.sum((dd @ co.dir_cov[s]) * dd, axis=1) + np.sum((dq @ co.ind_cov[s]) * dq, axis=1)
+    if traced:
+        var[on] += co.sun_var[:, sun_bin[on]].T * sun_scale[on, None] ** 2
+    return mean, np.sqrt(np.maximum(var, 0.0))
+
+
+def sun_bins(sun_dir: np.ndarray, lit: np.ndarray, bin_deg: float) -> tuple[np.ndarray, list]:
+    """Each lit hour's sun-position bin (−1 where unlit) and each bin's traced sun ``(azimuth, elevation)``.
+
+    Bins: altitude bands ``bin_deg`` high from the horizon, each cut into
+    ``max(1, round(360·cos(mid-altitude)/bin_deg))`` equal azimuth bins; a
+    bin's sun is the normalised mean direction of its hours (so the traced
+    sun lies among them, at most about ``bin_deg``/√2 from any)."""
+    alt = np.degrees(np.arcsin(np.clip(sun_dir[:, 2], -1.0, 1.0)))
+    az = np.mod(np.degrees(np.arctan2(sun_dir[:, 0], sun_dir[:, 1])), 360.0)
+    band = np.clip((alt // bin_deg).astype(np.int64), 0, None)
+    n_az = np.maximum(1, np.round(360.0 * np.cos(np.radians((band + 0.5) * bin_deg)) / bin_deg)).astype(np.int64)
+    cell = band * 100000 + np.floor(az / (360.0 / n_az)).astype(np.int64) % n_az
+    keys = sorted(set(cell[lit].tolist()))
+    index = {k: i for i, k in enumerate(keys)}
+    out = np.full(len(sun_dir), -1, np.int64)
+    out[lit] = [index[c] for c in cell[lit]]
+    suns = []
+    for i in range(len(keys)):
+        m = sun_dir[out == i].mean(axis=0)
+        m /= np.linalg.norm(m)
+        suns.append((float(np.mod(np.degrees(np.arctan2(m[0], m[1])), 360.0)), float(np.degrees(np.arcsin(m[2])))))
+    return out, suns
+
+
+def _sqrt_psd(c: np.ndarray) -> np.ndarray:
+    """A with A Aᵀ = c for a covariance (negative eigenvalues from rounding set to 0), per leading index."""
+    w, v = np.linalg.eigh(c)
+    return v * np.sqrt(np.maximum(w, 0.0))[..., None, :]
+
+
+def replicate_years(co: Coefficients, replicates: int, seed: int):
+    """Yield ``replicates`` coefficient sets redrawn from N(ĉ, C) per sensor (a fixed seed)."""
+    rng = np.random.default_rng(seed)
+    ad, ai = _sqrt_psd(co.dir_cov), _sqrt_psd(co.ind_cov)
+    al = _sqrt_psd(co.lamp_cov) if co.lamp.shape[1] else None
+    for _ in range(replicates):
+        zd = rng.standard_normal(co.dir.shape)
+        zi = rng.standard_normal(co.ind.shape)
+        zl = rng.standard_normal(co.lamp.shape)
+        lamp = co.lamp + (np.einsum("sgk,sk->sg", al, zl) if al is not None else 0.0)
+        sun = None if co.sun is None else co.sun + np.sqrt(np.maximum(co.sun_var, 0.0)) * rng.standard_normal(co.sun.shape)
+        yield Coefficients(co.dir + np.einsum("spk,sk->sp", ad, zd), co.dir_cov, co.ind + np.einsum("spk,sk->sp", ai, zi), co.ind_cov,
+                           lamp, co.lamp_cov, co.lamp_names, co.samples, sun, co.sun_var)  # fmt: skip
+
+
+@dataclass
+class AnnualResult:
+    """Everything the annual outputs hold."""
+
+    weather: object
+    rows: np.ndarray  #: weather rows analysed
+    occupied: np.ndarray
+    daylight: np.ndarray
+    skies: object
+    sensors: list  #: Candidate, study order
+    mean: np.ndarray  #: (H, S) lux (cd/m² for cone meters)
+    stderr: np.ndarray
+    sun_direct: np.ndarray
+    df: np.ndarray  #: (S,) daylight factor (fraction)
+    df_se: np.ndarray
+    metrics: dict  #: zone -> {metric: (value, stderr)}
+    controls: list  #: dicts, one per [[control]] (chosen photosensor and every candidate's figures)
+    timings_s: dict = field(default_factory=dict)
+    cpu_s: dict = field(default_factory=dict)
+    notes: list = field(default_factory=list)
+    chunks_total: int = 0
+    chunks_computed: int = 0
+    coefficients: Coefficients | None = None
+    sky_levels: np.ndarray | None = None  #: (H, 146) d_h
+    zones: dict = field(default_factory=dict)  #: zone -> candidate indices
+    scene: object | None = None  #: the stage as read (the report's plans); not in any output file
+    annual_spec: object | None = None  #: the study's [annual] table
+
+
+def _coefficients(specs_dir, specs_ind, specs_lamp, results, n_s: int, lamp_names: list) -> Coefficients:
+    from simulator.study.trace.chunks import readings_of
+
+    g = SP.N_PATCHES + 1
+    out = Coefficients(np.zeros((n_s, g)), np.zeros((n_s, g, g)), np.zeros((n_s, g)), np.zeros((n_s, g, g)),
+                       np.zeros((n_s, len(lamp_names))), np.zeros((n_s, len(lamp_names), len(lamp_names))), lamp_names,
+                       np.zeros(n_s, np.int64))  # fmt: skip
+    for specs, mean, cov in ((specs_dir, out.dir, out.dir_cov), (specs_ind, out.ind, out.ind_cov), (specs_lamp, out.lamp, out.lamp_cov)):
+        for s in specs:
+            gr = readings_of(results[s.id])
+            ids = np.asarray(s.sensor_ids)
+            mean[ids] = gr.mean[:, :, 1].T
+            cov[ids] = gr.cov[:, 1]
+            out.samples[ids] += gr.samples[0]
+    return out
+
+
+def _control_pools(study, cands, names_index: dict, label: str) -> list[list[int]]:
+    """Each [[control]]'s photosensor candidates: the one named, or every candidate of the named set."""
+    out = []
+    for i, c in enumerate(study.control):
+        if c.photosensor in names_index:
+            pool = [names_index[c.photosensor]]
+        else:
+            pool = [k for k, cd in enumerate(cands) if cd.set_name == c.photosensor]
+            if not pool:
+                raise UserError(f"{label}: control[{i}].photosensor: no candidate or [[candidates]] set named {c.photosensor!r}")
+        out.append(pool)
+    return out
+
+
+def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None = None, workers: int | None = None,
+               scheduler: str | None = None) -> AnnualResult:  # fmt: skip
+    """Run (or resume) the ``[annual]`` part of a study; outputs are written by :mod:`simulator.study.annual.outputs`."""
+    from simulator.scene.model import LightKind, SensorKind
+    from simulator.scene.usd import load_stage
+    from simulator.study.annual import control as CT
+    from simulator.study.inputs.candidates import build_candidates, candidate_warnings
+    from simulator.study.trace.chunks import ChunkStore, make_chunks
+    from simulator.study.annual.climate import daylight_mask, hour_of_day, read_weather
+    from simulator.study.trace.distributed import choose_mode, run_chunks
+    from simulator.study.annual.metrics import zone_metrics
+    from simulator.study.annual.perez import hour_skies
+    from simulator.study.runner import _sim_dict, zone_members
+    from simulator.study.inputs.scenarios import TraceGroup, check_split_groups, resolve_groups
+    from simulator.study.inputs.sun import sun_direction
+    from simulator.study.annual.sunlight import direct_sun
+
+    a = study.annual
+    label = str(path)
+    t0, c0 = time.perf_counter(), time.process_time()
+    if study.light_units != "photometric":
+        raise UserError(f"{label}: annual: needs light_units = \"photometric\" (climate files give illuminances in lux)")
+    stage = (path.parent / study.stage).resolve() if not Path(study.stage).is_absolute() else Path(study.stage)
+    wpath = (path.parent / a.weather).resolve() if not Path(a.weather).is_absolute() else Path(a.weather)
+    weather = read_weather(wpath, f"{label}: annual.weather")
+    if a.illuminance == "file" and weather.dhi_lx is None:
+        raise UserError(f"{label}: annual.illuminance: the weather file has no illuminance fields: use \"efficacy\"")
+    base = load_stage(stage, light_units=study.light_units, radiometric_spectrum="E")
+    sets = build_candidates(base, study.candidates, label)
+    misplaced = candidate_warnings(base, study.candidates, sets, label)
+    for w in misplaced:
+        log(f"warning: {w}")
+    cands = [c for s in sets for c in s.candidates]
+    sensors = [c.sensor for c in cands]
+    groups, _ = resolve_groups(base, study.group, label)
+    sky_split = check_split_groups(base, study.group, groups, label)
+    zones = zone_members(study, sets, cands, label)
+    dome = next(l for l in base.lights if l.name in groups[a.sky_group] and l.kind == LightKind.DOME)
+    l_dome = float(dome.emission[1])
+    if l_dome <= 0:
+        raise UserError(f"{label}: annual.sky_group: the DomeLight {dome.name} has no luminance to scale")
+    names_index = {c.sensor.name: k for k, c in enumerate(cands)}
+    pools = _control_pools(study, cands, names_index, label)
+    notes = list(weather.notes) + [f"warning: {w}" for w in weather.warnings + misplaced]
+    for w in weather.warnings:  # the weather's doubts, on the console as they are found and in the record
+        log(f"warning: {w}")
+    if any(l.kind == LightKind.DISTANT for l in base.lights):
+        notes.append("the stage's DistantLight is not used: each hour's sun comes from the weather file")
+
+    # hours: daylight (sun above the horizon at the centre, or diffuse light) and occupied hours
+    hod = hour_of_day(weather)
+    occ_all = (hod >= a.occupied_h[0]) & (hod < a.occupied_h[1])
+    rows = np.nonzero(daylight_mask(weather) | occ_all)[0][:: a.step_h]
+    skies = hour_skies(weather, rows, a.illuminance)
+    occupied = occ_all[rows]
+    daylight = weather.sun_elevation_deg[rows] > 0.0
+    t_weather = time.perf_counter()
+
+    # traces: the sky's direct and interreflected coefficients, the controlled lamps
+    sim = _sim_dict(study)
+    lamp_groups = sorted({g for c in study.control for g in c.groups}, key=list(groups).index)
+    tgs = [(TraceGroup("annual;sky;direct", {}, None, [], [a.sky_group]), {**sim, "component": "direct"}),
+           (TraceGroup("annual;sky;indirect", {}, None, [], [a.sky_group]), {**sim, "component": "indirect"})]  # fmt: skip
+    if lamp_groups:
+        tgs.append((TraceGroup("annual;lamps", {}, None, [], lamp_groups), sim))
+    sun_bin = sun_scale = None
+    n_fixed = len(tgs)
+    if a.sun_indirect == "traced":
+        distant = [l for l in base.lights if l.kind == LightKind.DISTANT]
+        if len(distant) != 1 or groups[a.sun_group] != [distant[0].name]:
+            raise UserError(f"{label}: annual.sun_group: group {a.sun_group!r} must hold the stage's one DistantLight "
+                            f"(the stage has {len(distant)})")  # fmt: skip
+        sl = distant[0]
+        e_auth = float(sl.emission[1]) if sl.half_angle == 0.0 else float(sl.emission[1]) * math.pi * math.sin(sl.half_angle) ** 2
+        lit_h = skies.dni_lx > 0
+        sun_bin, bin_suns = sun_bins(skies.sun_dir, lit_h, a.sun_bin_deg)
+        sun_scale = skies.dni_lx / e_auth
+        for az, el in bin_suns:
+            tgs.append((TraceGroup(f"annual;sun;{az:.6f},{el:.6f}", {}, (az, el), [], [a.sun_group]), sim))
+        notes.append(f"interreflected sun traced at {len(bin_suns)} sun positions (bins of {a.sun_bin_deg:g} deg)")
+    block = study.compute.sensor_block
+    if block == "auto":  # from the study's size alone, as the scenario runner does (simulator.study.trace.blocks)
+        from simulator.study.trace.blocks import auto_block
+
+        block = auto_block(len(sensors), study.simulation.samples)
+    spec_lists = [make_chunks([tg], sensors, groups, stage, study.light_units, sd, study.seed, block, sky_split)
+                  for tg, sd in tgs]  # fmt: skip
+    specs = [s for lst in spec_lists for s in lst]
+    store = ChunkStore(out_dir)
+    results = {s.id: r for s in specs if (r := store.load(s.id)) is not None}
+    todo = [s for s in specs if s.id not in results]
+    used_mode, n_workers = choose_mode(mode or study.compute.mode, scheduler or study.compute.scheduler, len(todo),
+                                       workers if workers is not None else study.compute.workers)  # fmt: skip
+    computed = 0
+    for res in run_chunks(todo, used_mode, n_workers, scheduler or study.compute.scheduler, study.compute.retries, log=log):
+        store.save(res)
+        results[res["id"]] = res
+        computed += 1
+    t_traced = time.perf_counter()
+    co = _coefficients(spec_lists[0], spec_lists[1], spec_lists[2] if lamp_groups else [], results, len(sensors), lamp_groups)
+    if sun_bin is not None:
+        from simulator.study.trace.chunks import readings_of
+
+        co.sun = np.zeros((len(sensors), len(spec_lists) - n_fixed))
+        co.sun_var = np.zeros_like(co.sun)
+        for b, lst in enumerate(spec_lists[n_fixed:]):
+            for s_ in lst:
+                gr = readings_of(results[s_.id])
+                ids = np.asarray(s_.sensor_ids)
+                co.sun[ids, b] = gr.mean[0, :, 1]
+                co.sun_var[ids, b] = gr.stderr[0, :, 1] ** 2
+        # the passes trace the whole sun; its exact direct part at the bin's own sun comes off (it is added per hour)
+        bin_dirs = np.stack([sun_direction(az, el) for az, el in bin_suns])
+        co.sun -= direct_sun(sensors, base, bin_dirs, np.full(len(bin_suns), e_auth)).T
+    trace_cpu = sum(float(results[s.id].get("trace_cpu_s", 0.0)) for s in specs)
+
+    # every hour
+    d = sky_levels_of(skies, l_dome, a.ground_reflectance)
+    q = sun_patch_levels(skies.sun_dir, skies.dni_lx, a.sun_patches, l_dome) if sun_bin is None else np.zeros_like(d)
+    c_sun = time.process_time()
+    sun = direct_sun(sensors, base, skies.sun_dir, skies.dni_lx)
+    cone = np.array([c.sensor.kind == SensorKind.RADIANCE for c in cands])
+    c_sun = time.process_time() - c_sun
+    mean, stderr = hourly(co, d, q, sun, sun_bin=sun_bin, sun_scale=sun_scale, cone=cone if sun_bin is None else None)
+    ov = np.zeros(SP.N_PATCHES + 1)
+    ov[: SP.N_PATCHES] = SP.sky_weights("overcast", None, _DF_SKY_LX / l_dome)
+
+    def df_of(c: Coefficients) -> np.ndarray:
+        return (c.dir + c.ind) @ ov / _DF_SKY_LX
+
+    df = df_of(co)
+    df_se = np.sqrt(np.maximum(np.einsum("p,spq,q->s", ov, co.dir_cov + co.ind_cov, ov), 0.0)) / _DF_SKY_LX
+    t_hourly = time.perf_counter()
+
+    # metrics and control, on the estimate and on each replicate year
+    def figures(e: np.ndarray, c: Coefficients, dfs: np.ndarray):
+        m = {z: zone_metrics(e[:, ids], sun[:, ids], occupied, daylight, dfs[ids], a, float(a.step_h)) for z, ids in zones.items()}
+        ctl = []
+        for ci, spec in enumerate(study.control):
+            ids = zones[spec.zone]
+            target = float(spec.target_lx if spec.target_lx is not None else dict(study.zone[[z.name for z in study.zone].index(spec.zone)].targets)["mean"])
+            gsel = [lamp_groups.index(g) for g in spec.groups]
+            e_zone = float(np.mean(c.lamp[ids][:, gsel].sum(axis=1)))
+            day = e[occupied][:, ids].mean(axis=1)
+            d_ov = float(np.mean(dfs[ids])) * _DF_SKY_LX
+            per = []
+            for k in pools[ci]:
+                s_day = e[occupied][:, k]
+                s_lamp = float(c.lamp[k, gsel].sum())
+                s_ov = float(dfs[k]) * _DF_SKY_LX
+                gain = d_ov / s_ov if s_ov > 0 else 0.0
+                u = CT.levels(spec.model, s_day, s_lamp, e_zone, target, spec.min_level, spec.deadband, gain)
+                per.append(CT.outcome(u, day, e_zone, target))
+            ctl.append((target, e_zone, per))
+        return m, ctl
+
+    m0, ctl0 = figures(mean, co, df)
+    reps_m = {z: {k: [] for k in m0[z]} for z in m0}
+    reps_c = [[[] for _ in pools[i]] for i in range(len(study.control))]
+    for rc in replicate_years(co, a.replicates, derive_seed(study.seed, "annual", "replicates")):
+        e_r, _ = hourly(rc, d, q, sun, stderr=False, sun_bin=sun_bin, sun_scale=sun_scale, cone=cone if sun_bin is None else None)
+        m_r, c_r = figures(e_r, rc, df_of(rc))
+        for z in m_r:
+            for k, v in m_r[z].items():
+                reps_m[z][k].append(v)
+        for i, (_, _, per) in enumerate(c_r):
+            for j, o in enumerate(per):
+                reps_c[i][j].append((o.relative_energy, o.hours_below, o.score))
+    metrics = {z: {k: (v, float(np.std(reps_m[z][k], ddof=1))) for k, v in m0[z].items()} for z in m0}
+    controls = []
+    for i, spec in enumerate(study.control):
+        target, e_zone, per = ctl0[i]
+        rows_c = []
+        for j, o in enumerate(per):
+            r = np.asarray(reps_c[i][j])
+            rows_c.append({"photosensor": cands[pools[i][j]].sensor.name, "relative_energy": o.relative_energy,
+                           "relative_energy_stderr": float(np.std(r[:, 0], ddof=1)), "hours_below": o.hours_below,
+                           "hours_below_stderr": float(np.std(r[:, 1], ddof=1)), "score": o.score,
+                           "score_stderr": float(np.std(r[:, 2], ddof=1)), "scores": r[:, 2]})  # fmt: skip
+        best = min(range(len(rows_c)), key=lambda j: (rows_c[j]["score"], j))
+        runner = min((j for j in range(len(rows_c)) if j != best), key=lambda j: (rows_c[j]["score"], j), default=None)
+        lead = lead_se = None
+        if runner is not None:
+            diff = rows_c[runner]["scores"] - rows_c[best]["scores"]
+            lead, lead_se = rows_c[runner]["score"] - rows_c[best]["score"], float(np.std(diff, ddof=1))
+        for rc_ in rows_c:
+            rc_.pop("scores")
+        controls.append({"zone": spec.zone, "model": spec.model, "groups": list(spec.groups), "target_lx": target,
+                         "lamps_zone_lx": e_zone, "occupied_hours": int(occupied.sum()), "chosen": rows_c[best]["photosensor"],
+                         "runner_up": None if runner is None else rows_c[runner]["photosensor"], "lead": lead, "lead_stderr": lead_se,
+                         "separable": runner is None or (lead is not None and lead > 2.0 * (lead_se or 0.0)),
+                         "candidates": rows_c, "level": per[best].level})  # fmt: skip
+    t_end = time.perf_counter()
+    return AnnualResult(weather, rows, occupied, daylight, skies, cands, mean, stderr, sun, df, df_se, metrics, controls,
+                        timings_s={"weather_and_skies": t_weather - t0, "chunks": t_traced - t_weather, "hourly": t_hourly - t_traced,
+                                   "metrics_and_control": t_end - t_hourly, "total": t_end - t0},
+                        cpu_s={"total": time.process_time() - c0, "trace_in_chunks": trace_cpu, "sun_shadow_rays": c_sun},
+                        notes=notes, chunks_total=len(specs), chunks_computed=computed, coefficients=co, sky_levels=d,
+                        zones=zones, scene=base, annual_spec=a)  # fmt: skip
+

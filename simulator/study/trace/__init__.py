@@ -1,0 +1,1 @@
+"""Tracing a study: light groups tallied in one pass, chunks of work, their store, resume and distribution."""

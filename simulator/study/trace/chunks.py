@@ -1,0 +1,208 @@
+"""Chunks of a study: (trace group × sensor block) units of work, their store and resume.
+
+A chunk traces the light groups of one trace group
+(:class:`~simulator.study.inputs.scenarios.TraceGroup`) on one block of candidate
+sensors, all its groups in one pass. Its seed derives from (study seed,
+trace key, block) alone, so a chunk gives the same numbers wherever and whenever it runs.
+
+The store is a folder: ``chunks/<id>.npz`` per finished chunk and
+``manifest.json`` listing them with their SHA-256. Both are written
+atomically (a temporary file in the same folder, flushed, then renamed), the
+chunk before the manifest entry that names it, so an interrupted study
+leaves only whole chunks behind. A chunk's id hashes everything its numbers
+depend on (stage bytes, variants, sun, the group's lights, the sensors, the
+trace settings, the seed); a study started again loads every chunk whose id
+is in the manifest with a matching file and computes only the rest.
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import io
+import json
+import os
+import socket
+import tempfile
+import time
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+
+from simulator.scene.model import LightKind, Sensor
+from simulator.study.trace.groups import GroupReadings, derive_seed, level_of, patch_names, trace_groups
+from simulator.study.inputs.sun import sun_direction, sun_frame
+
+__all__ = ["ChunkSpec", "ChunkStore", "compute_chunk", "atomic_write", "make_chunks", "StudyInterrupted"]
+
+#: bump when a change to the tracing would change a chunk's numbers
+CHUNK_FORMAT = 4
+
+
+class StudyInterrupted(Exception):
+    """Raised by the test hook that stops a study after N chunks."""
+
+
+@dataclass(frozen=True)
+class ChunkSpec:
+    """Everything a worker needs to compute one chunk (picklable, no scene)."""
+
+    id: str
+    trace_key: str
+    block: int
+    stage: str
+    light_units: str
+    variants: tuple[tuple[str, str], ...]
+    sun: tuple[float, float] | None
+    groups: tuple[tuple[str, tuple[str, ...]], ...]
+    sensor_ids: tuple[int, ...]  #: indices into the study's candidate list
+    sensors: tuple[Sensor, ...]
+    sim: dict
+    seed: int
+    levels: tuple[tuple[tuple[str, float], ...], ...] = ()  #: the trace group's dimming vectors (adaptive targets)
+    threads: int = 0
+    sky_split: tuple[str, ...] = ()  #: groups whose sky is traced as Tregenza patches
+
+
+def atomic_write(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` so that a reader sees the old file or the whole new one."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data)
+            fh.flush()
+            os.fsync(fh.fileno())
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(tmp, 0o666 & ~mask)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def _sensor_text(s: Sensor) -> str:
+    text = f"{s.name}|{int(s.kind)}|{s.position.tolist()}|{s.normal.tolist()}|{s.half_angle!r}"
+    if "up" in s.spec.attributes and s.spec.name != "patch":  # a cylinder's axis
+        text += f"|{s.up.tolist()}"
+    return text
+
+
+def make_chunks(trace_groups, sensors: list[Sensor], groups: dict[str, list[str]], stage: Path, light_units: str,
+                sim: dict, seed: int, block: int, sky_split: tuple[str, ...] = ()) -> list[ChunkSpec]:  # fmt: skip
+    """One chunk per (trace group, block of ``block`` sensors), in a fixed order.
+
+    ``sky_split``: groups traced as sky patches; their slots' levels
+    (``group/pNNN``, ``group/ground``) join the dimming vectors."""
+    stage_sha = hashlib.sha256(stage.read_bytes()).hexdigest()
+    out = []
+    for tg in trace_groups:
+        if not tg.groups:
+            continue
+        gl = tuple((g, tuple(groups[g])) for g in tg.groups)
+        split = tuple(g for g in tg.groups if g in sky_split)
+        slots = [n for g in tg.groups for n in ([g] + (patch_names(g) if g in split else []))]
+        levels = tuple(tuple((n, level_of(sc.levels, n)) for n in slots) for sc in tg.scenarios)
+        for b, lo in enumerate(range(0, len(sensors), block)):
+            ids = tuple(range(lo, min(lo + block, len(sensors))))
+            cseed = derive_seed(seed, tg.key, b)
+            ident = {
+                "format": CHUNK_FORMAT, "stage": stage_sha, "light_units": light_units, "key": tg.key, "groups": gl,
+                "sensors": [_sensor_text(sensors[i]) for i in ids], "sim": sim, "seed": cseed, "levels": levels,
+            }  # fmt: skip
+            if split:
+                ident["sky_split"] = split
+            cid = hashlib.sha256(json.dumps(ident, sort_keys=True).encode()).hexdigest()[:20]
+            out.append(ChunkSpec(cid, tg.key, b, str(stage), light_units, tuple(sorted(tg.variants.items())), tg.sun, gl, ids,
+                                 tuple(sensors[i] for i in ids), sim, cseed, levels, sky_split=split))  # fmt: skip
+    return out
+
+
+@functools.lru_cache(maxsize=8)
+def _stage(stage: str, light_units: str, variants: tuple):
+    from simulator.scene.usd import load_stage
+
+    return load_stage(stage, light_units=light_units, radiometric_spectrum="E", variants=dict(variants))
+
+
+def chunk_scene(spec: ChunkSpec):
+    """The scene of a chunk's trace group: the stage with its variants, the sun turned to ``spec.sun``."""
+    scene = _stage(spec.stage, spec.light_units, spec.variants)
+    if spec.sun is None:
+        return scene
+    frame = sun_frame(sun_direction(*spec.sun))
+    lights = [replace(l, frame=frame) if l.kind == LightKind.DISTANT else l for l in scene.lights]
+    return replace(scene, lights=lights)
+
+
+def compute_chunk(spec: ChunkSpec) -> dict:
+    """Trace one chunk; returns plain arrays (see :meth:`ChunkStore.save`)."""
+    from simulator.config.loader import SimulationConfig
+
+    t0 = time.perf_counter()
+    scene = chunk_scene(spec)
+    sim = SimulationConfig(**spec.sim)
+    gr = trace_groups(scene, list(spec.sensors), {g: list(ls) for g, ls in spec.groups}, sim, spec.seed, threads=spec.threads,
+                      scenarios=[dict(lv) for lv in spec.levels], sky_split=spec.sky_split)  # fmt: skip
+    return {
+        "id": spec.id, "names": gr.names, "mean": gr.mean, "stderr": gr.stderr, "cov": gr.cov, "samples": gr.samples,
+        "trace_s": gr.trace_s, "trace_cpu_s": gr.trace_cpu_s, "methods": list(gr.methods), "wall_s": time.perf_counter() - t0, "host": socket.gethostname(), "pid": os.getpid(),
+    }  # fmt: skip
+
+
+def readings_of(result: dict) -> GroupReadings:
+    return GroupReadings(list(result["names"]), result["mean"], result["stderr"], result["cov"], result["samples"], result["trace_s"],
+                         float(result.get("trace_cpu_s", 0.0)), [str(m) for m in result.get("methods", [])])  # fmt: skip
+
+
+class ChunkStore:
+    """Finished chunks in ``<dir>/chunks`` and their manifest ``<dir>/manifest.json``."""
+
+    def __init__(self, root: Path):
+        self.root = Path(root)
+        self.dir = self.root / "chunks"
+        self.manifest_path = self.root / "manifest.json"
+        self.entries: dict[str, dict] = {}
+        if self.manifest_path.is_file():
+            try:
+                self.entries = json.loads(self.manifest_path.read_text()).get("chunks", {})
+            except (OSError, ValueError):
+                self.entries = {}  # unreadable manifest: recompute everything
+
+    def load(self, cid: str) -> dict | None:
+        """A finished chunk's arrays, or None when it is missing or its file does not match the manifest."""
+        e = self.entries.get(cid)
+        if e is None:
+            return None
+        p = self.dir / e["file"]
+        try:
+            data = p.read_bytes()
+        except OSError:
+            return None
+        if hashlib.sha256(data).hexdigest() != e["sha256"]:
+            return None
+        with np.load(io.BytesIO(data), allow_pickle=False) as z:
+            out = {k: z[k] for k in z.files}
+        out["names"] = [str(n) for n in out["names"]]
+        out["methods"] = [str(m) for m in out.get("methods", [])]
+        out["id"] = cid
+        out.update({k: e[k] for k in ("wall_s", "host", "pid") if k in e})
+        return out
+
+    def save(self, result: dict) -> None:
+        """Write a chunk, then its manifest entry, each atomically."""
+        buf = io.BytesIO()
+        np.savez(buf, names=np.array(result["names"]), mean=result["mean"], stderr=result["stderr"], cov=result["cov"],
+                 samples=result["samples"], trace_s=result["trace_s"], trace_cpu_s=np.float64(result.get("trace_cpu_s", 0.0)),
+                 methods=np.array(list(result.get("methods", [])), dtype=str))  # fmt: skip
+        data = buf.getvalue()
+        name = f"{result['id']}.npz"
+        atomic_write(self.dir / name, data)
+        self.entries[result["id"]] = {
+            "file": name, "sha256": hashlib.sha256(data).hexdigest(), "wall_s": float(result["wall_s"]),
+            "host": result.get("host", ""), "pid": int(result.get("pid", 0)),
+        }  # fmt: skip
+        atomic_write(self.manifest_path, json.dumps({"format": CHUNK_FORMAT, "chunks": self.entries}, indent=1, sort_keys=True).encode())
