@@ -21,6 +21,7 @@ from simulator.plan.planner import Plan, make_plan, probe_method
 from simulator.io.results import Reading, probe_readings, readings_from, write_outputs
 from simulator.scene.model import Scene, Sensor, SensorKind
 from simulator.scene.light_flux import lights_record
+from simulator.scene.sanity import sensor_warnings
 
 __all__ = ["RunOutput", "load_scene", "cached_scene", "collect_sensors", "run"]
 
@@ -231,6 +232,7 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True) -> RunOutp
 
         hero = run_hero_tables(cfg, scene)
     sensors = collect_sensors(cfg, scene)
+    misplaced = sensor_warnings(scene, sensors)  # sensors a stage would read a plausible wrong number at
     # probes are read by their own kernel (simulator.engine.probes)
     probes = [s for s in sensors if s.kind == SensorKind.PROBE]
     plain = [s for s in sensors if s.kind != SensorKind.PROBE]
@@ -244,12 +246,12 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True) -> RunOutp
         reason += f"; probes: {why}"
     t_load = time.perf_counter()
     engine = config_engine(cfg, scene, plain, hero=hero)
-    for w in _scene_warnings(scene, engine) + ([] if hero is None else hero.notes):
+    for w in _scene_warnings(scene, engine) + ([] if hero is None else hero.notes) + misplaced:
         log(f"warning: {w}")
     t_setup = time.perf_counter()
     with sigint_deferred() as stop:  # Ctrl-C from here on: stop after the batch, write what was measured
         return _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log,
-                                (t0, t_read, t_load, t_setup), spectrum, write)  # fmt: skip
+                                (t0, t_read, t_load, t_setup), spectrum, write, misplaced)  # fmt: skip
 
 
 def _run_spectrum(cfg: RunConfig, scene: Scene):
@@ -319,7 +321,7 @@ def _partial_rows(rows: list[Reading], unfinished: dict[str, bool], adaptive: bo
 
 
 def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log, times,
-                     spectrum=None, write=True) -> RunOutput:
+                     spectrum=None, write=True, misplaced=()) -> RunOutput:
     """The rest of :func:`run`: trace (until done or ``stop``), then write the files."""
     t0, t_read, t_load, t_setup = times
     sim = cfg.simulation
@@ -398,7 +400,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         "lights": lights_record(scene.lights),
         "sensors": len(sensors),
         "triangles": scene.geometry.n_triangles,
-        "warnings": _scene_warnings(scene, engine) + list(res.warnings),
+        "warnings": _scene_warnings(scene, engine) + list(misplaced) + list(res.warnings),
         "non_finite_samples": int(res.non_finite.sum()) + sum(p.non_finite for p in probe_res),
         "maps": sorted(p.name for p in extra),
         "probe_maps": probe_maps,

@@ -10,13 +10,13 @@ from typing import Callable
 import numpy as np
 
 from simulator.errors import UserError
-from simulator.study.inputs.candidates import build_candidates
+from simulator.study.inputs.candidates import build_candidates, candidate_warnings
 from simulator.study.trace.chunks import ChunkStore, StudyInterrupted, chunk_scene, make_chunks, readings_of
 from simulator.study.trace.distributed import choose_mode, run_chunks
 from simulator.study.trace.groups import derive_seed, group_scene
 from simulator.study.figures.objectives import compliance, zone_figures
 from simulator.study.figures.placement import place_sensors
-from simulator.study.inputs.scenarios import check_split_groups, expand_scenarios, resolve_groups, trace_groups_of
+from simulator.study.inputs.scenarios import check_split_groups, dark_scenarios, expand_scenarios, resolve_groups, trace_groups_of
 from simulator.study.schema import Study
 
 __all__ = ["StudyResult", "run_study", "zone_members"]
@@ -161,6 +161,7 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     sets = build_candidates(base, study.candidates, label)
     candidates = [c for s in sets for c in s.candidates]
     sensors = [c.sensor for c in candidates]
+    warnings += candidate_warnings(base, study.candidates, sets, label)
     groups, unassigned = resolve_groups(base, study.group, label)
     if unassigned:
         warnings.append(f"lights in no [[group]] stay off in every scenario: {', '.join(unassigned)}")
@@ -169,6 +170,7 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     sky_split = check_split_groups(base, study.group, groups, label)
     scenarios = expand_scenarios(study.scenario, list(groups), label, scene=base, groups=groups)
     tgs = trace_groups_of(scenarios, base, groups, label)
+    warnings += dark_scenarios(scenarios, base, groups)
     for tg in tgs:  # variant names are checked by the reader: fail before any chunk runs
         if tg.variants:
             try:

@@ -65,6 +65,7 @@ Schema
     sun = { azimuth_deg = 250, elevation_deg = 30 }   # or latitude_deg,
                                        # longitude_deg, time (ISO 8601 with offset)
     variants = { reflectance = "light" }
+    # allow_boost = true               # levels above 1 (a boost); refused without it
 
     [[scenario]]                       # a CIE sky on a split sky group: patch levels
     name = "clear_sky"                 # L_p / L_dome, times the group's level
@@ -323,6 +324,14 @@ class SkySpec(_Model):
 
 
 class ScenarioSpec(_Model):
+    """A ``[[scenario]]``: its groups' dimming levels, a sun, a sky and variant selections.
+
+    A level is a fraction of the group's authored output: 0 is off, 1 full
+    output. A level above 1 (a boost: more than the stage's lamps give) is
+    refused unless the scenario says ``allow_boost = true``, so that a level
+    typed as a percentage (``100``) is not traced as a hundredfold lamp.
+    """
+
     name: str = Field(min_length=1, description="the scenario's name")
     levels: dict[str, Union[Level, list[Level]]] = Field(
         description="group → dimming level; lists expand into their product"
@@ -335,6 +344,9 @@ class ScenarioSpec(_Model):
     )
     sky: SkySpec | None = Field(None, description="a CIE sky on a split sky group: its patch levels")
     variants: dict[str, str] = Field({}, description="USD variant selections, set → variant")
+    allow_boost: bool = Field(
+        False, description="levels above 1 are meant (a boost beyond the stage's output); without it they are refused"
+    )
 
     @field_validator("levels")
     @classmethod
@@ -345,6 +357,17 @@ class ScenarioSpec(_Model):
             if isinstance(lv, list) and not lv:
                 raise ValueError(f"{g}: empty list of levels")
         return v
+
+    @model_validator(mode="after")
+    def _boost_asked(self):
+        if self.allow_boost:
+            return self
+        for g, lv in self.levels.items():
+            for x in lv if isinstance(lv, list) else [lv]:
+                if x > 1.0:
+                    raise ValueError(f"levels.{g}: {x:g} is above 1 (full output; a level is a fraction, not a percentage): "
+                                    "set allow_boost = true on the scenario if a boost is meant")
+        return self
 
 
 class ZoneSpec(_Model):

@@ -95,7 +95,7 @@ Lights
     ignored with a warning; a negative size, or a ``portals`` target that is
     missing or not a PortalLight, is an error. Plugin lights are not read
     (counted in the summary warning). A stage with no light at all (no UsdLux light, no
-    emitting triangle) is refused: every reading would be zero. Inputs
+    emitting triangle), or whose every light emits 0, is refused: every reading would be zero. Inputs
     authored under their legacy names (no ``inputs:`` prefix, before USD
     21.05) are read where the ``inputs:`` name is not authored, and named
     once in the summary warning (:mod:`.legacy`).

@@ -80,6 +80,25 @@ def sealed_light(points: np.ndarray, triangles: np.ndarray, albedo: np.ndarray, 
     return None
 
 
+def closed_shells(points: np.ndarray, triangles: np.ndarray) -> list[np.ndarray]:
+    """Triangle indices (into ``triangles``) of each closed connected component of the whole soup.
+
+    The same welding, components and closure test as :func:`sealed_light`
+    applies to the albedo-1 triangles, on every triangle (degenerate ones
+    left out); used by :mod:`simulator.scene.sanity` to tell a sensor inside
+    a solid or outside a room.
+    """
+    if len(triangles) == 0:
+        return []
+    tris = _welded(points, np.asarray(triangles))
+    keep = np.flatnonzero((tris[:, 0] != tris[:, 1]) & (tris[:, 1] != tris[:, 2]) & (tris[:, 0] != tris[:, 2]))
+    if len(keep) == 0:
+        return []
+    tris = tris[keep]
+    label = _components(tris)
+    return [keep[label == c] for c in _closed_components(tris, label)]
+
+
 def _welded(points: np.ndarray, tris: np.ndarray) -> np.ndarray:
     """Triangle vertex ids after merging points that coincide (to 1e-9 of the extent)."""
     used = np.unique(tris)
@@ -112,9 +131,10 @@ def _components(tris: np.ndarray) -> np.ndarray:
 
 def _closed_components(tris: np.ndarray, label: np.ndarray) -> list[int]:
     """Labels of components all of whose edges are shared by an even number of their triangles."""
-    edges = np.sort(np.concatenate([tris[:, [0, 1]], tris[:, [1, 2]], tris[:, [2, 0]]]), axis=1)
+    edges = np.sort(np.concatenate([tris[:, [0, 1]], tris[:, [1, 2]], tris[:, [2, 0]]]), axis=1).astype(np.int64)
     owner = np.tile(label, 3)
-    _, inv, counts = np.unique(edges, axis=0, return_inverse=True, return_counts=True)
+    key = edges[:, 0] * (int(edges.max()) + 1) + edges[:, 1]  # one integer per edge: a 1-D unique, not a row-wise one
+    _, inv, counts = np.unique(key, return_inverse=True, return_counts=True)
     odd = counts[inv.ravel()] % 2 == 1
     open_labels = set(np.unique(owner[odd]).tolist())
     return [int(c) for c in np.unique(label) if int(c) not in open_labels]

@@ -61,16 +61,24 @@ def _is_supported_light(prim: Usd.Prim) -> bool:
 def _require_light(ctx: _Context, lights: list[Light], geometry) -> None:
     """Refuse a stage in which nothing emits: every reading would be a silent zero.
 
+    A light that was read but emits nothing (``intensity`` 0, an ``exposure``
+    of -inf, a black ``color``) counts as no light: a stage whose every
+    light is at 0 is refused as one without lights, naming them.
+
     Raises
     ------
     UserError
         No UsdLux light was read and no triangle emits (``emissiveColor`` or
-        a mesh light).
+        a mesh light), or every light read emits 0.
     """
     emits = geometry.n_triangles > 0 and bool(np.any(geometry.emission > 0))
     if not lights and not emits:
         raise UserError(f"{ctx.path}: no light in the stage (no UsdLux light and no emissive geometry); "
                         "every reading would be zero")
+    if not emits and not any(max(l.emission) > 0.0 for l in lights):
+        names = ", ".join(l.name for l in lights[:3]) + (f" and {len(lights) - 3} more" if len(lights) > 3 else "")
+        raise UserError(f"{ctx.path}: every light emits 0 ({names}: intensity, exposure or color at 0) and no geometry "
+                        "emits; every reading would be zero")
 
 
 def _read_light(ctx: _Context, prim: Usd.Prim) -> Light | None:

@@ -244,7 +244,7 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
     from simulator.scene.model import LightKind, SensorKind
     from simulator.scene.usd import load_stage
     from simulator.study.annual import control as CT
-    from simulator.study.inputs.candidates import build_candidates
+    from simulator.study.inputs.candidates import build_candidates, candidate_warnings
     from simulator.study.trace.chunks import ChunkStore, make_chunks
     from simulator.study.annual.climate import daylight_mask, hour_of_day, read_weather
     from simulator.study.trace.distributed import choose_mode, run_chunks
@@ -267,6 +267,9 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
         raise UserError(f"{label}: annual.illuminance: the weather file has no illuminance fields: use \"efficacy\"")
     base = load_stage(stage, light_units=study.light_units, radiometric_spectrum="E")
     sets = build_candidates(base, study.candidates, label)
+    misplaced = candidate_warnings(base, study.candidates, sets, label)
+    for w in misplaced:
+        log(f"warning: {w}")
     cands = [c for s in sets for c in s.candidates]
     sensors = [c.sensor for c in cands]
     groups, _ = resolve_groups(base, study.group, label)
@@ -278,7 +281,7 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
         raise UserError(f"{label}: annual.sky_group: the DomeLight {dome.name} has no luminance to scale")
     names_index = {c.sensor.name: k for k, c in enumerate(cands)}
     pools = _control_pools(study, cands, names_index, label)
-    notes = list(weather.notes) + [f"warning: {w}" for w in weather.warnings]
+    notes = list(weather.notes) + [f"warning: {w}" for w in weather.warnings + misplaced]
     for w in weather.warnings:  # the weather's doubts, on the console as they are found and in the record
         log(f"warning: {w}")
     if any(l.kind == LightKind.DISTANT for l in base.lights):

@@ -29,7 +29,7 @@ from simulator.scene.model import Scene, Sensor, SensorKind
 from simulator.study.inputs.en12464 import Grid, en12464_grid, explicit_grid
 from simulator.study.schema import CandidateSpec
 
-__all__ = ["Candidate", "CandidateSet", "build_candidates", "match_prims"]
+__all__ = ["Candidate", "CandidateSet", "build_candidates", "candidate_warnings", "match_prims"]
 
 # flatness: unit normals within this of the mean, vertices within this distance (m) of the plane
 _FLAT_COS = 0.9995
@@ -226,3 +226,34 @@ def build_candidates(scene: Scene, specs: list[CandidateSpec], file_label: str) 
         dropped = [c.position.copy() for c in cands if id(c) not in kept]
         sets.append(CandidateSet(spec.name, spec.kind, keep, grids, len(cands) - len(keep), outside, dropped))
     return sets
+
+
+def candidate_warnings(scene: Scene, specs: list[CandidateSpec], sets: list[CandidateSet], file_label: str) -> list[str]:
+    """Where the candidates stand: a grid whose plane lies outside the stage (``height_m`` puts a work
+    plane above the ceiling, or a typed-in value is not in metres), then the checks of
+    :func:`simulator.scene.sanity.sensor_warnings` on every other candidate.
+
+    Raises
+    ------
+    UserError
+        A grid whose every point lies more than :data:`simulator.scene.sanity.FAR_REL` of the stage's
+        diagonals outside the stage's box: it is near nothing of the stage.
+    """
+    from simulator.scene.sanity import FAR_REL, box_text, outside_gap, sensor_warnings, stage_box
+
+    box = stage_box(scene)
+    diag = float(np.linalg.norm(box[1] - box[0]))
+    out, rest = [], []
+    for k, (spec, cs) in enumerate(zip(specs, sets)):
+        pts = np.array([c.position for c in cs.candidates], np.float64).reshape(-1, 3)
+        gap = outside_gap(pts, box)
+        if spec.on is None or not np.all(gap > 0):
+            rest += [c.sensor for c in cs.candidates]
+            continue
+        prims = ", ".join(list(cs.grids)[:2]) + (" ..." if len(cs.grids) > 2 else "")
+        msg = (f"{file_label}: candidates[{k}].height_m: {spec.height_m:g} m from {prims} puts the {spec.name!r} grid "
+               f"outside the stage ({box_text(box)}) by {float(gap.min()):.3g} m")
+        if float(gap.min()) > FAR_REL * diag:
+            raise UserError(msg + ", near nothing of it (height_m is in metres)")
+        out.append(msg + ": a work plane above the ceiling or below the floor reads the open sky or 0")
+    return out + sensor_warnings(scene, rest)

@@ -32,7 +32,8 @@ from simulator.study.inputs.candidates import match_prims
 from simulator.study.schema import GroupSpec, ScenarioSpec, SkySpec, SunSpec
 from simulator.study.inputs.sun import solar_position, sun_direction
 
-__all__ = ["Scenario", "TraceGroup", "expand_scenarios", "resolve_groups", "trace_groups_of", "sky_levels", "check_split_groups"]
+__all__ = ["Scenario", "TraceGroup", "expand_scenarios", "resolve_groups", "trace_groups_of", "sky_levels", "check_split_groups",
+           "dark_scenarios"]
 
 
 @dataclass(frozen=True)
@@ -258,3 +259,21 @@ def trace_groups_of(scenarios: list[Scenario], scene: Scene, groups: dict[str, l
         tg.groups = [g for g in groups if any(s.levels.get(g, 0.0) > 0.0 for s in tg.scenarios)]
     scenarios[:] = fixed
     return list(tgs.values())
+
+
+def dark_scenarios(scenarios: list[Scenario], scene: Scene, groups: dict[str, list[str]]) -> list[str]:
+    """One warning per scenario in which nothing is lit: every group's level is 0 (or the sun below the
+    horizon turned its group off), or the groups it lights hold only lights that emit 0. Its readings are
+    all 0, and a zone's "pass" on them means nothing."""
+    emits = {l.name for l in scene.lights if max(l.emission) > 0.0}
+    out = []
+    for sc in scenarios:
+        plain = {g: v for g, v in sc.levels.items() if "/" not in g}  # not a sky's patch slots
+        lit = [g for g, v in plain.items() if v > 0.0]
+        if any(n in emits for g in lit for n in groups.get(g, [])):
+            continue
+        why = ("every level is 0" if not lit else
+               f"its lit group(s) {', '.join(repr(g) for g in lit)} hold only lights that emit 0")
+        off = [n for n in sc.notes if "below the horizon" in n]
+        out.append(f"scenario {sc.name!r}: nothing is lit ({why}{'; ' + off[0] if off else ''}): every reading is 0")
+    return out
