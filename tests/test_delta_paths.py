@@ -296,3 +296,40 @@ def test_mirror_under_a_lamp_and_a_globe_reads_both_images(tmp_path):
     v, se = float(res.mean[0, 1]), float(res.stderr[0, 1])
     truth = e_lamp + e_globe
     assert abs(v - truth) <= 4.0 * se + 1e-4 * truth, (v, se, truth, e_lamp)
+
+
+# --------------------------------------------------------------------------- #
+# a translucent layer: its slab is only the gap between its matte share
+# --------------------------------------------------------------------------- #
+
+LAYER_OPACITY = 0.25  # not 0.5: the gap 1 − o and the matte share o must differ
+LAYER_CASES = [("point", "irradiance"), ("sun", "irradiance"), ("dome", "irradiance"), ("sun", "radiance")]
+
+
+@pytest.mark.parametrize("light_kind, sensor_kind", LAYER_CASES, ids=[f"{l}-{s}" for l, s in LAYER_CASES])
+def test_a_translucent_layer_reflects_through_its_gap_only(tmp_path, light_kind, sensor_kind):
+    """UsdPreviewSurface ``opacity`` 0.25 in transparent mode at ior 1.5, black (ρ = 0), over a black floor:
+    a translucent layer whose matte share o absorbs and whose gap 1 − o is the clear slab, so it
+    mirrors F(μ) = (1 − o)·R(μ) (docs/DESIGN.md §Surfaces beyond Lambert). Image-source closed forms
+    as in the module docstring, with that F: the sun and a point light reach an irradiance sensor
+    only through the image source, which must take the gap's share, not the matte share c."""
+    body = (material("Layer", f"float inputs:opacity = {LAYER_OPACITY}\n        float inputs:ior = {IOR}", rho=0.0)
+            + material("Black", rho=0.0) + quad("Plane", 0.0, "Layer", half=HALF)
+            + quad("Floor", -1.0, "Black", half=HALF))
+    scene = load_stage(stage(tmp_path, body + LIGHTS[light_kind]))
+    row = scene.geometry.surfaces[int(scene.geometry.surface_id[0])]
+    assert row.pane and row.ior == pytest.approx(IOR)
+    tau = row.tau
+    f = lambda mu: (1.0 - LAYER_OPACITY) * slab(mu, IOR, tau)[0]  # noqa: E731
+    pos = np.array([0.0, 0.0, Z_SENSOR])
+    if sensor_kind == "irradiance":
+        sensor = Sensor(name="s", kind=SensorKind.IRRADIANCE, position=pos, normal=np.array([0.0, 0.0, -1.0]))
+        truth = irradiance_truth(light_kind, scene, f)
+    else:
+        sensor = Sensor(name="s", kind=SensorKind.RADIANCE, position=pos, normal=_meter_axis(light_kind, scene),
+                        half_angle=math.radians(0.1))
+        truth = radiance_truth(light_kind, scene, f)
+    res = Engine(scene, [sensor]).run("path", samples=SAMPLES[sensor_kind], seed=11)
+    v, se = float(res.mean[0, 1]), float(res.stderr[0, 1])
+    rel = 2e-4 if light_kind == "sun" else 1e-4
+    assert abs(v - truth) <= 4.0 * se + rel * truth, (v, se, truth)

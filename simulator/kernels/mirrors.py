@@ -148,6 +148,8 @@ def image_source(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp
     m = o + start * wi
     srow = scene.surf[scene.surf_id[face]]
     cover = coverage_at(scene, srow, face, m)
+    if srow.pane == 2:  # a translucent layer: its slab is the gap 1 − c, the share c its matte face (surfaces.pass_factor)
+        cover = 1.0 - cover
     if cover <= 0.0:
         return out
     to_l = to_sun
