@@ -5,7 +5,7 @@ the cache behaviour is checked on a one-line kernel in a module of its own,
 compiled into a fresh temporary kernel cache: the same code path
 (:func:`kernel_modules.is_cached`, :func:`kernel_modules.load`) that a run
 takes for the trace modules. Which module a stage's run loads is checked on
-the real ones (they are compiled once per test session by other tests too).
+the real ones (they are compiled once per test run by other tests too).
 """
 
 from __future__ import annotations
