@@ -90,7 +90,7 @@ def shared_pass(sc, sensors, groups, n, seed, scenarios=SCENARIOS):
         gr = trace_groups(sc, sensors, groups, SimulationConfig(samples=n, seed=seed), seed, scenarios=list(scenarios.values()))
     finally:
         driver.Engine.run = run
-    out = {}
+    out = {"cpu_s": gr.trace_cpu_s}
     for name, lv in scenarios.items():
         m, se = gr.combine(lv)
         out[name] = (m[:, 1], se[:, 1])
@@ -120,10 +120,12 @@ def main(argv=None) -> int:
     split = a.split if a.split == "auto" else int(a.split)
     sc, sensors, groups = office(a.spacing)
     ratios = {k: [] for k in SCENARIOS}
+    cpu = []
     worst = {k: 0.0 for k in SCENARIOS}
     for s in range(a.seeds):
         got = shared_pass(sc, sensors, groups, a.samples, 11 + 2 * s)
-        print("split pilot of the pass:", split_of_pass())
+        cpu.append(got.pop("cpu_s"))
+        print("split pilot of the pass (K, each scenario's K):", split_of_pass())
         for name, lv in SCENARIOS.items():
             pm, pse = plain_run(sc, sensors, lv, groups, a.samples, 12 + 2 * s, split)
             m, se = got[name]
@@ -131,6 +133,7 @@ def main(argv=None) -> int:
             ratios[name] += list((se[ok] / pse[ok]) ** 2)
             worst[name] = max(worst[name], float(np.max(np.abs(m - pm) / np.hypot(se, pse))))
     print(f"office, {len(sensors)} work-plane sensors, {a.samples} samples, {a.seeds} seed pairs, lamps at {a.level}")
+    print(f"pass CPU seconds (process, all threads; contended machine): {', '.join(f'{c:.1f}' for c in cpu)}")
     print("scenario    median var ratio   rms var ratio   max |diff|/sigma")
     for name, r in ratios.items():
         r = np.asarray(r)
