@@ -86,11 +86,11 @@ def test_a_lamp_only_scenario_beside_the_sun_is_no_noisier_than_a_plain_run(offi
     scaled by 1.7 splits its indirect paths by its own pilot (K = 5 here).
 
     Measured (benchmarks/lamp_scenario.py, 3 seed pairs): variance-per-sample ratio pass/plain, median over
-    sensors, 4.8 before (one path a sample, guide learnt on the sun's patch), 0.71 now; with a third
-    scenario lighting the sun, 6.6 before and 0.93 now. The bound 1.21 (standard error ≤ 1.1×, the target)
+    sensors, 7.3 before (one path a sample, guide learnt on the sun's patch), 0.71 now; with a third
+    scenario lighting the sun, 7.3 before and 0.93 now. The bound 1.21 (standard error ≤ 1.1×, the target)
     sits 4 to 5 standard deviations of a variance ratio above the measured figures (a ratio of two variances
     from 1024 samples each has a relative spread of about √(2·2/1023) = 6% per sensor, the median of 8
-    less) and 4× below the old figure. Agreement: every lamp reading within 4 combined standard errors of
+    less) and 6× below the old figure. Agreement: every lamp reading within 4 combined standard errors of
     the plain run, and Σ z² over the 8 sensors under χ²₈'s 0.999 quantile, 26.1 (z = difference over
     the combined standard error: an understated standard error would inflate it)."""
     from simulator.config.loader import SimulationConfig

@@ -406,7 +406,7 @@ class Engine:
             ids = np.arange(len(self.sensors)) if sensor_ids is None else np.asarray(sensor_ids, np.int64)
             lit = levels = None
             pilot = self._split_pilot_groups(groups)
-            if pilot is not None and pilot[1].shape[1] > 1:
+            if pilot is not None and pilot[1].shape[1] > 1 and self._hero is None:  # spectral: rows not scaled
                 g_of, lv = pilot
                 keep = np.flatnonzero(lv.max(axis=0) > 0)  # groups some scenario lights
                 lit = (g_of[None, :] == keep[:, None]).astype(np.float64)
