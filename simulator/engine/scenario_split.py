@@ -8,8 +8,7 @@ a lamp-only scenario whose plain run splits came out much noisier: on the
 office (window row, corridor row, sky and sun in one pass; both rows at 1.7,
 the rest at 0; 8 work-plane sensors, 1024 samples) its variance per sample was
 6.6× a plain run's (standard error 2.6×; 7.3× over three seed pairs), where the
-plain run
-chose K = 5.
+plain run chose K = 5.
 
 Notes
 -----
