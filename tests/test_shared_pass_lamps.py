@@ -87,12 +87,14 @@ def test_a_lamp_only_scenario_beside_the_sun_is_no_noisier_than_a_plain_run(offi
 
     Measured (benchmarks/lamp_scenario.py, 3 seed pairs): variance-per-sample ratio pass/plain, median over
     sensors, 7.3 before (one path a sample, guide learnt on the sun's patch), 0.71 now; with a third
-    scenario lighting the sun, 7.3 before and 0.93 now. The bound 1.21 (standard error ≤ 1.1×, the target)
-    sits 4 to 5 standard deviations of a variance ratio above the measured figures (a ratio of two variances
-    from 1024 samples each has a relative spread of about √(2·2/1023) = 6% per sensor, the median of 8
-    less) and 6× below the old figure. Agreement: every lamp reading within 4 combined standard errors of
+    scenario lighting the sun, 7.3 before and 0.89 now; this seed pair 0.73. The bound 1.21 is the target
+    (standard error ≤ 1.1× a plain run's): a per-sensor ratio of two variances from 1024 samples each spreads
+    by about √(2/1023 + 2/1023) = 6% (more where indirect paths have heavy tails), the median of 8 by less,
+    so the measured figures sit many of those spreads below the bound and the old figure (7.3; 5.8–9.0 per
+    sensor on this seed pair) 6× above it. Agreement: every lamp reading within 4 combined standard errors of
     the plain run, and Σ z² over the 8 sensors under χ²₈'s 0.999 quantile, 26.1 (z = difference over
-    the combined standard error: an understated standard error would inflate it)."""
+    the combined standard error: an understated standard error would inflate it). The pass's other scenario
+    (overcast) agrees with its own plain run within 4σ and is no noisier than it either."""
     from simulator.config.loader import SimulationConfig
     from simulator.study.trace.groups import trace_groups
 
@@ -108,3 +110,8 @@ def test_a_lamp_only_scenario_beside_the_sun_is_no_noisier_than_a_plain_run(offi
     z = (m[:, 1] - pm) / np.hypot(se[:, 1], pse)
     assert np.all(np.abs(z) <= 4.0), z
     assert float(np.sum(z**2)) <= 26.1, z
+    # the other scenario of the pass: unbiased, and no noisier than its own plain run (measured 0.27×)
+    m, se = gr.combine(scen[1])
+    pm, pse = _plain(sc, sensors, scen[1], groups, n, 15)
+    assert np.median((se[:, 1] / pse) ** 2) <= 1.21
+    assert np.all(np.abs(m[:, 1] - pm) <= 4.0 * np.hypot(se[:, 1], pse))
