@@ -233,6 +233,7 @@ class DeviceScene:
         rec.emit_prob = wp.array(prob.astype(np.float32), dtype=float)
         rec.lights = wp.array(lights, dtype=K.LightRec) if lights else wp.zeros(1, dtype=K.LightRec)
         rec.n_lights = len(lights)
+        self._light_src, self._lights_authored = list(scene.lights), rec.lights  # for set_light_scale
         rec.guide = self._guide_record(wp, K, n_tri)
         self._keep += [mesh, points, tri_ids, rec.albedo, rec.emission, rec.two_sided, rec.emit_tris, rec.emit_cdf,
                        rec.emit_prob, rec.lights]  # fmt: skip
@@ -486,6 +487,24 @@ class DeviceScene:
             self.rec.patch_pick_tally = wp.zeros(1, dtype=wp.vec3)
             self.rec.n_patch_pick = 1
         self._patch_pick_factor = self.rec.patch_pick_factor  # the record holds only its pointer
+
+    def set_light_scale(self, scale: np.ndarray | None) -> None:
+        """Each light record's emission × ``scale[l]`` (L,) for the launches that follow (a pilot that
+        lights some lights only), or, with None, the authored records back. The emissive record, last
+        where there is one, keeps its own emission (its triangles' rows are not scaled)."""
+        wp = warp()
+        if scale is None:
+            self.rec.lights = self._lights_authored
+            return
+        from simulator.kernels import estimators as K
+        from simulator.kernels import lights as L
+
+        recs = [L.light_record(dc_replace(l, emission=(l.emission[0] * float(k), l.emission[1] * float(k))), self._keep)
+                for l, k in zip(self._light_src, scale)]  # fmt: skip
+        if self.emissive_light >= 0:
+            recs.append(L.emissive_record())
+        with wp.ScopedDevice(self.device):
+            self.rec.lights = wp.array(recs, dtype=K.LightRec) if recs else self._lights_authored
 
     def use_patch_pick(self, on: bool) -> None:
         """Let the per-patch factors steer the pick (where they have been set), or the rows alone."""

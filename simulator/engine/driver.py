@@ -31,6 +31,9 @@ from simulator.engine.methods import (
     COMPONENTS, GUIDED_METHODS, LIGHT_PICK_MODES, METHOD_FLAGS, light_pick_rule, rr_pilot_choice, rr_threshold_rule,
 )
 from simulator.engine.stats import GroupBatchStats, GroupStats, RunningStats, z_for_confidence
+from simulator.engine.scenario_split import (
+    MAX_PILOT_GROUPS, neyman_split, pass_split, pilot_groups, scenario_relative_variances,
+)
 from simulator.errors import UserError
 from simulator.interrupts import StopFlag
 from simulator.scene import emitters
@@ -391,14 +394,24 @@ class Engine:
             self._rr_rule_t = rr_threshold_rule(self.scene)[0]
         return self._rr_rule_t
 
-    def ensure_guide(self, seed: int, sensor_ids: np.ndarray | None = None, max_depth: int = -1):
+    def ensure_guide(self, seed: int, sensor_ids: np.ndarray | None = None, max_depth: int = -1,
+                     groups: LightGroups | None = None):  # fmt: skip
         """Build the surface guide from a pilot over ``sensor_ids`` (default
-        all), once: later guided runs reuse it. Returns its GuideInfo."""
+        all), once: later guided runs reuse it. Returns its GuideInfo. A light-group pass with
+        scenarios (``groups.pick_levels``) learns it per pilot group and serves every scenario
+        (:func:`simulator.engine.guide.scenario_tally`)."""
         if self.guide is None:
             from simulator.engine.guide import build_guide
 
             ids = np.arange(len(self.sensors)) if sensor_ids is None else np.asarray(sensor_ids, np.int64)
-            self.guide = build_guide(self, seed, ids, max_depth)
+            lit = levels = None
+            pilot = self._split_pilot_groups(groups)
+            if pilot is not None and pilot[1].shape[1] > 1 and self._hero is None:  # spectral: rows not scaled
+                g_of, lv = pilot
+                keep = np.flatnonzero(lv.max(axis=0) > 0)  # groups some scenario lights
+                lit = (g_of[None, :] == keep[:, None]).astype(np.float64)
+                levels = lv[:, keep]
+            self.guide = build_guide(self, seed, ids, max_depth, lit, levels)
         return self.guide
 
     def light_pick_mode(self, method: str) -> str:
@@ -537,7 +550,7 @@ class Engine:
             self._launch(params, sub, np.zeros(len(sub), np.int64), np.full(len(sub), PATCH_PICK_SAMPLES, np.int64),
                          tally=True)  # fmt: skip
 
-    def _split_rule(self, params, ids: np.ndarray) -> int:
+    def _split_rule(self, params, ids: np.ndarray, groups: LightGroups | None = None) -> int:
         """K, the indirect paths per irradiance sample (kernels.estimators.split_irradiance), from a
         pilot of SPLIT_PILOT_SAMPLES direct and as many indirect samples of each irradiance sensor in
         ``ids`` (their own seed stream): with V_d, V_i the relative variances per sample summed over
@@ -545,46 +558,97 @@ class Engine:
         K = √(V_i·c_d / (V_d·c_i)) (the Neyman allocation: the cost c_d + K·c_i times the variance
         V_d + V_i/K is least there), rounded, within [1, SPLIT_MAX]; 1 where the predicted gain
         (V_d + V_i)(c_d + c_i) / ((V_d + V_i/K)(c_d + K·c_i)) is under SPLIT_MIN_GAIN. Once per (run's
-        strategies, sensors)."""
+        strategies, sensors, scenarios). A light-group pass with scenarios (``groups.pick_levels``) takes
+        the largest of the scenarios' own K (:mod:`simulator.engine.scenario_split`), so a lamp-only
+        scenario is split as its plain run would be."""
         ids = np.asarray([i for i in ids if self.sensors[i].kind == SensorKind.IRRADIANCE], np.int64)
         if not len(ids) or params.spectral:
             return 1  # spectral transport: the pilot reads the grey channels only, not the responses
         key = (params.nee, params.bsdf, params.bounces, params.guide_c, params.pick_light, params.rr_threshold,
                params.seed, ids.tobytes())  # fmt: skip
+        pilot = self._split_pilot_groups(groups)
+        if pilot is not None:
+            key += (pilot[0].tobytes(), pilot[1].tobytes())
         if key in self._split_found:
             self.split_pilot = self._split_found[key]
             return self.split_pilot["k"]
         tb = time.perf_counter()
         parts = []
         depth, rays_kept = params.bounces, self.rays_traced
+        tally = {} if pilot is None else {"group_tally": 1, "n_groups": int(pilot[1].shape[1]), "group_batch": 0}
         try:
             with _fields_set(params, seed=(int(params.seed) + 0x1B873593) & 0x7FFFFFFF, count_rays=1,
-                             split_indirect=0, bounces=depth, skip_direct=params.skip_direct):
+                             split_indirect=0, bounces=depth, skip_direct=params.skip_direct, **tally):
+                if pilot is not None:
+                    self._upload_light_groups(pilot[0], None)  # the pass's own groups are set after the pilot
                 for bounces, skip in ((0, 0), (depth, 1)):
                     params.bounces, params.skip_direct = bounces, skip
                     self.rays_traced = 0
-                    _, cnt, mean, m2, *_ = self._launch(params, ids, np.zeros(len(ids), np.int64),
-                                                        np.full(len(ids), SPLIT_PILOT_SAMPLES, np.int64))  # fmt: skip
+                    _, cnt, mean, m2, _, _, _, g_mean, g_m2 = self._launch(
+                        params, ids, np.zeros(len(ids), np.int64), np.full(len(ids), SPLIT_PILOT_SAMPLES, np.int64))
                     rays = self.rays_traced / max(1, int(cnt.sum()))
-                    parts.append((mean[:, 1], m2[:, 1] / np.maximum(cnt - 1, 1), max(rays, 1.0)))
+                    parts.append((mean[:, 1], m2[:, 1] / np.maximum(cnt - 1, 1), max(rays, 1.0), cnt,
+                                  None if g_mean is None else g_mean[:, 1], None if g_m2 is None else g_m2[:, 1]))
         finally:
             self.rays_traced = rays_kept
-        (m_d, v_d, c_d), (m_i, v_i, c_i) = parts
+        (m_d, v_d, c_d, *g_d), (m_i, v_i, c_i, *g_i) = parts
         m = m_d + m_i
         ok = m > 0
         rv_d = float((v_d[ok] / m[ok] ** 2).sum())
         rv_i = float((v_i[ok] / m[ok] ** 2).sum())
-        k = 1
-        if rv_i > 0:
-            k = SPLIT_MAX if rv_d <= 0 else int(np.clip(round(float(np.sqrt(rv_i * c_d / (rv_d * c_i)))), 1, SPLIT_MAX))
-        gain = (rv_d + rv_i) * (c_d + c_i) / max((rv_d + rv_i / k) * (c_d + k * c_i), 1e-300) if rv_i > 0 else 1.0
-        if gain < SPLIT_MIN_GAIN:
-            k = 1  # the split would save too little (no indirect noise, or cheap direct light) to pay for the change
+        k, gain = neyman_split(rv_d, rv_i, c_d, c_i, SPLIT_MAX, SPLIT_MIN_GAIN)
         self.split_pilot = {"k": k, "relvar_direct": rv_d / max(1, int(ok.sum())),
                             "relvar_indirect": rv_i / max(1, int(ok.sum())), "rays_direct": c_d, "rays_indirect": c_i,
                             "predicted_gain": gain, "seconds": time.perf_counter() - tb}  # fmt: skip
+        if pilot is not None:
+            # each scenario's own K from its recombined pilot; the pass draws the largest (scenario_split)
+            (cnt_d, gm_d, g2_d), (cnt_i, gm_i, g2_i) = g_d, g_i
+            both = gm_d + gm_i
+            rvd = scenario_relative_variances(gm_d, g2_d, cnt_d, pilot[1], both)
+            rvi = scenario_relative_variances(gm_i, g2_i, cnt_i, pilot[1], both)
+            # no gain threshold: at the pass's dearer rays a scenario's own run would gain more (scenario_split)
+            per = [neyman_split(float(a), float(b), c_d, c_i, SPLIT_MAX, 1.0) for a, b in zip(rvd, rvi)]
+            k = pass_split(per, SPLIT_MAX)
+            self.split_pilot.update(k=k, k_of_scenarios=[kj for kj, _ in per],
+                                    predicted_gain_of_scenarios=[float(gj) for _, gj in per])  # fmt: skip
         self._split_found[key] = self.split_pilot
         return k
+
+    def _levels_of_lights(self, groups: LightGroups) -> np.ndarray:
+        """(J, L) each scenario's level of each light record of the device scene (``groups.pick_levels``)."""
+        from simulator.engine.scenario_pick import light_levels
+
+        n_l = int(self._dev.rec.n_lights)
+        lg = np.full(n_l, -1, np.int64)
+        lg[: len(groups.light_group)] = groups.light_group
+        if self.emissive_light >= 0:
+            lg[self.emissive_light] = groups.emissive_group
+        pb = None
+        if groups.patch_base is not None:
+            pb = np.full(n_l, -1, np.int64)
+            pb[: len(groups.patch_base)] = groups.patch_base
+        return light_levels(groups.pick_levels, lg, pb)
+
+    def _split_pilot_groups(self, groups: LightGroups | None):
+        """The split pilot's groups for a pass with scenarios: (group of each light record, levels (J, G')),
+        or None (no scenarios, or more than ``MAX_PILOT_GROUPS``: the total decides)."""
+        if groups is None or groups.pick_levels is None:
+            return None
+        g, lv = pilot_groups(self._levels_of_lights(groups))
+        return None if lv.shape[1] > MAX_PILOT_GROUPS else (g, lv)
+
+    def _upload_light_groups(self, light_group: np.ndarray, patch_base: np.ndarray | None) -> None:
+        """Each light record's tally slot (and a split dome's first slot, −1 for none) on the device."""
+        wp = warp()
+        n_l = int(self._dev.rec.n_lights)
+        lg = np.full(max(n_l, 1), -1, np.int32)
+        lg[: len(light_group)] = light_group
+        pb = np.full(max(n_l, 1), -1, np.int32)
+        if patch_base is not None:
+            pb[: len(patch_base)] = patch_base
+        with wp.ScopedDevice(self.device):
+            self._dev.rec.light_group = wp.array(lg, dtype=wp.int32)
+            self._dev.rec.patch_base = wp.array(pb, dtype=wp.int32)
 
     def _scenario_pick(self, groups: LightGroups | None, mode: int) -> int:
         """Steer the learnt pick toward the scenarios a group pass serves (``groups.pick_levels``,
@@ -915,7 +979,7 @@ class Engine:
         if METHOD_FLAGS[method][0] and self.emitter_pieces == "auto" and self.pieces_pilot is None:
             self._choose_pieces(method, seed, max_depth, component, ids_all)  # before the guide: it may rebuild
         if method in GUIDED_METHODS:
-            self.ensure_guide(seed, ids_all, max_depth)
+            self.ensure_guide(seed, ids_all, max_depth, groups)
         params = self.trace_params(method, seed, max_depth, component)
         params.count_rays = int(count_rays)  # True: every ray; 2: shadow rays only (kernels.rays)
         params.pick_light = LIGHT_PICK_MODES[self.light_pick_mode(method)]
@@ -923,11 +987,11 @@ class Engine:
             self._prepare_pick(method, seed, max_depth, component, ids_all)  # and the emitter pieces' factors
             params.pick_light = self._scenario_pick(groups, params.pick_light)
         self.split_pilot = None
-        if METHOD_FLAGS[method][3] and params.bounces != 0 and component == "total" and groups is None:
+        if METHOD_FLAGS[method][3] and params.bounces != 0 and component == "total":
             # before the roulette and first-batch pilots, so that they measure the samples the run draws
             k = self.split_indirect
             if k == "auto":
-                k = self._split_rule(params, ids_all)
+                k = self._split_rule(params, ids_all, groups)
             params.split_indirect = int(k) if int(k) > 1 else 0
         adaptive = rel_error is not None
         choose = adaptive and choose_first_batch
@@ -1050,21 +1114,14 @@ class Engine:
         return self.run(method, groups=groups, **kw)
 
     def _set_groups(self, params, groups: LightGroups) -> None:
-        wp = warp()
-        n_l = int(self._dev.rec.n_lights)
-        lg = np.full(max(n_l, 1), -1, np.int32)
+        lg = np.full(max(int(self._dev.rec.n_lights), 1), -1, np.int64)
         lg[: len(groups.light_group)] = groups.light_group
         if self.emissive_light >= 0:
             lg[self.emissive_light] = groups.emissive_group
-        pb = np.full(max(n_l, 1), -1, np.int32)
-        if groups.patch_base is not None:
-            pb[: len(groups.patch_base)] = groups.patch_base
         params.group_tally = 1
         params.n_groups = int(groups.n_groups)
         params.group_batch = 1 if groups.uses_batches else 0
-        with wp.ScopedDevice(self.device):
-            self._dev.rec.light_group = wp.array(lg, dtype=wp.int32)
-            self._dev.rec.patch_base = wp.array(pb, dtype=wp.int32)
+        self._upload_light_groups(lg, groups.patch_base)
 
     def _closed_form_groups(self, method: str, ids: np.ndarray, groups: LightGroups) -> EngineResult:
         """Closed-form readings per light group: each group's lights alone (exact, so the covariance is 0)."""
