@@ -664,18 +664,9 @@ class Engine:
                 self._dev.use_patch_pick(True)
                 self._pick_scaled = False
             return mode
-        from simulator.engine.scenario_pick import MAX_SPREAD, light_levels, pick_spread, scenario_multipliers
+        from simulator.engine.scenario_pick import MAX_SPREAD, pick_spread, scenario_multipliers
 
-        n_l = factors.shape[1]
-        lg = np.full(n_l, -1, np.int64)
-        lg[: len(groups.light_group)] = groups.light_group
-        if self.emissive_light >= 0:
-            lg[self.emissive_light] = groups.emissive_group
-        pb = None
-        if groups.patch_base is not None:
-            pb = np.full(n_l, -1, np.int64)
-            pb[: len(groups.patch_base)] = groups.patch_base
-        d = light_levels(groups.pick_levels, lg, pb)
+        d = self._levels_of_lights(groups)  # factors are (1 + S, L) over the same light records
         self._dev.set_pick_factors(factors * scenario_multipliers(got, d))
         self._dev.use_patch_pick(False)  # the patches' factors are not steered by the scenarios: the rows serve
         self._pick_scaled = True
