@@ -25,6 +25,7 @@ import pytest
 from simulator.engine.driver import Engine
 from simulator.scene.model import Sensor, SensorKind
 from simulator.scene.usd import load_stage
+from tests.test_surfaces import box
 
 E_SUN = 1000.0  # lx
 L_SUN = 1.0e5  # cd/m²
@@ -85,21 +86,6 @@ def Mesh "{name}"
 }}
 """
 
-
-def box(z0: float = 1.0, z1: float = 2.0, half: float = 5.0) -> str:
-    """A closed box (outward normals) from z0 to z1, ±half in x and y, bound to /Looks/G."""
-    h = half
-    pts = [(-h, -h, z0), (h, -h, z0), (h, h, z0), (-h, h, z0), (-h, -h, z1), (h, -h, z1), (h, h, z1), (-h, h, z1)]
-    faces = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
-    return f"""
-def Mesh "Box"
-{{
-    int[] faceVertexCounts = [4, 4, 4, 4, 4, 4]
-    int[] faceVertexIndices = [{", ".join(str(i) for f in faces for i in f)}]
-    point3f[] points = [{", ".join(f"({x}, {y}, {z})" for x, y, z in pts)}]
-    rel material:binding = </Looks/G>
-}}
-"""
 
 
 def sun(angle_deg: float = 0.0, intensity: float = E_SUN) -> str:
@@ -181,7 +167,7 @@ def test_thin_walled_box_is_two_sheets_and_a_solid_one_slab(tmp_path, thin, shee
     """A closed glass box: thin_walled 1 makes its top and bottom faces two thin sheets, E·T²; a solid
     (thin_walled 0) is one slab entered once, E·T."""
     body = mtlx(f"float inputs:transmission = 1\n            float inputs:specular_IOR = 1.5\n"
-                f"            bool inputs:thin_walled = {thin}") + box()
+                f"            bool inputs:thin_walled = {thin}") + box("Box", 1.0, 2.0, "Looks/G")
     v = under(tmp_path, body)
     assert abs(v - E_SUN * T_CLEAR ** sheets) <= 2e-6 * E_SUN, (thin, v)
     g = load_stage(stage(tmp_path, body)).geometry
@@ -191,6 +177,6 @@ def test_thin_walled_box_is_two_sheets_and_a_solid_one_slab(tmp_path, thin, shee
 @pytest.mark.parametrize("module, flag", [("OmniGlass", "thin_walled"), ("OmniSurface", "thin_walled")])
 def test_mdl_thin_walled_is_read(tmp_path, module, flag):
     """OmniGlass and OmniSurface thin_walled 1 on the closed box: two sheets, E·T²."""
-    body = GLASSES[module].replace("token outputs:out", f"bool inputs:{flag} = 1\n            token outputs:out") + box()
+    body = GLASSES[module].replace("token outputs:out", f"bool inputs:{flag} = 1\n            token outputs:out") + box("Box", 1.0, 2.0, "Looks/G")
     v = under(tmp_path, body)
     assert abs(v - E_SUN * T_CLEAR ** 2) <= 2e-6 * E_SUN, (module, v)

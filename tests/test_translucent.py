@@ -39,6 +39,8 @@ from simulator.engine.driver import Engine
 from simulator.errors import UserError
 from simulator.scene.model import Sensor, SensorKind
 from simulator.scene.usd import load_stage
+from tests.test_surfaces import box, quad
+from tests.test_surfaces import material as surfaces_material
 
 E_SUN = 1000.0  # lx
 L_DOME = 100.0  # cd/m²
@@ -74,36 +76,13 @@ def stage(tmp_path: Path, body: str, name: str = "s.usda") -> Path:
 
 
 def material(name: str, extra: str = "", rho: float = 0.0) -> str:
-    return f"""
-def Material "{name}"
-{{
-    token outputs:surface.connect = </{name}/S.outputs:surface>
-    def Shader "S"
-    {{
-        uniform token info:id = "UsdPreviewSurface"
-        color3f inputs:diffuseColor = ({rho}, {rho}, {rho})
-        {extra}
-        token outputs:surface
-    }}
-}}
-"""
+    """:func:`tests.test_surfaces.material`, black unless ``rho`` says otherwise."""
+    return surfaces_material(name, extra, rho)
 
 
 def glass(name: str, opacity: float, ior: float, rho: float = 0.0) -> str:
     return material(name, f"float inputs:opacity = {opacity}\n        float inputs:ior = {ior}", rho)
 
-
-def quad(name: str, z: float, bind: str, half: float = 5.0) -> str:
-    h = half
-    return f"""
-def Mesh "{name}"
-{{
-    int[] faceVertexCounts = [4]
-    int[] faceVertexIndices = [0, 1, 2, 3]
-    point3f[] points = [(-{h}, -{h}, {z}), ({h}, -{h}, {z}), ({h}, {h}, {z}), (-{h}, {h}, {z})]
-    rel material:binding = </{bind}>
-}}
-"""
 
 
 def st_quad(name: str, z: float, bind: str, half: float = 5.0) -> str:
@@ -113,21 +92,6 @@ def st_quad(name: str, z: float, bind: str, half: float = 5.0) -> str:
         '    texCoord2f[] primvars:st = [(0, 0), (1, 0), (1, 1), (0, 1)] (\n        interpolation = "vertex"\n    )\n'
         "    rel material:binding")
 
-
-def box(name: str, z0: float, z1: float, bind: str, half: float = 5.0) -> str:
-    """A closed box (outward normals) from z0 to z1, ±half in x and y."""
-    h = half
-    pts = [(-h, -h, z0), (h, -h, z0), (h, h, z0), (-h, h, z0), (-h, -h, z1), (h, -h, z1), (h, h, z1), (-h, h, z1)]
-    faces = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
-    return f"""
-def Mesh "{name}"
-{{
-    int[] faceVertexCounts = [4, 4, 4, 4, 4, 4]
-    int[] faceVertexIndices = [{", ".join(str(i) for f in faces for i in f)}]
-    point3f[] points = [{", ".join(f"({x}, {y}, {z})" for x, y, z in pts)}]
-    rel material:binding = </{bind}>
-}}
-"""
 
 
 def sun(zenith_deg: float = 0.0, angle_deg: float = 0.0, intensity: float = E_SUN) -> str:
