@@ -81,7 +81,7 @@ from simulator.config.fields import (
 from simulator.config.records import (
     COMPONENTS, CSV_COLUMN_SETS, DEVICES, LIGHT_UNITS, METHODS, SEED_LIMIT, GridConfig, SimulationConfig,
 )  # fmt: skip
-from simulator.config.sensors import SensorEntry
+from simulator.config.sensors import MODEL_GAIN, MODEL_INTEGRATION, ModelName, SensorEntry
 from simulator.config.table import Table
 from simulator.config.variants import Variants
 from simulator.scene.model import Sensor, SensorKind, patch_width_axis
@@ -158,6 +158,9 @@ class Grid(Table):
         Field(description="cell size: one number or [sx, sy]; cells = round(size / spacing)",
               json_schema_extra={"unit": "m"}),
     ]
+    model: ModelName | None = None
+    gain: Any = MODEL_GAIN
+    integration_ms: Positive | None = MODEL_INTEGRATION
 
     def cells(self) -> tuple[int, int]:
         """``(nx, ny)``: the cell counts along the width and height, from size and spacing alone."""
@@ -177,7 +180,8 @@ class Grid(Table):
         cells = [
             Sensor(
                 name=grid.cell_name(i, j), kind=SensorKind.IRRADIANCE, position=grid.cell_centre(i, j),
-                normal=self.normal.copy(), grid=self.name, source=source,
+                normal=self.normal.copy(), grid=self.name, source=source, azimuth_ref=self.up.copy(),
+                gain=self.gain, integration_ms=self.integration_ms,
             )  # fmt: skip
             for j in range(ny)
             for i in range(nx)

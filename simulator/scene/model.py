@@ -522,6 +522,11 @@ class Sensor:
     azimuth_ref : ndarray, shape (3,), or None
         The in-plane direction of azimuth 0 of a model with azimuth columns (made orthogonal to
         ``normal``); None: any (a symmetric head).
+    gain : float, "auto" or None
+        A modelled sensor's gain (one of its part's); None: the part's default (auto-ranging where it
+        ranges, else its reference gain).
+    integration_ms : float or None
+        A modelled sensor's integration time, ms (one of its part's); None: the part's choice.
     """
 
     name: str
@@ -537,6 +542,8 @@ class Sensor:
     model: object | None = None
     optics: object | None = None
     azimuth_ref: np.ndarray | None = None
+    gain: float | str | None = None
+    integration_ms: float | None = None
 
     @property
     def spec(self) -> SensorKindSpec:
