@@ -538,8 +538,10 @@ def make_trace(surfaces: bool) -> Trace:
         # and the guide and glints, strategies of cosine vertices, are not drawn there
         opt = params.optics
         o_x = wp.vec3(1.0, 0.0, 0.0)
+        rr_t = params.rr_threshold  # the roulette's threshold on β: a head's paths carry ∫r dω/π of a cosine's
         if opt > 0:
             o_x = optics_frame_x(params.optics_x, n_in)
+            rr_t = params.rr_threshold * (scene.optics[opt - 1].integral * INV_PI)
         if (scene.surfaces != 0 and is_glossy(scene, face_in)) if wp.static(surfaces) else False:
             gl = 1
             bs = face_bsdf(scene, face_in)
@@ -699,8 +701,8 @@ def make_trace(surfaces: bool) -> Trace:
             #    §Russian roulette); and a guided step toward a bright patch
             #    far off takes a small factor, which rouletting before that
             #    patch's own light is gathered would turn back into noise
-            if depth > 0 and beta < params.rr_threshold:
-                q_late = beta / params.rr_threshold
+            if depth > 0 and beta < rr_t:
+                q_late = beta / rr_t
                 if wp.randf(rng) >= q_late:
                     break
                 beta = beta / q_late

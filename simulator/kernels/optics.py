@@ -46,6 +46,7 @@ class OpticsRec:
 
     kind: int  # 0: a table; 1: cos^exponent
     exponent: float  # kind 1: n of cos^n θ
+    integral: float  # ∫ r dω over the hemisphere, sr (π for the cosine): the scale of the head's path weights
     n_theta: int  # table knots in θ
     n_phi: int  # table knots in φ (1: rotationally symmetric)
     theta: wp.array(dtype=float)  # (n_theta,) radians, increasing from 0
@@ -224,6 +225,7 @@ def optics_record(response, keep: list) -> OpticsRec:
     import numpy as np
 
     r = OpticsRec()
+    r.integral = float(response.integral_sr())
 
     def arr(a):
         a = np.ascontiguousarray(np.asarray(a, np.float64).reshape(-1).astype(np.float32))
