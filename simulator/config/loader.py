@@ -31,6 +31,7 @@ from simulator.config.records import (
     RunConfig, SimulationConfig,
 )  # fmt: skip
 from simulator.config.schema import RunFile
+from simulator.errors import UserError
 from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SENSOR_KINDS, Sensor, SensorKind
 
 __all__ = [
@@ -133,7 +134,11 @@ def _attach_models(doc: RunFile, sensors: list[Sensor], base: Path, label: str) 
                     if v is not None:
                         raise user_error(label, f"{source}.{key}", "only with a model (model = \"...\")")
                 continue
-            m = load_model(model, base, f"{label}: {source}.model")
+            where = f"{label}: {source}.model"
+            try:
+                m = load_model(model, base, where)
+            except UserError as e:  # a model file's own mistake: named through the config's key
+                raise UserError(str(e) if str(e).startswith(where) else f"{where}: {e}") from None
             if gain is not None and gain != "auto" and (isinstance(gain, bool) or not isinstance(gain, (int, float))
                                                        or not gain > 0):
                 raise user_error(label, f"{source}.gain", f'expected a positive number or "auto", got {gain!r}')

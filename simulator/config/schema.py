@@ -81,7 +81,7 @@ from simulator.config.fields import (
 from simulator.config.records import (
     COMPONENTS, CSV_COLUMN_SETS, DEVICES, LIGHT_UNITS, METHODS, SEED_LIMIT, GridConfig, SimulationConfig,
 )  # fmt: skip
-from simulator.config.sensors import MODEL_GAIN, MODEL_INTEGRATION, ModelName, SensorEntry
+from simulator.config.sensors import MODEL_GAIN, MODEL_INTEGRATION, MODEL_NAME, ModelName, SensorEntry
 from simulator.config.table import Table
 from simulator.config.variants import Variants
 from simulator.scene.model import Sensor, SensorKind, patch_width_axis
@@ -158,7 +158,7 @@ class Grid(Table):
         Field(description="cell size: one number or [sx, sy]; cells = round(size / spacing)",
               json_schema_extra={"unit": "m"}),
     ]
-    model: ModelName | None = None
+    model: ModelName | None = MODEL_NAME
     gain: Any = MODEL_GAIN
     integration_ms: Positive | None = MODEL_INTEGRATION
 

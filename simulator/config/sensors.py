@@ -84,9 +84,9 @@ class SensorFields(Table):
 
 
 #: a sensor model a ``[[sensor]]`` or ``[[grid]]`` names (checked against its file by the loader)
-ModelName = Annotated[Text, nonblank("empty model name"), Field(
-    description="a sensor model: a bundled name (probesim sensor --list) or a .toml file; the row also reads "
-    "through its optics and electronics (docs/sensors.md)")]
+ModelName = Annotated[Text, nonblank("empty model name")]
+MODEL_NAME = Field(None, description="a sensor model, bundled (probesim sensor --list) or a .toml file: the row "
+                   "adds the reading through its optics and electronics (docs/sensors.md)")
 #: the part's gain: one of its list, or "auto" (checked against the model by the loader)
 MODEL_GAIN = Field(None, json_schema_extra={"type": 'number or "auto"'},
                    description='with a model: the part\'s gain, one of its list, or "auto" (default: auto where the part '
@@ -101,11 +101,12 @@ class IrradianceEntry(SensorFields):
     KIND = SensorKind.IRRADIANCE
     kind: Literal["irradiance"]
     normal: Annotated[Direction, Field(description="the side it faces (toward the light it measures)")]
-    model: ModelName | None = None
+    model: ModelName | None = MODEL_NAME
     gain: Any = MODEL_GAIN
     integration_ms: Positive | None = MODEL_INTEGRATION
     azimuth_ref: Direction | None = Field(
-        None, description="with a model with azimuth columns: the in-plane direction of its azimuth 0")
+        None, json_schema_extra={"type": "[x, y, z]"},
+        description="with a model with azimuth columns: its azimuth 0 (in the sensor's plane)")
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.normal, source=source,

@@ -26,7 +26,9 @@ part picks the most sensitive (gain, time) pair (largest g·t^τ, then the
 shortest time) whose noiseless count of every channel stays at or under
 ``auto_range_max`` × full scale, and the least sensitive where none does
 (that reading saturates, flagged). An OPT3001's automatic full-scale
-setting picks its exponent the same way.
+setting picks its exponent the same way. A sensor that sets neither gain
+nor time reads at the part's ``default_gain`` and ``default_integration_ms``
+(``"auto"``: ranged), else at its reference setting.
 
 **Firmware**: ``linear``: value = code₀ / (counts_per_unit₀ · (g/g_ref) ·
 (t/t_ref)^τ), one LSB apart; ``two_channel``: the datasheet's piecewise
@@ -46,7 +48,7 @@ import numpy as np
 
 from simulator.errors import UserError
 
-__all__ = ["Segment", "Electronics", "Setting", "DeviceReading", "reading_stream", "read_device"]
+__all__ = ["Segment", "Electronics", "Setting", "DeviceReading", "reading_stream", "read_device", "firmware_value"]
 
 
 @dataclass(frozen=True)
@@ -107,10 +109,23 @@ class Electronics:
     segments: tuple[Segment, ...] = field(default=())
     scale_gain: float = 1.0
     scale_integration_ms: float = 1.0
+    full_scale_counts: tuple[int, ...] = ()
+    default_gain: float | str | None = None
+    default_integration_ms: float | None = None
 
     @property
     def full_scale(self) -> int:
+        """2^bits − 1, the register's largest code."""
         return (1 << self.bits) - 1
+
+    def full_scale_at(self, s: "Setting") -> int:
+        """The largest code at a setting: ``full_scale_counts`` of its integration time where the part
+        states them (an integrating ADC that cannot count that far in a short time), else 2^bits − 1."""
+        if self.full_scale_counts:
+            for t, fs in zip(self.integration_ms, self.full_scale_counts):
+                if math.isclose(t, s.integration_ms, rel_tol=1e-9):
+                    return fs
+        return self.full_scale
 
     def sensitivity(self, s: Setting) -> float:
         """(g / g_ref)·(t / t_ref)^τ: the factor on counts_per_unit."""
@@ -164,21 +179,23 @@ def _mean_counts(el: Electronics, signals, channels, s: Setting) -> np.ndarray:
 
 
 def _choose(el: Electronics, signals, channels, gain, integration_ms) -> Setting:
-    if gain != "auto" and gain is not None and integration_ms is not None:
+    if gain is None and integration_ms is None:
+        gain, integration_ms = el.default_gain, el.default_integration_ms
+        if gain is None and integration_ms is None:
+            return Setting(el.reference_gain, el.reference_integration_ms)
+    if gain is None and integration_ms is not None:
+        gain = "auto" if el.auto_range else el.reference_gain
+    if gain != "auto" and integration_ms is None and not el.auto_range:
+        integration_ms = el.reference_integration_ms
+    if gain != "auto" and integration_ms is not None:
         return Setting(float(gain), float(integration_ms))
     cands = el.settings()
-    if gain not in (None, "auto"):
+    if gain != "auto":
         cands = [s for s in cands if math.isclose(s.gain, gain, rel_tol=1e-9)]
     if integration_ms is not None:
         cands = [s for s in cands if math.isclose(s.integration_ms, integration_ms, rel_tol=1e-9)]
-    if gain is None and not el.auto_range:  # a part that does not range: its reference setting
-        ref = [s for s in cands if math.isclose(s.gain, el.reference_gain) and
-               (integration_ms is not None or math.isclose(s.integration_ms, el.reference_integration_ms))]
-        if ref:
-            return ref[0]
-    ceiling = el.auto_range_max * el.full_scale
     for s in cands:
-        if np.all(_mean_counts(el, signals, channels, s) <= ceiling):
+        if np.all(_mean_counts(el, signals, channels, s) <= el.auto_range_max * el.full_scale_at(s)):
             return s
     return cands[-1]
 
@@ -214,7 +231,7 @@ def read_device(el: Electronics, channels, signals, seed: int, sensor: str, gain
     sd = np.sqrt(var)
     z = reading_stream(seed, sensor).standard_normal(len(mu))
     analogue = mu + sd * z
-    fs = el.full_scale
+    fs = el.full_scale_at(s)
     saturated = bool(np.any(analogue >= fs))
     codes = np.clip(np.floor(analogue), 0, fs).astype(np.int64)
     value = _firmware(el, codes, channels, s)
@@ -234,3 +251,8 @@ def read_device(el: Electronics, channels, signals, seed: int, sensor: str, gain
 def _firmware_real(el: Electronics, counts: np.ndarray, s: Setting) -> float:
     """The two-channel formula on real-valued counts (for the noise's propagation)."""
     return _firmware(el, np.asarray(counts, float), (None, None), s)
+
+
+def firmware_value(el: Electronics, counts, s: Setting) -> float:
+    """A two-channel part's formula on real-valued counts at setting ``s`` (no quantisation)."""
+    return _firmware_real(el, np.asarray(counts, float), s)

@@ -121,8 +121,40 @@ class SensorModel:
     def f2(self) -> float:
         return self.angular.f2()
 
+    @property
+    def two_channel(self) -> bool:
+        return self.electronics is not None and self.electronics.firmware == "two_channel"
+
+    def optics_value(self, signals) -> float:
+        """What the head reports through ideal electronics (noiseless, no dark counts, unquantised): the
+        first channel's signal, or a two-channel part's firmware formula on its channels' real counts
+        (homogeneous in the light: any setting gives it; the formula's nominal one is used)."""
+        if not self.two_channel:
+            return float(signals[0])
+        from simulator.sensor_models.electronics import Setting, firmware_value
+
+        el = self.electronics
+        s = Setting(el.scale_gain, el.scale_integration_ms)
+        counts = np.array([x * ch.counts_per_unit * el.sensitivity(s) for x, ch in zip(signals, self.channels)])
+        return firmware_value(el, counts, s)
+
+    def signals_per_true(self, light_wide: np.ndarray) -> list[float]:
+        """Each channel's signal per unit of the true quantity of a light (spectrum on the wide grid) at
+        normal incidence: k_c ∫ S s_c / ∫ S q."""
+        from simulator.sensor_models.spectral import quantity_weights
+        from simulator.spectra.wide import wide_weights
+
+        true = float(quantity_weights(self.quantity) @ light_wide)
+        return [k * float((ch.responsivity * wide_weights()) @ light_wide) / true
+                for k, ch in zip(self.calibration_factors(), self.channels)]
+
     def mismatch(self, light_wide: np.ndarray) -> float:
-        """The spectral mismatch correction factor F of a light for the first channel."""
+        """The spectral mismatch correction factor F of a light: the true quantity over what the head
+        reports of it (:meth:`optics_value`). One channel: ISO/CIE 19476's F (:func:`mismatch_factor`);
+        two channels: that of the firmware's formula."""
+        if self.two_channel:
+            v = self.optics_value(self.signals_per_true(light_wide))
+            return 1.0 / v if v > 0 else float("nan")
         return mismatch_factor(self.channels[0].responsivity, light_wide, self.quantity, self.calibration_wide)
 
     def indices(self) -> dict:
@@ -130,7 +162,7 @@ class SensorModel:
         out = {"name": self.name, "title": self.title, "reports": self.quantity, "calibration": self.calibration,
                "angular": self.angular.name, "integral_sr": self.angular.integral_sr(), "f2": self.f2(),
                "channels": [ch.name for ch in self.channels], "source": self.source}
-        if self.quantity == "illuminance":
+        if self.quantity == "illuminance" and not self.two_channel:  # f1′ is one channel's index
             f1 = self.f1_prime()
             out.update(f1_prime=f1, din_5032_7_class=din_class(f1, out["f2"]))
         from simulator.spectra.sources import emitter_spectrum
@@ -147,7 +179,7 @@ class SensorModel:
     def full_scale_value(self, setting) -> float:
         """The first channel's signal at full scale at ``setting``, in the model's unit."""
         el = self.electronics
-        return el.full_scale / (self.channels[0].counts_per_unit * el.sensitivity(setting))
+        return el.full_scale_at(setting) / (self.channels[0].counts_per_unit * el.sensitivity(setting))
 
 
 def bundled_names() -> tuple[str, ...]:
@@ -187,10 +219,10 @@ def load_model(spec: str, base_dir: Path | None = None, where: str = "model") ->
 
 _TOP = ("name", "title", "reports", "calibration", "source", "angular", "channel", "electronics")
 _ANGULAR = ("cos_power", "half_power_angle_deg", "table")
-_CHANNEL = ("name", "responsivity", "counts_per_unit", "dark_counts_per_s")
-_ELECTRONICS = ("bits", "gains", "integration_ms", "reference_gain", "reference_integration_ms", "time_scaled",
-                "read_noise_counts", "electrons_per_count", "auto_range", "auto_range_max", "firmware", "segments",
-                "scale_gain", "scale_integration_ms")
+_CHANNEL = ("name", "responsivity", "shift_nm", "counts_per_unit", "dark_counts_per_s")
+_ELECTRONICS = ("bits", "full_scale_counts", "gains", "integration_ms", "reference_gain", "reference_integration_ms",
+                "default_gain", "default_integration_ms", "time_scaled", "read_noise_counts", "electrons_per_count",
+                "auto_range", "auto_range_max", "firmware", "segments", "scale_gain", "scale_integration_ms")
 
 
 def _fail(path: Path, key: str, what: str) -> UserError:
@@ -311,6 +343,13 @@ def _channel(path: Path, table, i: int, electronics: bool) -> Channel:
             s = named_responsivity(spec)
         except KeyError:
             raise _fail(path, prefix + "responsivity", f"{spec!r}: expected 'photopic', 'par' or a .csv file") from None
+    shift = _number(path, table, "shift_nm", prefix, 0.0)
+    if shift != 0.0:  # the curve moved along λ: s(λ) = s₀(λ − shift)
+        from simulator.spectra.wide import WIDE_NM
+
+        s = np.interp(WIDE_NM - shift, WIDE_NM, s, left=0.0, right=0.0)
+        s = s / s.max()
+        spec = f"{spec} shifted {shift:+g} nm"
     cpu = _number(path, table, "counts_per_unit", prefix, positive=True) if electronics else None
     dark = _number(path, table, "dark_counts_per_s", prefix, 0.0, nonneg=True)
     return Channel(name, s, spec, cpu, dark, notes)
@@ -356,7 +395,28 @@ def _electronics(path: Path, table) -> Electronics:
     auto_max = _number(path, table, "auto_range_max", p, 0.8, positive=True)
     if auto_max > 1:
         raise _fail(path, p + "auto_range_max", f"a fraction of full scale, ≤ 1, got {auto_max!r}")
-    return Electronics(bits, gains, times, ref_g, ref_t, flags["time_scaled"],
-                       _number(path, table, "read_noise_counts", p, 0.0, nonneg=True), e_per, flags["auto_range"],
-                       auto_max, firmware, segments, _number(path, table, "scale_gain", p, ref_g, positive=True),
-                       _number(path, table, "scale_integration_ms", p, ref_t, positive=True))
+    fs = ()
+    if "full_scale_counts" in table:
+        fs = _numbers(path, table, "full_scale_counts", p)
+        if len(fs) != len(times) or any(f > (1 << bits) - 1 or f != int(f) for f in fs):
+            raise _fail(path, p + "full_scale_counts", f"one whole count ≤ 2^bits − 1 per integration time ({len(times)})")
+    default_gain = table.get("default_gain")
+    if default_gain is not None and default_gain != "auto":
+        default_gain = _number(path, table, "default_gain", p, positive=True)
+    if default_gain == "auto" and not flags["auto_range"]:
+        raise _fail(path, p + "default_gain", "'auto' needs auto_range = true")
+    default_t = table.get("default_integration_ms")
+    if default_t is not None:
+        default_t = _number(path, table, "default_integration_ms", p, positive=True)
+    el = Electronics(bits, gains, times, ref_g, ref_t, flags["time_scaled"],
+                     _number(path, table, "read_noise_counts", p, 0.0, nonneg=True), e_per, flags["auto_range"],
+                     auto_max, firmware, segments, _number(path, table, "scale_gain", p, ref_g, positive=True),
+                     _number(path, table, "scale_integration_ms", p, ref_t, positive=True), tuple(int(f) for f in fs),
+                     default_gain, default_t)
+    for key, g, t in (("default_gain", default_gain, None), ("default_integration_ms", None, default_t)):
+        try:
+            el.check_setting(g, t, f"{path}: electronics")
+        except UserError as e:
+            raise UserError(str(e).replace("electronics.gain", "electronics." + key).replace(
+                "electronics.integration_ms", "electronics." + key)) from None
+    return el

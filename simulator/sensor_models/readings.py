@@ -138,14 +138,17 @@ def add_model_columns(rows_by_name: dict, twins: list, mean, stderr, seed: int, 
                 signals.append(k * float(response_mean[i, j]))
                 if c == 0:
                     se0 = k * float(response_stderr[i, j])
-                    f = _spectral_f(m, ideal_mean, ideal_index, name, responses, k, j)
+            f = _spectral_f(m, ideal_mean, ideal_index, name, responses)
             note = (f"{m.name}: traced spectrally, its channels read 380–780 nm only (the hero wavelengths' "
                     "range): what they see outside it is left out")
             if note not in notes and _outside_visible(m) > 1e-3:
                 notes.append(note)
         v = row.values
         v["model"] = m.name
-        v[col], v[col_se] = signals[0], se0
+        optics = m.optics_value(signals)
+        # a two-channel formula's standard error: the first channel's relative error (the channels'
+        # estimates come from the same paths and move together)
+        v[col], v[col_se] = optics, (se0 / signals[0] * optics if signals[0] > 0 else 0.0)
         v["spectral_mismatch_F"] = f
         if m.electronics is None:
             v[dev] = signals[0]
@@ -171,16 +174,20 @@ def _outside_visible(model) -> float:
     return 1.0 - float(s @ wide_weights(380, 780)) / tot if tot > 0 else 0.0
 
 
-def _spectral_f(model, ideal_mean, ideal_index, name, responses, k, j) -> float:
+def _spectral_f(model, ideal_mean, ideal_index, name, responses) -> float:
     """A spectral run's mismatch factor at one sensor: its true quantity (the ideal sensor's estimate of
-    the quantity's response) over its calibrated channel-0 reading of the same (cosine) light."""
+    the quantity's response) over what the head reports of the same (cosine) light, its channels being
+    the ideal sensor's estimates of their responses."""
     if ideal_mean is None or ideal_index is None or name not in ideal_index:
         return math.nan
     resp = {"illuminance": "photopic", "irradiance": "radiometric", "ppfd": "par"}[model.quantity]
     if resp not in responses:
         return math.nan
     r = ideal_index[name]
-    den = k * float(ideal_mean[r, j])
+    ks = model.calibration_factors()
+    sig = [k * float(ideal_mean[r, responses.index(f"{RESPONSE_PREFIX}{model.name}:{ch.name}")])
+           for k, ch in zip(ks, model.channels)]
+    den = model.optics_value(sig)
     return float(ideal_mean[r, responses.index(resp)]) / den if den > 0 else math.nan
 
 

@@ -117,13 +117,16 @@ class Channel:
 
 def named_responsivity(name: str) -> np.ndarray:
     """A responsivity by name on the wide grid: ``photopic`` (V(λ), an ideal photometer head) or
-    ``par`` (the ideal quantum response: ∝ λ over 400–700 nm, peak 1)."""
-    if name == "photopic":
-        return _v_visible() / _v_visible().max()
-    if name == "par":
-        s = np.where((WIDE_NM >= 400) & (WIDE_NM <= 700), WIDE_NM / 700.0, 0.0)
-        return s
-    raise KeyError(name)
+    ``par`` (the ideal quantum response: ∝ λ over 400–700 nm, peak 1). Each is its quantity's own
+    quadrature vector over the wide grid's weights (halved at the ends of its range, as the trapezoid
+    rule weighs them), so that it integrates to exactly the quantity: F = 1 under every light."""
+    quantity = {"photopic": "illuminance", "par": "ppfd"}.get(name)
+    if quantity is None:
+        raise KeyError(name)
+    q = quantity_weights(quantity)
+    w = wide_weights()
+    s = np.divide(q, w, out=np.zeros_like(q), where=w > 0)
+    return s / s.max()
 
 
 def _responsivity_column(name: str) -> str | None:
