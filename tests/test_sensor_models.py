@@ -1,8 +1,8 @@
 """Sensor models: their quality indices against their definitions, the electronics' counts, noise and
 ranging, the bundled models, the config's keys and their errors, and the columns a run writes.
 
-References: docs/REFERENCES.md §Sensor models (f2 of cosⁿ, f1′, the mismatch factor F, the DIN 5032-7
-limits). Independent integrals are numpy trapezoid sums over colour-science's CIE tables, written here,
+References: docs/REFERENCES.md §Sensor models: f2 of cosⁿ, f1′, the mismatch factor F, the DIN 5032-7
+limits. Independent integrals are numpy trapezoid sums over colour-science's CIE tables, written here,
 not the module's code. Statistical checks use fixed seeds: a chi-square p-value over 1e-3, or 4σ.
 """
 

@@ -81,7 +81,7 @@ from simulator.config.fields import (
 from simulator.config.records import (
     COMPONENTS, CSV_COLUMN_SETS, DEVICES, LIGHT_UNITS, METHODS, SEED_LIMIT, GridConfig, SimulationConfig,
 )  # fmt: skip
-from simulator.config.sensors import MODEL_GAIN, MODEL_INTEGRATION, MODEL_NAME, ModelName, SensorEntry
+from simulator.config.sensors import MODEL_NAME, ModelName, SensorEntry
 from simulator.config.table import Table
 from simulator.config.variants import Variants
 from simulator.scene.model import Sensor, SensorKind, patch_width_axis
@@ -159,8 +159,6 @@ class Grid(Table):
               json_schema_extra={"unit": "m"}),
     ]
     model: ModelName | None = MODEL_NAME
-    gain: Any = MODEL_GAIN
-    integration_ms: Positive | None = MODEL_INTEGRATION
 
     def cells(self) -> tuple[int, int]:
         """``(nx, ny)``: the cell counts along the width and height, from size and spacing alone."""
@@ -181,7 +179,6 @@ class Grid(Table):
             Sensor(
                 name=grid.cell_name(i, j), kind=SensorKind.IRRADIANCE, position=grid.cell_centre(i, j),
                 normal=self.normal.copy(), grid=self.name, source=source, azimuth_ref=self.up.copy(),
-                gain=self.gain, integration_ms=self.integration_ms,
             )  # fmt: skip
             for j in range(ny)
             for i in range(nx)

@@ -280,10 +280,10 @@ def custom_response(path, name: str) -> Response:
     t = read_spectral_csv(path, "responsivity", _responsivity_column,
                           lambda y: None if y >= 0 else "is negative")
     r = t.on_grid("zero")
-    from simulator.spectra.wide import VISIBLE, wide_weights
+    from simulator.spectra.wide import wide_weights
 
     wide = t.on_wide_grid() @ wide_weights()
-    outside = 1.0 - float(t.on_wide_grid()[VISIBLE] @ wide_weights(380, 780)) / wide if wide > 0 else 0.0
+    outside = 1.0 - float(t.on_wide_grid() @ wide_weights(380, 780)) / wide if wide > 0 else 0.0
     cut = None
     if outside > 1e-3:  # said, not silent: the columns integrate over the transport's grid
         cut = (f"{t.path.name}: {100 * outside:.1f}% of its responsivity (integrated flat) lies outside 380–780 nm "
