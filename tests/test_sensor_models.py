@@ -347,3 +347,36 @@ def test_model_output_is_byte_identical_across_threads(tmp_path):
         texts.append([{k: v for k, v in r.items() if k != "seconds"} for r in rows])
     assert texts[0] == texts[1]
     assert texts[0][0]["device_counts_als"] != "" and texts[0][1]["device_counts_ch1"] != ""
+
+
+def test_stage_authored_sensor_names_a_model(tmp_path):
+    """An irradiance sensor authored in the stage takes `probesim:sensor:model` (a bundled name): its row
+    gains the model's columns; a model on another kind, or an unknown one, is one line naming the prim."""
+    from simulator.config.loader import load_config
+    from simulator.pipeline import run
+
+    dome = (ROOT / "stages" / "dome.usda").read_text()
+
+    def stage(attrs: str) -> Path:
+        extra = ('def Xform "Head"\n{\n    token probesim:sensor:kind = "%s"\n    string probesim:sensor:model = "%s"\n'
+                 '    double3 xformOp:translate = (0, 0, 0.5)\n    float3 xformOp:rotateXYZ = (180, 0, 0)\n'
+                 '    uniform token[] xformOpOrder = ["xformOp:translate", "xformOp:rotateXYZ"]\n}\n') % attrs
+        text = dome.rstrip()
+        assert text.endswith("}")
+        p = tmp_path / "stage.usda"
+        p.write_text(text[:-1] + extra + "}\n")
+        return p
+
+    def cfg(p: Path) -> Path:
+        c = tmp_path / "c.toml"
+        c.write_text(f'stage = "{p}"\n[simulation]\nsamples = 256\n[output]\ncsv = "{tmp_path / "o.csv"}"\n')
+        return c
+
+    out = run(load_config(cfg(stage(("irradiance", "class_l_head")))), log=lambda m: None)
+    (row,) = _rows(out.csv_path)
+    assert row["sensor"] == "/World/Head" and row["model"] == "class_l_head" and float(row["optics_illuminance_lx"]) > 0
+    for attrs, message in ((("radiance", "class_l_head"), "only an irradiance sensor takes a model"),
+                           (("irradiance", "nope"), "unknown sensor model 'nope'")):
+        with pytest.raises(UserError) as e:
+            run(load_config(cfg(stage(attrs))), log=lambda m: None)
+        assert "/World/Head" in str(e.value) and message in str(e.value), str(e.value)
