@@ -380,3 +380,31 @@ def test_stage_authored_sensor_names_a_model(tmp_path):
         with pytest.raises(UserError) as e:
             run(load_config(cfg(stage(attrs))), log=lambda m: None)
         assert "/World/Head" in str(e.value) and message in str(e.value), str(e.value)
+
+
+def test_study_candidates_take_a_model(tmp_path):
+    """A study's candidate set that names a model reads through its angular response: its sensors are
+    irradiance sensors carrying the model's response (the engine's optics hook), not cones; a model on a
+    cylindrical set, or an unknown one, is one line naming the key."""
+    from simulator.scene.usd import load_stage
+    from simulator.study.inputs.candidates import build_candidates
+    from simulator.study.schema import load_study
+
+    def study(extra: str, kind: str = "photosensor") -> Path:
+        p = tmp_path / "s.toml"
+        p.write_text(f'stage = "{ROOT / "stages" / "office.usda"}"\n[[candidates]]\nname = "ceiling"\nkind = "{kind}"\n'
+                     f'points = [[2.0, 2.0, 2.98], [4.0, 2.0, 2.98]]\nnormal = [0, 0, -1]\n{extra}\n'
+                     '[[group]]\nname = "sky"\nlights = ["/Office/Sky"]\n[[scenario]]\nname = "day"\nlevels = { sky = 1.0 }\n')
+        return p
+
+    s, path = load_study(study('model = "ceiling_photosensor"'))
+    scene = load_stage(ROOT / "stages" / "office.usda", light_units="photometric")
+    (cset,) = build_candidates(scene, s.candidates, str(path))
+    sensors = [c.sensor for c in cset.candidates]
+    assert all(x.kind.name == "IRRADIANCE" and x.optics is load_model("ceiling_photosensor").angular for x in sensors)
+    for extra, kind, message in (('model = "ceiling_photosensor"\nfacing = [1, 0, 0]', "semicylindrical", "model is for kind"),
+                                 ('model = "nope"', "irradiance", "candidates[0].model: unknown sensor model 'nope'")):
+        with pytest.raises(UserError) as e:
+            s2, p2 = load_study(study(extra, kind))
+            build_candidates(scene, s2.candidates, str(p2))
+        assert message in str(e.value) and "\n" not in str(e.value), str(e.value)
