@@ -408,3 +408,17 @@ def test_study_candidates_take_a_model(tmp_path):
             s2, p2 = load_study(study(extra, kind))
             build_candidates(scene, s2.candidates, str(p2))
         assert message in str(e.value) and "\n" not in str(e.value), str(e.value)
+
+
+def test_a_study_chunk_knows_its_head():
+    """A study's chunk store keys a chunk by its sensors: two heads at the same place are different
+    chunks (a resumed study never reuses another head's readings), and a sensor without a model keys as
+    before (no optics in its text)."""
+    from simulator.scene.model import Sensor, SensorKind
+    from simulator.study.trace.chunks import _sensor_text
+
+    p, n = np.zeros(3), np.array([0.0, 0.0, 1.0])
+    plain = _sensor_text(Sensor("a", SensorKind.IRRADIANCE, p, n))
+    heads = [_sensor_text(Sensor("a", SensorKind.IRRADIANCE, p, n, optics=load_model(m).angular))
+             for m in ("ceiling_photosensor", "opt3001", "class_b_head")]
+    assert "optics" not in plain and len({plain, *heads}) == 4

@@ -77,6 +77,16 @@ class AngularResponse:
     values: np.ndarray = field(default_factory=lambda: np.zeros((1, 0)))
     notes: tuple[str, ...] = ()
 
+    def digest(self) -> str:
+        """SHA-256 (hex, 16 digits) of what r is: its kind, exponent, angles, azimuths and values (a study's
+        chunk store keys readings by it)."""
+        import hashlib
+
+        h = hashlib.sha256(f"{self.kind}|{self.exponent!r}".encode())
+        for a in (self.theta_deg, self.phi_deg, self.values):
+            h.update(np.ascontiguousarray(a, np.float64).tobytes())
+        return h.hexdigest()[:16]
+
     @property
     def symmetric(self) -> bool:
         """Whether r depends on θ only."""
