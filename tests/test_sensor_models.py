@@ -422,3 +422,29 @@ def test_a_study_chunk_knows_its_head():
     heads = [_sensor_text(Sensor("a", SensorKind.IRRADIANCE, p, n, optics=load_model(m).angular))
              for m in ("ceiling_photosensor", "opt3001", "class_b_head")]
     assert "optics" not in plain and len({plain, *heads}) == 4
+
+
+def test_spectral_run_keeps_its_ideal_columns_and_reads_the_ideal_head(tmp_path):
+    """In the quickstart room (a coloured rug: hero wavelengths), a work-plane sensor naming the ideal
+    photometer writes the ideal cells of the same run without a model (byte for byte, seconds aside),
+    and its optics reading (cosine, V(λ), traced apart) equals its ideal illuminance within 4 combined
+    standard errors, with a mismatch factor of 1 (1e-6: V against its own response)."""
+    from simulator.config.loader import load_config
+    from simulator.pipeline import run
+
+    def cfg(extra: str, name: str) -> Path:
+        p = tmp_path / f"{name}.toml"
+        p.write_text(f'stage = "{ROOT / "stages" / "quickstart.usda"}"\n[simulation]\nsamples = 512\nseed = 2\n'
+                     '[[sensor]]\nname = "w"\nkind = "irradiance"\nposition = [2.5, 2.0, 0.8]\nnormal = [0, 0, 1]\n'
+                     f'{extra}\n[output]\ncsv = "{tmp_path / name}.csv"\n')
+        return p
+
+    with_model = _rows(run(load_config(cfg('model = "ideal_photometer"', "m")), log=lambda m: None).csv_path)
+    plain = _rows(run(load_config(cfg("", "p")), log=lambda m: None).csv_path)
+    for a, b in zip(with_model, plain):
+        assert {k: v for k, v in b.items() if k != "seconds"} == {k: a[k] for k in b if k != "seconds"}
+    w = next(r for r in with_model if r["sensor"] == "w")
+    e, se = float(w["illuminance_lx"]), float(w["illuminance_stderr_lx"])
+    o, ose = float(w["optics_illuminance_lx"]), float(w["optics_illuminance_stderr_lx"])
+    assert abs(o - e) <= 4 * math.hypot(se, ose), (o, e)
+    assert float(w["spectral_mismatch_F"]) == pytest.approx(1.0, abs=1e-6)
