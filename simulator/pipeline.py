@@ -192,7 +192,7 @@ def _batch_record(plan: dict) -> dict:
     return {k: v for k, v in plan.items() if v is not None}
 
 
-def run(cfg: RunConfig, progress=None, log=print, write: bool = True) -> RunOutput:
+def run(cfg: RunConfig, progress=None, log=print, write: bool = True, sensors: list[Sensor] | None = None) -> RunOutput:
     """Run a validated config and write its CSV and run record.
 
     Parameters
@@ -206,6 +206,9 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True) -> RunOutp
         False: write nothing (no CSV, run record or maps); the output's rows
         and record are the same, its ``csv_path`` and ``record_path`` None
         and its record's ``maps`` empty.
+    sensors : list of Sensor, optional
+        The sensors to read instead of the config's and the stage's (a run over ``times`` reads
+        every time's in one trace, :mod:`simulator.timecodes`).
 
     Notes
     -----
@@ -223,9 +226,13 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True) -> RunOutp
 
     from simulator.sensor_models.readings import channel_responses, optics_twins
 
+    if getattr(cfg, "times", None) and sensors is None:  # one row per sensor and time code
+        from simulator.timecodes import run_times
+
+        return run_times(cfg, progress, log, write)
     t0 = time.perf_counter()
     scene, token = cached_scene(cfg)
-    sensors = collect_sensors(cfg, scene)
+    sensors = collect_sensors(cfg, scene) if sensors is None else list(sensors)
     twins = optics_twins([s for s in sensors if s.kind != SensorKind.PROBE])  # modelled sensors read again
     spectrum = None  # the emitters' spectrum, for response columns (grey scenes: exact post hoc)
     hero = None  # spectral transport's tables (a colour can change a reading: hero wavelengths)

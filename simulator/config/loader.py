@@ -113,7 +113,19 @@ def load_config(path: str | os.PathLike) -> RunConfig:
         variants=dict(doc.variants),
         spectra=spectra,
         time=doc.time,
+        times=_times(doc, label),
     )
+
+
+def _times(doc: RunFile, label: str) -> tuple[float, ...] | None:
+    """``times`` as a tuple, refused beside ``time`` (one line naming the key)."""
+    if doc.times is None:
+        return None
+    if doc.time is not None:
+        raise user_error(label, "times", "give time (one reading) or times (several), not both")
+    if len(set(doc.times)) != len(doc.times):
+        raise user_error(label, "times", "a time code is given twice")
+    return tuple(float(t) for t in doc.times)
 
 
 def _attach_models(doc: RunFile, sensors: list[Sensor], base: Path, label: str) -> None:

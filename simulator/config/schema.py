@@ -232,6 +232,9 @@ class RunFile(Table):
     time: Number | None = Field(
         None, description="USD time code the stage is read at (default: each attribute's earliest sample)"
     )
+    times: Annotated[list[Number], Field(min_length=1, max_length=100_000)] | None = Field(
+        None, description="or several: one CSV row per sensor and time code (a sensor prim with time samples moves "
+        "along its path), one trace for the times the rest of the stage is the same at")
     simulation: Simulation = Simulation()
     sensor: Annotated[list[SensorEntry], tables("sensor")] = []
     grid: Annotated[list[Grid], tables("grid")] = []
