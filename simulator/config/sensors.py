@@ -26,7 +26,7 @@ from pydantic_core import PydanticCustomError
 
 from simulator.config.errors import MISSING, expected, rule, unknown_key
 from simulator.config.fields import (
-    PARALLEL_SIN, Direction, Number, Point, Resolution, Size, Text, UpDirection, interval, nonblank, one_of,
+    PARALLEL_SIN, Direction, Number, Point, Positive, Resolution, Size, Text, UpDirection, interval, nonblank, one_of,
 )  # fmt: skip
 from simulator.config.table import Table
 from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SensorKind, Sensor
@@ -83,15 +83,44 @@ class SensorFields(Table):
         raise NotImplementedError
 
 
+#: a sensor model a ``[[sensor]]`` or ``[[grid]]`` names (checked against its file by the loader)
+ModelName = Annotated[Text, nonblank("empty model name")]
+MODEL_NAME = Field(None, description="a sensor model, bundled (probesim sensor --list) or a .toml file: the row "
+                   "adds the reading through its optics and electronics (docs/sensors.md)")
+#: the part's gain: one of its list, or "auto" (checked against the model by the loader)
+MODEL_GAIN = Field(None, json_schema_extra={"type": 'number or "auto"'},
+                   description='with a model: the part\'s gain, one of its list, or "auto" (default: auto where the part '
+                   "ranges, else its reference)")
+MODEL_INTEGRATION = Field(None, description="with a model: the integration time, one of the part's (default: the "
+                          "part's choice)")
+
+
 class IrradianceEntry(SensorFields):
-    """A point receiver: irradiance on the side ``normal`` faces."""
+    """A point receiver: irradiance on the side ``normal`` faces; with ``model``, also a real head's reading."""
 
     KIND = SensorKind.IRRADIANCE
     kind: Literal["irradiance"]
     normal: Annotated[Direction, Field(description="the side it faces (toward the light it measures)")]
+    model: ModelName | None = MODEL_NAME
+    gain: Any = MODEL_GAIN
+    integration_ms: Positive | None = MODEL_INTEGRATION
+    azimuth_ref: Direction | None = Field(
+        None, json_schema_extra={"type": "[x, y, z]"},
+        description="with a model with azimuth columns: its azimuth 0 (in the sensor's plane)")
 
     def to_sensor(self, name: str, source: str) -> Sensor:
-        return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.normal, source=source)
+        return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.normal, source=source,
+                      azimuth_ref=_in_plane(self.azimuth_ref, self.normal), gain=self.gain,
+                      integration_ms=self.integration_ms)
+
+
+def _in_plane(ref, normal: np.ndarray):
+    """``ref`` made orthogonal to ``normal`` and unit, or None (none given, or parallel to the normal)."""
+    if ref is None:
+        return None
+    v = ref - float(np.dot(ref, normal)) * normal
+    n = float(np.linalg.norm(v))
+    return v / n if n > PARALLEL_SIN else None
 
 
 class RadianceEntry(SensorFields):

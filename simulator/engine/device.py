@@ -161,7 +161,8 @@ class DeviceScene:
         self._keep: list = []  # device arrays referenced only by pointer from the records
         with wp.ScopedDevice(device):
             self.rec = self._upload_scene(wp, K, L, scene, len(sensors))
-            recs = [K.sensor_record(s) for s in sensors]
+            rows = self._upload_optics(wp, sensors)
+            recs = [K.sensor_record(s, rows.get(id(s.optics), 0)) for s in sensors]
             self.sensors = wp.array(recs, dtype=K.SensorRec) if recs else wp.zeros(1, dtype=K.SensorRec)
 
     def _upload_scene(self, wp, K, L, scene: Scene, n_sensors: int):
@@ -238,6 +239,22 @@ class DeviceScene:
         self._keep += [mesh, points, tri_ids, rec.albedo, rec.emission, rec.two_sided, rec.emit_tris, rec.emit_cdf,
                        rec.emit_prob, rec.lights]  # fmt: skip
         return rec
+
+    def _upload_optics(self, wp, sensors: list[Sensor]) -> dict[int, int]:
+        """The sensor models' angular responses (``Sensor.optics``, on the optics twins of modelled
+        sensors) as ``rec.optics``, one row per distinct response; returns ``id(response)`` → its row + 1
+        (``SensorRec.optics``). A run without one uploads a placeholder the kernels never read."""
+        from simulator.kernels.optics import OpticsRec, no_optics, optics_record
+
+        rows: dict[int, int] = {}
+        recs = []
+        for s in sensors:
+            if s.optics is not None and id(s.optics) not in rows:
+                recs.append(optics_record(s.optics, self._keep))
+                rows[id(s.optics)] = len(recs)
+        self.rec.optics = wp.array(recs or [no_optics(self._keep)], dtype=OpticsRec)
+        self._keep.append(self.rec.optics)
+        return rows
 
     def _upload_surfaces(self, wp, K, rec, g, lights: list) -> None:
         """The surfaces beyond Lambert (``Geometry.surfaces``, :mod:`simulator.kernels.surfaces`) on

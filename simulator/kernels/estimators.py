@@ -85,6 +85,7 @@ from .mirrors import has_image, image_source, is_cone_light
 from .glints import glint_pdf, glint_sample, glint_share
 from .surface_rec import GlintRec
 from .shaping import shaping_factor
+from .optics import optics_frame_x, optics_pdf, optics_to_world, optics_weight, sample_optics
 from .spectral import Reflection, hero_nodes, lane_response, spectral_contribution, spectral_row
 from .spectral_surfaces import (
     bsdf_lanes, coloured_row, lane_ratio, mirror_lanes, pass_through_traced, shadow_lanes, walk_before,
@@ -419,17 +420,21 @@ def analytic_sensor(scene: SceneRec, s: SensorRec) -> wp.vec2:
     return _analytic_chain(scene, s)
 
 
-def sensor_record(sensor: Sensor) -> SensorRec:
-    """The device record of one sensor: common fields, then its kind's ``upload``."""
+def sensor_record(sensor: Sensor, optics: int = 0) -> SensorRec:
+    """The device record of one sensor: common fields, then its kind's ``upload``. ``optics``: k ≥ 1 when
+    ``sensor.optics`` is row k − 1 of the scene's optics table (its azimuth reference goes in ``right``)."""
     r = SensorRec()
     r.kind = int(sensor.kind)
     r.position = wp.vec3(*map(float, sensor.position))
     r.normal = wp.vec3(*map(float, sensor.normal))
     r.one_minus_cos = 0.0
     r.cull = 1 if sensor.spec.culls_lights else 0
+    r.optics = int(optics)
     for k in SENSOR_KERNELS:
         if k.kind == sensor.kind and k.upload is not None:
             k.upload(r, sensor)
+    if optics > 0 and sensor.kind == SensorKind.IRRADIANCE and sensor.azimuth_ref is not None:
+        r.right = wp.vec3(*map(float, sensor.azimuth_ref))
     return r
 
 
@@ -528,6 +533,15 @@ def make_trace(surfaces: bool) -> Trace:
         g_face = int(-1)  # the glossy vertex's triangle
         g_lanes = int(0)  # 1: its BSDF is evaluated per hero lane (spectral mode, a coloured row)
         img_prev = int(0)  # 1: the vertex before p ran the image-source connection (kernels.mirrors)
+        # a sensor model's angular response r(ω) at the sensor's own vertex (kernels.optics; params.optics > 0,
+        # depth 0): light samples weigh r(ω)/cosθ, the direction is drawn by r (pdf in every MIS weight),
+        # and the guide and glints, strategies of cosine vertices, are not drawn there
+        opt = params.optics
+        o_x = wp.vec3(1.0, 0.0, 0.0)
+        rr_t = params.rr_threshold  # the roulette's threshold on β: a head's paths carry ∫r dω/π of a cosine's
+        if opt > 0:
+            o_x = optics_frame_x(params.optics_x, n_in)
+            rr_t = params.rr_threshold * (scene.optics[opt - 1].integral * INV_PI)
         if (scene.surfaces != 0 and is_glossy(scene, face_in)) if wp.static(surfaces) else False:
             gl = 1
             bs = face_bsdf(scene, face_in)
@@ -538,6 +552,10 @@ def make_trace(surfaces: bool) -> Trace:
             row = guide_row(scene, depth, cur_face)
             c_v = guide_fraction(scene, params, depth, row)
             if delta != 0:  # a mirror vertex on a pane follows its one direction: no guide there
+                c_v = 0.0
+            o_on = int(0)  # 1: this vertex is a modelled sensor's own (see opt above)
+            if depth == 0 and opt > 0:
+                o_on = 1
                 c_v = 0.0
             # Rays leave a surface from o, pushed off it (see offset_length). A
             # sensor within that push of a UsdLux light starts them at p itself:
@@ -561,7 +579,7 @@ def make_trace(surfaces: bool) -> Trace:
             # samples where a glossy plane shows it a distant light's reflection: its direction density is
             # then p_dir(ω) = (1 − c_v)·((1 − gw)·cosθ/π + gw·p_glint(ω)) in every weight below
             gw = float(0.0)
-            if (scene.n_glints > 0 and gl == 0 and delta == 0) if wp.static(surfaces) else False:
+            if (scene.n_glints > 0 and gl == 0 and delta == 0 and o_on == 0) if wp.static(surfaces) else False:
                 gw = glint_share(scene.glints, scene.n_glints, p, n)
             # -- next-event estimation: each light once, or (pick_light) the
             #    delta lights and one light with area, picked with P(li | x)
@@ -583,6 +601,8 @@ def make_trace(surfaces: bool) -> Trace:
                         sel = pk.prob
                     ls = sample_light(scene, li, p, n, u)  # geometry from the true point; only rays start at o
                     ls.value = ls.value * (shaping_factor(scene.lights[li], -ls.wi) / sel)
+                    if o_on != 0:  # the head reads L·r(ω): r(ω)/cosθ in place of the cosine ls.value carries
+                        ls.value = ls.value * optics_weight(scene.optics[opt - 1], o_x, n, ls.wi)
                     pdf_dir = float(0.0)
                     tint_l = tint  # this sample's lanes: × each lane's BSDF and visibility over the grey ones
                     if gl != 0:  # the BSDF's value and the density its direction samples give wi
@@ -600,6 +620,8 @@ def make_trace(surfaces: bool) -> Trace:
                         if params.mis != 0 and ls.pdf > 0.0:
                             if gl == 0:
                                 pdf_dir = (1.0 - c_v) * pdf_cosine_hemisphere(wp.dot(ls.wi, n))
+                                if o_on != 0:
+                                    pdf_dir = optics_pdf(scene.optics[opt - 1], o_x, n, ls.wi)
                                 if (gw > 0.0) if wp.static(surfaces) else False:
                                     pdf_dir = matte_dir_pdf(scene.glints, scene.n_glints, p, n, c_v, gw, ls.wi)
                             w = power_heuristic(sel * ls.pdf, pdf_dir)
@@ -645,6 +667,8 @@ def make_trace(surfaces: bool) -> Trace:
                             u_im = wp.vec2(wp.randf(rng), wp.randf(rng))
                         im = image_source(scene, li, k, p, n, o, u_im)
                         v = im.value
+                        if o_on != 0:
+                            v = v * optics_weight(scene.optics[opt - 1], o_x, n, im.wi)
                         tint_m = tint
                         if gl != 0:
                             f_grey = bsdf_f(bs, to_local(im.wi, n), wo_l)
@@ -677,8 +701,8 @@ def make_trace(surfaces: bool) -> Trace:
             #    §Russian roulette); and a guided step toward a bright patch
             #    far off takes a small factor, which rouletting before that
             #    patch's own light is gathered would turn back into noise
-            if depth > 0 and beta < params.rr_threshold:
-                q_late = beta / params.rr_threshold
+            if depth > 0 and beta < rr_t:
+                q_late = beta / rr_t
                 if wp.randf(rng) >= q_late:
                     break
                 beta = beta / q_late
@@ -761,6 +785,8 @@ def make_trace(surfaces: bool) -> Trace:
             mirror_now = int(0)
             pdf_g = float(0.0)
             gl_x = gl  # whether this vertex is glossy (gl then follows the next one)
+            o_pdf = float(0.0)  # a modelled sensor's direction: its density and r/pdf (o_on)
+            o_w = float(0.0)
             if delta == 0 and gl != 0:
                 if pm > 0.0 and wp.randf(rng) < pm:  # the mirror part: reflectance F over its probability
                     wi = mirror(-wo_g, n)
@@ -797,6 +823,12 @@ def make_trace(surfaces: bool) -> Trace:
                 if glint_now:  # the glint strategy
                     wi = glint_sample(scene.glints, scene.n_glints, p, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
                     local = to_local(wi, n)
+                elif o_on != 0:  # drawn by the head's response (local: its frame, z along n)
+                    o_s = sample_optics(scene.optics[opt - 1], wp.vec2(wp.randf(rng), wp.randf(rng)))
+                    local = o_s.local
+                    wi = optics_to_world(local, o_x, n)
+                    o_pdf = o_s.pdf
+                    o_w = o_s.weight
                 else:
                     local = sample_cosine_hemisphere(wp.vec2(wp.randf(rng), wp.randf(rng)))
                     wi = to_world(local, n)
@@ -810,6 +842,9 @@ def make_trace(surfaces: bool) -> Trace:
             if gl != 0:
                 pdf_b = pdf_g
                 w_dir = weight * PI * g_dir
+            if o_on != 0:  # E_r ≈ L·r(ω)/p_r(ω); the next vertex's weight w_dir·ρ/π: β takes (r/p)/π
+                pdf_b = o_pdf
+                w_dir = weight * o_w
             count_ray(scene, params)
             hit = first_hit(scene, o, wi, RAY_INF)
             event = int(0)
@@ -898,6 +933,9 @@ def make_trace(surfaces: bool) -> Trace:
                     # 1 − c) weighs it: β takes 1/(1 − c), and no mixture factor at the vertex it reaches
                     beta = beta / (1.0 - c_v)
                     weight = weight_in * beta
+                if o_on != 0:
+                    beta = beta * (o_w * INV_PI)
+                    weight = weight_in * beta
                 tint = tint_d
                 p = o + t_hit * wi
                 n = wp.where(cos_view > 0.0, ng, -ng)
@@ -924,6 +962,8 @@ def make_trace(surfaces: bool) -> Trace:
             if gl != 0:
                 beta = beta * g_dir
                 gl = 0
+            if o_on != 0:
+                beta = beta * (o_w * INV_PI)
             tint = tint_d
             refl = surface_albedo(scene, params, face, tint)
             if (scene.surfaces != 0 and is_glossy(scene, face)) if wp.static(surfaces) else False:
@@ -1045,11 +1085,13 @@ def make_trace(surfaces: bool) -> Trace:
         if (scene.surfaces != 0 and is_glossy(scene, face)) if wp.static(surfaces) else False:  # L = ∫ f L cos dω: π·f
             n = wp.where(cos_view > 0.0, ng, -ng)
             prm = params
+            prm.optics = 0  # a meter's first surface is a surface: its cosine
             prm.tint = tint_r
             total += vertex_estimate(scene, o + t_hit * d, n, wr * INV_PI, prm, skip_next, rng, face, -d)
         elif refl.rho > 0.0:
             n = wp.where(cos_view > 0.0, ng, -ng)
             prm = params
+            prm.optics = 0  # a meter's first surface is a surface: its cosine
             prm.tint = refl.tint
             total += vertex_irradiance(scene, o + t_hit * d, n, (wr * refl.rho) * INV_PI, prm, skip_next, rng)
         return total
@@ -1159,6 +1201,8 @@ def make_trace(surfaces: bool) -> Trace:
         prm = params
         prm.thread = t
         prm.mask_row = wp.where(s.cull != 0, sid, -1)
+        prm.optics = s.optics
+        prm.optics_x = s.right
         n_resp = int(0)
         if params.spectral != 0:
             n_resp = scene.response_weights.shape[0]

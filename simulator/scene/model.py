@@ -512,6 +512,21 @@ class Sensor:
         Name of the ``[[grid]]`` this sensor was expanded from.
     source : str
         Where it was defined (config key or prim path), for messages.
+    model : SensorModel or None
+        The sensor model it names (:mod:`simulator.sensor_models`): the run reads it as today (the
+        ideal quantity) and also through the model (optics, device). None: an ideal sensor.
+    optics : AngularResponse or None
+        Set only on the engine's optics twin of a modelled sensor
+        (:func:`simulator.sensor_models.readings.optics_twins`): its first vertex weighs by this response
+        instead of the cosine. None: the cosine.
+    azimuth_ref : ndarray, shape (3,), or None
+        The in-plane direction of azimuth 0 of a model with azimuth columns (made orthogonal to
+        ``normal``); None: any (a symmetric head).
+    gain : float, "auto" or None
+        A modelled sensor's gain (one of its part's); None: the part's default (auto-ranging where it
+        ranges, else its reference gain).
+    integration_ms : float or None
+        A modelled sensor's integration time, ms (one of its part's); None: the part's choice.
     """
 
     name: str
@@ -524,6 +539,11 @@ class Sensor:
     resolution: tuple[int, int] = (0, 0)
     grid: str | None = None
     source: str = ""
+    model: object | None = None
+    optics: object | None = None
+    azimuth_ref: np.ndarray | None = None
+    gain: float | str | None = None
+    integration_ms: float | None = None
 
     @property
     def spec(self) -> SensorKindSpec:

@@ -198,6 +198,9 @@ class CandidateSpec(_Model):
         )
     )
     half_angle_deg: float = Field(30.0, gt=0.0, lt=90.0, description="photosensor: half angle of its cone")
+    model: str | None = Field(
+        None, min_length=1, description="irradiance, photosensor: a sensor model (probesim sensor --list, or a .toml "
+        "beside the study): the set reads through its angular response instead of the cosine or the cone")
     facing: Vec3 | None = Field(None, description="semicylindrical: where the half cylinders face (across the axis)")
     on: list[str] | None = Field(None, description="flat prims (paths) to grid; the grid lies on their plane")
     height_m: float = Field(
@@ -230,6 +233,8 @@ class CandidateSpec(_Model):
             raise ValueError("a semicylindrical set needs 'facing' (the direction the half cylinders face)")
         if self.kind != "semicylindrical" and self.facing is not None:
             raise ValueError("facing is for kind = \"semicylindrical\"")
+        if self.model is not None and self.kind not in ("irradiance", "photosensor"):
+            raise ValueError(f"model is for kind = \"irradiance\" or \"photosensor\", not {self.kind!r}")
         if (self.on is None) == (self.points is None):
             raise ValueError("give either 'on' (prims to grid) or 'points' (an explicit list), not both or neither")
         if self.points is not None:

@@ -33,6 +33,7 @@ import warp as wp
 
 from simulator.scene.model import LightKind
 
+from ..optics import OpticsRec
 from ..surface_rec import GlintRec, SurfRec, TexRec
 
 #: length of a ray that leaves the scene, metres
@@ -172,6 +173,7 @@ class SceneRec:
     n_patch_pick: int
     patch_pick_factor: wp.array(dtype=float)  # (n_patches × n_lights), when n_patch_pick > 0
     patch_pick_tally: wp.array(dtype=wp.vec3)  # (n_patches × n_lights): a one-worker pilot's Σ(w·ê, w·value, 1), tally_pick 2
+    optics: wp.array(dtype=OpticsRec)  # sensor models' angular responses (SensorRec.optics − 1 indexes it; kernels.optics)
 
 
 @wp.struct

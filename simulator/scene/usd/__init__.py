@@ -181,6 +181,8 @@ attribute                        type         meaning
                                               world transform's scale applies too
 ``probesim:sensor:resolution``   int2         probe: lat-long map (width, height) in
                                               pixels (default (64, 32))
+``probesim:sensor:model``        string       irradiance: a sensor model, bundled or a
+                                              .toml beside the stage (docs/sensors.md)
 ===============================  ===========  ===========================================
 
 The sensor sits at the prim's world origin and faces down its local -Z axis,
