@@ -554,6 +554,7 @@ def make_trace(surfaces: bool) -> Trace:
         ns = n_in
         sh = int(0)
         o_prev = p_in  # the ray origin of the vertex before p, where it ran the image sources (curved mirrors' sun)
+        c_prev = int(-1)  # the curved mirror that vertex lay on (it connected none through its own)
         # the vertex before p sampled area lights in flat mirrors (kernels.mirrors.area_image): its point, the
         # normal its light samples stood on, and the path strategy's density of its direction toward p
         ia_prev = int(0)
@@ -674,14 +675,19 @@ def make_trace(surfaces: bool) -> Trace:
             #    out (img_prev at the next vertex): this connection counts it
             img_here = int(0)
             ia_here = int(0)
+            c_here = int(-1)  # the curved mirror p lies on
+            if (scene.n_curves > 0) if wp.static(surfaces) else False:
+                own = wp.where(gl != 0, g_face, cur_face)
+                if own >= 0:
+                    c_here = scene.face_curve[own]
             if params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes + scene.n_curves > 0:
                 img_here = 1
                 for li in range(scene.n_lights):
                     if not has_image(scene.lights[li]):
                         continue
                     for k in range(scene.n_mirror_planes + scene.n_curves):
-                        if k >= scene.n_mirror_planes and pm >= 1.0:
-                            continue  # a curved mirror seen from a pure mirror: its value would be 0 (no lobe but the delta)
+                        if k >= scene.n_mirror_planes and (pm >= 1.0 or k - scene.n_mirror_planes == c_here):
+                            continue  # a pure mirror's value would be 0 (no lobe but the delta); p's own curved mirror
                         count_shadow_ray(scene, params)
                         u_im = wp.vec2(0.0, 0.0)
                         if is_cone_light(scene.lights[li]):  # drawn for the sun only: others keep their stream
@@ -817,6 +823,7 @@ def make_trace(surfaces: bool) -> Trace:
                     img_prev = img_here
                     if wp.static(surfaces):
                         o_prev = o
+                        c_prev = c_here
                         ia_prev = 0
                     depth += 1
                     continue
@@ -944,6 +951,8 @@ def make_trace(surfaces: bool) -> Trace:
                     img_skip = scene.face_mirror[cur_face] >= 0
                     if scene.n_curves > 0:
                         curve_k = scene.face_curve[cur_face]
+                        if curve_k == c_prev:
+                            curve_k = -1  # the vertex before lay on that mirror: it connected nothing through it
                 for li in range(scene.n_lights):
                     le = escaped_radiance(scene.lights[li], wi)
                     if img_skip:
@@ -990,6 +999,7 @@ def make_trace(surfaces: bool) -> Trace:
                 img_prev = wp.where(mirror_now == 0, img_here, 0)  # a pane's reflection is the image source's too
                 if wp.static(surfaces):
                     o_prev = o_x
+                    c_prev = c_here
                     ia_prev = wp.where(mirror_now == 0, ia_here, 0)
                     x_prev = p_x
                     nx_prev = ns_x
@@ -1048,6 +1058,7 @@ def make_trace(surfaces: bool) -> Trace:
             img_prev = wp.where(mirror_now == 0, img_here, 0)  # past a mirror part: two reflections, not connected
             if wp.static(surfaces):
                 o_prev = o_x
+                c_prev = c_here
                 ia_prev = wp.where(mirror_now == 0, ia_here, 0)
                 x_prev = p_x
                 nx_prev = ns_x
