@@ -267,6 +267,9 @@ def curve_image(scene: SceneRec, li: int, c: int, p: wp.vec3, n: wp.vec3, o: wp.
             inv_pdf = 1.0 / pdf_uniform_cone(l.one_minus_cos)
     else:
         return out
+    sph = scene.curve_sphere[c]
+    if wp.dot(n, wp.vec3(sph[0], sph[1], sph[2]) - p) <= -sph[3]:
+        return out  # the mirror lies wholly behind the receiver's plane
     cs = curve_solve(scene, c, o, tgt, point)
     if cs.ok == 0:
         return out
