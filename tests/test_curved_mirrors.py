@@ -416,6 +416,10 @@ def test_curved_mirrors_are_pieces_with_their_spheres(tmp_path):
     assert abs(curves.spheres[0, 3] - R) < 3e-3 * R
     planes, _, _ = mirror_planes(g.points, g.triangles, g.surface_id, g.surfaces, shaded)
     assert len(planes) == 0
+    from simulator.plan.planner import surface_needs
+
+    scene = load_stage(stage(tmp_path, CHROME + ball() + lamp(LAMP_AT), "plan.usda"))
+    assert any(line.startswith("smooth normals: 3968 ") and "1 curved mirror" in line for line in surface_needs(scene))
 
 
 def test_the_summary_names_curved_glass_and_concave_mirrors(tmp_path):
