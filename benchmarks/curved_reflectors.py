@@ -27,6 +27,7 @@ difference includes. Run from the repository root (the tree on PYTHONPATH
 is the one measured):
 
     PYTHONPATH=. python benchmarks/curved_reflectors.py [--samples 4096] [--seed 1] [--tessellation 256 128]
+    PYTHONPATH=. python benchmarks/curved_reflectors.py --cost [--samples 4096]
 """
 
 from __future__ import annotations
@@ -169,15 +170,67 @@ def cases(folder: Path):
     return out
 
 
+def room_cost(folder: Path, samples: int, seed: int) -> None:
+    """Process CPU seconds per sample of a 4 × 4 × 3 m room (walls 0.5) with a ball on its floor and a point
+    lamp under its ceiling, nine floor sensors, ``path``: the ball chrome (every vertex solves for the
+    lamp's image in it) against the ball at roughness 0.3 (no curved mirror: no solve)."""
+    import time
+
+    h = 2.0
+    walls = [((-h, -h, 0), (h, -h, 0), (h, h, 0), (-h, h, 0)), ((-h, -h, 3), (-h, h, 3), (h, h, 3), (h, -h, 3)),
+             ((-h, -h, 0), (-h, -h, 3), (h, -h, 3), (h, -h, 0)), ((h, -h, 0), (h, -h, 3), (h, h, 3), (h, h, 0)),
+             ((h, h, 0), (h, h, 3), (-h, h, 3), (-h, h, 0)), ((-h, h, 0), (-h, h, 3), (-h, -h, 3), (-h, -h, 0))]
+    pts = [p for w in walls for p in w]
+    room = f'''def Material "Wall"
+{{
+    token outputs:surface.connect = </Wall/S.outputs:surface>
+    def Shader "S"
+    {{
+        uniform token info:id = "UsdPreviewSurface"
+        color3f inputs:diffuseColor = (0.5, 0.5, 0.5)
+        token outputs:surface
+    }}
+}}
+def Mesh "Room" (
+    prepend apiSchemas = ["MaterialBindingAPI"]
+)
+{{
+    int[] faceVertexCounts = [4, 4, 4, 4, 4, 4]
+    int[] faceVertexIndices = [{", ".join(map(str, range(24)))}]
+    point3f[] points = [{", ".join(f"({x}, {y}, {z})" for x, y, z in pts)}]
+    rel material:binding = </Wall>
+}}
+'''
+    sensors = [Sensor(name=f"s{i}", kind=SensorKind.IRRADIANCE, position=np.array([x, y, 0.01]),
+                      normal=np.array([0.0, 0.0, 1.0])) for i, (x, y) in enumerate(
+                          (x, y) for x in (-1.2, 0.0, 1.2) for y in (-1.2, 0.0, 1.2))]
+    lamp = _lamp(np.array([-0.5, -0.5, 2.7]), True)
+    for name, mat in (("chrome ball", CHROME), ("glossy ball", ("float inputs:roughness = 0.3\n        "
+                                                                  "float inputs:metallic = 1", 0.9))):
+        scene = _scene(folder, name.replace(" ", "_"), room + _material(*mat) + lamp)
+        eng = Engine(scene, sensors)
+        eng.run("path", samples=64, seed=seed)  # compile and warm
+        t0 = time.process_time()
+        eng.run("path", samples=samples, seed=seed)
+        cpu = time.process_time() - t0
+        print(f"{name} in a room: {1e6 * cpu / (samples * len(sensors)):.1f} µs of CPU per sample")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--samples", type=int, default=4096)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--tessellation", type=int, nargs=2, metavar=("N_LON", "N_LAT"),
                     help="the ball's probesim:tessellation (default: the Sphere's own 64 × 32)")
+    ap.add_argument("--cost", action="store_true", help="CPU per sample of a room with a chrome ball and a lamp "
+                    "against the same ball glossy (room_cost)")
     args = ap.parse_args()
     global TESSELLATION
     TESSELLATION = args.tessellation
+    if args.cost:
+        with tempfile.TemporaryDirectory() as tmp:
+            room_cost(Path(tmp), args.samples, args.seed)
+        return
     with tempfile.TemporaryDirectory() as tmp:
         print(f"{'case':22s} {'reading':>14s} {'± stderr':>11s} {'closed form':>14s} {'difference':>11s}")
         for name, scene, sensor, truth, unit in cases(Path(tmp)):

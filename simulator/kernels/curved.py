@@ -25,9 +25,12 @@ walks across faces.
 
 **Seed.** The piece's bounding sphere (centre c, radius R, from the host):
 m₀ = c + R·(u_x + u_l)/|u_x + u_l|, u_x and u_l the unit vectors from c to
-o and to the light (its direction for a distant light): the reflection
-point of a sphere when x and the light are equally far, and close to it
-otherwise. A ray that misses the piece is aimed at c instead.
+o and to the light (its direction for a distant light), then
+:data:`SEED_STEPS` turns of the bisector m ← c + R·b/|b|, b the sum of the
+unit vectors from m to o and to the light, which settle on the bounding
+sphere's own reflection point without a ray (the point itself for a
+Sphere, whose facets then need one or two Newton steps). A ray that misses
+the piece is aimed at c instead.
 
 **What the receiver gets.** A point light of intensity I(ω) reflected by
 F(cos θ_m) gives
@@ -67,6 +70,8 @@ from .surfaces import MAX_PASSES, pass_factor
 MAX_NEWTON = wp.constant(16)
 #: |q − r| below which the reflection is taken as found (float32: the residual's floor is ~1e-7)
 NEWTON_TOL = wp.constant(4.0e-6)
+#: bisector iterations that move the seed to the bounding sphere's own reflection point (no rays cast)
+SEED_STEPS = wp.constant(8)
 #: the largest step (rad) one iteration takes
 MAX_STEP = wp.constant(0.25)
 #: a path's mirror point within this share of the piece's radius of the solve's is the same solution
@@ -231,7 +236,16 @@ def curve_solve(scene: SceneRec, k: int, o: wp.vec3, tgt: wp.vec3, point: int) -
     lb = wp.length(b)
     if lb < 1.0e-3:
         return out  # the light straight behind the mirror
-    d = wp.normalize(c + (sph[3] / lb) * b - o)
+    m0 = c + (sph[3] / lb) * b
+    for it in range(SEED_STEPS):  # the bounding sphere's own reflection point: the bisector, iterated
+        if point != 0:
+            ul = wp.normalize(tgt - m0)
+        b = wp.normalize(o - m0) + ul
+        lb = wp.length(b)
+        if lb < 1.0e-3:
+            break
+        m0 = c + (sph[3] / lb) * b
+    d = wp.normalize(m0 - o)
     retried = int(0)
     for it in range(MAX_NEWTON):
         cr = curve_first(scene, k, o, d)
