@@ -434,3 +434,26 @@ def test_the_summary_names_curved_glass_and_concave_mirrors(tmp_path):
     bowl = _quad_mesh(TILTS, "vertex")
     said = load_stage(stage(tmp_path, CHROME + bowl + lamp(LAMP_AT), "bowl.usda")).warnings
     assert any("not closed and convex" in w and "/Panel" in w for w in said), said
+
+
+def test_a_gold_ball_reflects_the_lamps_image_in_its_colour(tmp_path):
+    """A gold ball (metallic 1, roughness 0, diffuseColor (1, 0.766, 0.336): F(λ) = ρ(λ), its uplift) beside
+    the sensor, a 3000 K point lamp behind it, a spectral run: Coddington's image irradiance at F = 1 times
+    ∫SρV/∫SV (tests/test_spectra_surfaces.py's v_weighted), within 4 standard errors (the wavelengths'
+    noise) and the facets' 0.5%: the curved connection carries the mirror's lanes."""
+    from simulator.config import load_config
+    from simulator.pipeline import run
+    from simulator.spectra.reflectance import uplift
+    from tests.test_spectra_surfaces import GOLD, config, lx, readings, v_weighted
+
+    gold = material("Chrome", "float inputs:roughness = 0\n        float inputs:metallic = 1", rho=1.0).replace(
+        "color3f inputs:diffuseColor = (1.0, 1.0, 1.0)", f"color3f inputs:diffuseColor = {GOLD}")
+    path = stage(tmp_path, gold + ball((1024, 512)) + lamp(LAMP_AT))
+    sensor = (f'[[sensor]]\nname = "s"\nkind = "irradiance"\nposition = {list(map(float, X))}\n'
+              f'normal = {list(map(float, N_SENSOR))}\n')
+    out = run(load_config(config(tmp_path, path, sensor, "path", 1000)), log=lambda *a: None)
+    assert out.record["plan"]["transport"] == "spectral"
+    geometric = image_irradiance(C, R, X, N_SENSOR, LAMP_AT, out.scene.lights[0].emission[1], 1.0)
+    truth = geometric * v_weighted(uplift(np.array(GOLD)))
+    e, se = lx(readings(out)["s"])
+    assert se > 0 and abs(e - truth) <= 4 * se + BOUND * truth, (e, se, truth)
