@@ -261,6 +261,8 @@ def curve_solve(scene: SceneRec, k: int, o: wp.vec3, tgt: wp.vec3, point: int) -
         if loc.res < NEWTON_TOL:
             if cr.t <= 2.0 * offset_length(scene, loc.m):
                 return out
+            if wp.abs(loc.a[0] * loc.a[3] - loc.a[1] * loc.a[2]) <= 1.0e-20:
+                return out  # on a caustic (a concave mirror's focus): no finite reading there
             out.ok = 1
             out.face = cr.face
             out.d = d
