@@ -330,11 +330,11 @@ def test_indexed_normals_and_the_attribute(tmp_path):
 
 def test_normals_equal_to_the_faces_change_nothing(tmp_path):
     """A flat mesh that authors its face normals has no shading normals (its faces are read as before);
-    so has a matte Sphere on the device (shaded_faces: only glossy and mirror faces)."""
+    neither has a matte Sphere (only glossy, mirror and pane faces keep them), so nothing is shaded."""
     g = load_stage(stage(tmp_path, CHROME + _quad_mesh("(0, 0, 1)", "constant") + DOME)).geometry
     assert g.shading_normals is None
     matte = load_stage(stage(tmp_path, material("Chrome") + ball() + DOME, "matte.usda")).geometry
-    assert matte.shading_normals is not None and shaded_faces(matte) is None
+    assert matte.shading_normals is None and shaded_faces(matte) is None
 
 
 def test_a_subdivision_surface_is_shaded_by_its_cage(tmp_path):

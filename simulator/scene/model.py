@@ -333,10 +333,11 @@ class Geometry:
         Per triangle corner: the unit normal of the curved surface the
         triangle stands for (an authored ``normals`` primvar, a subdivision
         cage's smooth normals, an implicit gprim's own;
-        :mod:`simulator.scene.usd.normals`), zero on a flat face (its face
-        normal); None: every face flat. The kernels shade glossy and mirror
-        faces by it (:mod:`simulator.kernels.glossy`), matte faces by their
-        face normal.
+        :mod:`simulator.scene.usd.normals`), kept on glossy, mirror and pane
+        faces, zero on a flat face or a matte one (its face normal); None
+        where no such face has them. The kernels shade glossy and mirror
+        faces by it (:mod:`simulator.kernels.glossy`), matte faces and panes
+        by their face normal.
     """
 
     points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))

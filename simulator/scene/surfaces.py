@@ -521,13 +521,31 @@ def _locally_convex(points: np.ndarray, tris: np.ndarray, welded: np.ndarray, no
     return True
 
 
+#: the last :func:`curved_mirrors` answer and the arrays it was found from (the reader's summary and the
+#: device upload ask for the same stage in turn; a million-triangle ball takes seconds)
+_LAST_CURVES: list = []
+
+
 def curved_mirrors(geometry, shaded: np.ndarray | None) -> CurvedMirrors:
     """The curved mirrors of a stage: its ``shaded`` faces (:func:`shaded_faces`) whose surface has a mirror
     part (:attr:`Surface.delta`), welded by position into connected pieces, the :data:`MAX_CURVES` largest
     (by area) kept, each with its vertices' bounding sphere (centre of their box, mean distance from it)."""
+    g = geometry
+    if _LAST_CURVES:
+        arrays, last_shaded, found = _LAST_CURVES
+        if (all(a is b for a, b in zip(arrays, (g.points, g.triangles, g.surface_id, g.shading_normals)))
+                and (shaded is None) == (last_shaded is None)
+                and (shaded is None or np.array_equal(shaded, last_shaded))):
+            return found
+    found = _curved_mirrors(g, shaded)
+    _LAST_CURVES[:] = [(g.points, g.triangles, g.surface_id, g.shading_normals), shaded, found]
+    return found
+
+
+def _curved_mirrors(g, shaded: np.ndarray | None) -> CurvedMirrors:
+    """:func:`curved_mirrors`, found afresh."""
     from simulator.scene.usd.enclosures import _closed_components, _components, _welded
 
-    g = geometry
     face_curve = np.full(g.n_triangles, -1, np.int32)
     if shaded is None:
         return CurvedMirrors(face_curve, np.zeros((0, 4)))

@@ -129,16 +129,21 @@ class _GeometryBuilder:
             surface_id=sid if (sid >= 0).any() else None,
             surfaces=list(surfaces),
             solid_side=side,
-            shading_normals=self._shading_normals(),
+            shading_normals=self._shading_normals(sid, surfaces),
             **self._textures(coverage_textures),
         )
 
-    def _shading_normals(self) -> np.ndarray | None:
-        """``Geometry.shading_normals``: (T, 3, 3) float32, zero on flat faces; None when every face is flat."""
+    def _shading_normals(self, sid: np.ndarray, surfaces) -> np.ndarray | None:
+        """``Geometry.shading_normals``: (T, 3, 3) float32, kept on faces whose surface row is glossy or a
+        pane (what the kernels shade by them, and what the summary names) and zero elsewhere; None when no
+        such face has them (a stage exported with normals on matte faces keeps no array)."""
         if all(n is None for n in self._normals):
             return None
-        return np.concatenate([np.zeros((len(a), 3, 3), np.float32) if n is None else n.astype(np.float32)
-                               for n, a in zip(self._normals, self._albedo)])
+        out = np.concatenate([np.zeros((len(a), 3, 3), np.float32) if n is None else n.astype(np.float32)
+                              for n, a in zip(self._normals, self._albedo)])
+        keep = np.array([bool(s.glossy or s.pane) for s in surfaces] + [False], bool)[sid]
+        out[~keep] = 0.0
+        return out if np.any(out != 0) else None
 
     def _textures(self, coverage_textures) -> dict:
         """``Geometry`` fields of the faces whose opacity is read per texel (none: nothing)."""
