@@ -28,6 +28,7 @@ is the one measured):
 
     PYTHONPATH=. python benchmarks/curved_reflectors.py [--samples 4096] [--seed 1] [--tessellation 256 128]
     PYTHONPATH=. python benchmarks/curved_reflectors.py --cost [--samples 4096]
+    PYTHONPATH=. python benchmarks/curved_reflectors.py --flat-mirror --samples 16384 --seed 11
 """
 
 from __future__ import annotations
@@ -216,17 +217,55 @@ def Mesh "Room" (
         print(f"{name} in a room: {1e6 * cpu / (samples * len(sensors)):.1f} µs of CPU per sample")
 
 
+def flat_mirror_variance(folder: Path, samples: int, seed: int) -> None:
+    """Variance per sample (lx²) of a down-facing irradiance sensor 1 m over a flat mirror (metallic 1,
+    roughness 0, ρ 0.9, 20 km wide) that sees only the image of a sphere light (r 0.2 m), a disk (r
+    0.2 m) or a rect light (0.4 m) 2 m over the mirror, intensity 100 photometric: the globe of
+    tests/test_delta_paths.py. ``path``; compare trees on PYTHONPATH."""
+    shapes = {"sphere": "float inputs:radius = 0.2", "disk": "float inputs:radius = 0.2",
+              "rect": "float inputs:width = 0.4\n    float inputs:height = 0.4"}
+    kinds = {"sphere": "SphereLight", "disk": "DiskLight", "rect": "RectLight"}
+    h = 1e4
+    mirror = (_material(*CHROME).split('def Sphere')[0]
+              + f'''def Mesh "Plane" (
+    prepend apiSchemas = ["MaterialBindingAPI"]
+)
+{{
+    int[] faceVertexCounts = [4]
+    int[] faceVertexIndices = [0, 1, 2, 3]
+    point3f[] points = [(-{h}, -{h}, 0), ({h}, -{h}, 0), ({h}, {h}, 0), (-{h}, {h}, 0)]
+    rel material:binding = </M>
+}}
+''')
+    sensor = Sensor(name="s", kind=SensorKind.IRRADIANCE, position=np.array([0.0, 0.0, 1.0]),
+                    normal=np.array([0.0, 0.0, -1.0]))
+    for name, shape in shapes.items():
+        light = (f'def {kinds[name]} "L"\n{{\n    float inputs:intensity = 100\n    {shape}\n'
+                 '    double3 xformOp:translate = (0, 0, 2)\n    uniform token[] xformOpOrder = ["xformOp:translate"]\n}\n')
+        scene = _scene(folder, f"flat_{name}", mirror + light)
+        res = Engine(scene, [sensor]).run("path", samples=samples, seed=seed)
+        se = float(res.stderr[0, 1])
+        print(f"{name} light's image in a flat mirror: {float(res.mean[0, 1]):.6g} ± {se:.3g} lx, "
+              f"variance per sample {se * se * samples:.3g} lx²")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--samples", type=int, default=4096)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--tessellation", type=int, nargs=2, metavar=("N_LON", "N_LAT"),
                     help="the ball's probesim:tessellation (default: the Sphere's own 64 × 32)")
+    ap.add_argument("--flat-mirror", action="store_true", help="variance per sample of area lights' images in a "
+                    "flat mirror at an irradiance sensor (flat_mirror_variance)")
     ap.add_argument("--cost", action="store_true", help="CPU per sample of a room with a chrome ball and a lamp "
                     "against the same ball glossy (room_cost)")
     args = ap.parse_args()
     global TESSELLATION
     TESSELLATION = args.tessellation
+    if args.flat_mirror:
+        with tempfile.TemporaryDirectory() as tmp:
+            flat_mirror_variance(Path(tmp), args.samples, args.seed)
+        return
     if args.cost:
         with tempfile.TemporaryDirectory() as tmp:
             room_cost(Path(tmp), args.samples, args.seed)
