@@ -353,12 +353,20 @@ def surface_needs(scene: Scene) -> list[str]:
         if s.unmodelled:
             line += f"; read, not modelled: {', '.join(s.unmodelled)}"
         out.append(line)
-    from simulator.scene.surfaces import glint_pairs
+    from simulator.scene.surfaces import curved_mirrors, glint_pairs, shaded_faces
 
     for plane, alpha, li in glint_pairs(g, scene.lights):
         n, d = plane[:3], plane[3]
         out.append(f"glints: {scene.lights[li].name} reflected in the glossy plane n = ({n[0]:.3g}, {n[1]:.3g}, "
                    f"{n[2]:.3g}), n·x = {d:.4g} m (GGX α {alpha:.3g}), sampled at matte vertices that face it")
+    shaded = shaded_faces(g)
+    if shaded is not None:
+        prims = sorted({g.prim_names[i] for i in np.unique(g.prim[shaded])})
+        curves = curved_mirrors(g, shaded)
+        out.append(f"smooth normals: {int(shaded.sum())} glossy or mirror triangle(s) of {', '.join(prims[:3])}"
+                   f"{' ...' if len(prims) > 3 else ''} reflect about their interpolated normals"
+                   + (f"; {curves.n} curved mirror(s): point lights and the sun solved for their reflection point"
+                      if curves.n else ""))
     return out
 
 

@@ -329,6 +329,15 @@ class Geometry:
     texture_uv : ndarray, shape (T, 3, 2), float64, or None
         Per triangle corner: the texture's ``st`` (after its st transform),
         zero where ``texture_id`` is -1; None with ``texture_id``.
+    shading_normals : ndarray, shape (T, 3, 3), float32, or None
+        Per triangle corner: the unit normal of the curved surface the
+        triangle stands for (an authored ``normals`` primvar, a subdivision
+        cage's smooth normals, an implicit gprim's own;
+        :mod:`simulator.scene.usd.normals`), kept on glossy, mirror and pane
+        faces, zero on a flat face or a matte one (its face normal); None
+        where no such face has them. The kernels shade glossy and mirror
+        faces by it (:mod:`simulator.kernels.glossy`), matte faces and panes
+        by their face normal.
     """
 
     points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
@@ -350,6 +359,7 @@ class Geometry:
     coverage_textures: list = field(default_factory=list)
     texture_id: np.ndarray | None = None
     texture_uv: np.ndarray | None = None
+    shading_normals: np.ndarray | None = None
 
     @property
     def has_surfaces(self) -> bool:
