@@ -176,7 +176,7 @@ def _cmd_plan(args) -> int:
     scene = load_scene(cfg)
     for w in scene.warnings:
         print(f"warning: {w}", file=sys.stderr)
-    sensors = [s for s in collect_sensors(cfg, scene) if s.kind.name != "PROBE"]
+    sensors = [s for s in collect_sensors(cfg, scene) if s.spec.reader == "estimate"]
     print(format_plan(make_plan(scene, sensors, cfg.simulation.method, cfg.simulation.component), max_rows=10**6))
     return 0
 
@@ -211,6 +211,7 @@ def _cmd_bench(args) -> int:
 def _cmd_run(args) -> int:
     from simulator.config.loader import apply_overrides, load_config
     from simulator.commands.progress import ProgressBar
+    from simulator.io.glare_maps import glare_lines
     from simulator.io.results import format_table
     from simulator.pipeline import run
 
@@ -244,6 +245,8 @@ def _cmd_run(args) -> int:
         return 130
     if not args.quiet:
         print(format_table(out.rows, photometric_first=cfg.light_units == "photometric"))
+        for line in glare_lines(out.rows):
+            print(line)
     n = rec["sensors"]
     total = rec["samples_total"]
     trace = rec["timings_s"]["trace"]

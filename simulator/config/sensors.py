@@ -8,7 +8,7 @@ discriminated union of them on ``kind``; a new kind is one more model in
 
 ::
 
-    [[sensor]]            # irradiance | radiance | patch | probe | cylindrical | semicylindrical
+    [[sensor]]            # irradiance | radiance | patch | probe | cylindrical | semicylindrical | glare
     name = "desk"         # default: "sensor[<index>]"
     kind = "irradiance"
     position = [0, 0, 0.75]   # metres
@@ -29,7 +29,7 @@ from simulator.config.fields import (
     PARALLEL_SIN, Direction, Number, Point, Resolution, Size, Text, UpDirection, interval, nonblank, one_of,
 )  # fmt: skip
 from simulator.config.table import Table
-from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SensorKind, Sensor
+from simulator.scene.model import DEFAULT_GLARE_RESOLUTION, DEFAULT_PROBE_RESOLUTION, SensorKind, Sensor
 
 __all__ = [
     "SensorFields",
@@ -39,6 +39,7 @@ __all__ = [
     "ProbeEntry",
     "CylindricalEntry",
     "SemicylindricalEntry",
+    "GlareEntry",
     "SENSOR_ENTRIES",
     "SENSOR_KEYS",
     "SensorEntry",
@@ -67,7 +68,7 @@ class SensorFields(Table):
     name: Annotated[Text, nonblank("empty name")] | None = Field(
         None, description="the CSV row's name (default: sensor[<index>])"
     )
-    kind: str = Field(description="irradiance | radiance | patch | probe | cylindrical | semicylindrical")
+    kind: str = Field(description="irradiance | radiance | patch | probe | cylindrical | semicylindrical | glare")
     position: Annotated[
         Point, Field(description="where the sensor is (a patch's centre)", json_schema_extra={"unit": "m"})
     ]
@@ -191,6 +192,72 @@ class SemicylindricalEntry(SensorFields):
         return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.facing, up=self.axis, source=source)
 
 
+def _up_beside_direction(up: np.ndarray, info: ValidationInfo) -> np.ndarray:
+    view = info.data.get("direction")
+    if view is None:
+        return up
+    ortho = up - float(np.dot(up, view)) * view
+    length = float(np.linalg.norm(ortho))
+    if length < PARALLEL_SIN:
+        raise rule("parallel to {sibling}; up must point above the line of sight", sibling="direction")
+    return ortho / length
+
+
+def _evalglare(text: str) -> dict:
+    from simulator.glare.sources import parse_evalglare_options
+
+    try:
+        return parse_evalglare_options(text)
+    except ValueError as e:
+        raise rule(str(e)) from None
+
+
+def _task(value: list[float]) -> tuple[np.ndarray, float]:
+    d = np.array(value[:3], np.float64)
+    length = float(np.linalg.norm(d))
+    if not length > 0.0:
+        raise rule("the task's direction [dx, dy, dz] has zero length")
+    if not 0.0 < value[3] <= 180.0:
+        raise rule(f"the task's opening angle must be in (0, 180] degrees, got {value[3]:g}")
+    return d / length, float(value[3])
+
+
+class GlareEntry(SensorFields):
+    """An eye at ``position`` looking along ``direction``: E_v, DGP, DGPs, UGR and the glare sources
+    (:mod:`simulator.glare`)."""
+
+    KIND = SensorKind.GLARE
+    kind: Literal["glare"]
+    direction: Direction
+    up: Annotated[Direction, AfterValidator(_up_beside_direction)] = Field(
+        default_factory=lambda: [0.0, 0.0, 1.0], validate_default=True, description="up in the view (made orthogonal to direction)")
+    resolution: Resolution = Field(DEFAULT_GLARE_RESOLUTION)
+    evalglare: Annotated[Text, AfterValidator(_evalglare)] = Field(
+        "", description="source finding as evalglare options: -b threshold (cd/m², or ≤ 100: × task or mean "
+                        "luminance; 2000), -r radius (0.2), -y/-x/-Y lum (peak extraction, 50000), -C l+ (low-light "
+                        "correction; off)")
+    task: Annotated[list[Number], BeforeValidator(lambda v: _four(v)), AfterValidator(_task)] | None = Field(
+        None, description="[dx, dy, dz, angle_deg]: the task zone a relative threshold multiplies (default: the whole view)")
+    dgp_stderr: Annotated[Number, interval(0.0, 1.0)] = Field(
+        0.005, description="the view traces until DGP's standard error is at most this")
+
+    def to_sensor(self, name: str, source: str) -> Sensor:
+        from simulator.glare.sources import GlareSettings
+
+        opts = dict(self.evalglare) if isinstance(self.evalglare, dict) else {}
+        if self.task is not None:
+            opts["task_direction"], opts["task_angle_deg"] = self.task
+        return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.direction, up=self.up,
+                      resolution=self.resolution, source=source, glare=GlareSettings(dgp_stderr=self.dgp_stderr, **opts))
+
+
+def _four(value: Any) -> Any:
+    if not isinstance(value, list) or len(value) != 4:
+        raise rule(expected("an array of 4 numbers [dx, dy, dz, angle_deg]", value) if not isinstance(value, list)
+                   else f"expected an array of 4 numbers [dx, dy, dz, angle_deg], got {len(value)} element(s)")
+    return value
+
+
 #: the model of each kind, by the name configs use (the order of
 #: :data:`simulator.scene.model.SENSOR_KINDS`)
 SENSOR_ENTRIES: dict[str, type[SensorFields]] = {
@@ -200,6 +267,7 @@ SENSOR_ENTRIES: dict[str, type[SensorFields]] = {
     "probe": ProbeEntry,
     "cylindrical": CylindricalEntry,
     "semicylindrical": SemicylindricalEntry,
+    "glare": GlareEntry,
 }
 #: every key some kind takes, in a stable order
 SENSOR_KEYS: tuple[str, ...] = tuple(dict.fromkeys(k for m in SENSOR_ENTRIES.values() for k in m.model_fields))
