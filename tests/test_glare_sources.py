@@ -1,8 +1,8 @@
 """Glare sources and a view's figures from pixel statistics (simulator.glare.sources, .evaluate), no tracing.
 
 Maps here are built by hand on the view's half lat-long layout (simulator.glare.view): a disc of known
-luminance over a uniform background, noise of known variance. Expected values are the formulas of
-docs/REFERENCES.md §Glare indices evaluated on the same pixels.
+luminance over a uniform background, noise of known variance. Expected values are the formulas
+(docs/REFERENCES.md §Glare indices), evaluated on the same pixels.
 """
 
 from __future__ import annotations

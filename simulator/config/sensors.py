@@ -118,7 +118,7 @@ class PatchEntry(SensorFields):
     kind: Literal["patch"]
     normal: Direction
     size: Annotated[Size, Field(description="width, height of the rectangle", json_schema_extra={"unit": "m"})]
-    up: Annotated[UpDirection, Field(description="direction of the height side")]
+    up: Annotated[UpDirection, Field(description="direction of the height side (glare: up in the view; default +Z)")]
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         return Sensor(
@@ -132,7 +132,8 @@ class ProbeEntry(SensorFields):
 
     KIND = SensorKind.PROBE
     kind: Literal["probe"]
-    resolution: Resolution = Field(DEFAULT_PROBE_RESOLUTION, description="lat-long map width, height in pixels")
+    resolution: Resolution = Field(DEFAULT_PROBE_RESOLUTION, description="lat-long map width, height in pixels "
+                                                                         "(glare: of the half in front, [128, 128])")
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         # a probe has no facing; normal and up are placeholders (the map's

@@ -41,7 +41,7 @@ luminance, cd/m²):
   at most 1 (meant for views without the sun in sight: it sees no source);
 - UGR (CIE 117-1995): 8·log10(0.25/L_b · Σ L_s²·ω_s / P_s²); 0 without a source.
 
-See docs/REFERENCES.md §Glare indices for the sources.
+Sources: docs/REFERENCES.md §Glare indices.
 """
 
 from __future__ import annotations
