@@ -146,6 +146,11 @@ class SunReading:
         return math.pi * (1.0 - cos_a) * (1.0 + cos_a)
 
     @property
+    def angular_radius(self) -> float:
+        """α, radians."""
+        return math.acos(max(-1.0, 1.0 - self.omega_sr / (2.0 * math.pi)))
+
+    @property
     def visible(self) -> bool:
         """The eye sees the disk: more than :data:`SUN_SEEN` of its luminance reaches it (through panes)."""
         return bool(self.mean[1] > SUN_SEEN * self.disk_cd_m2) and bool(self.mean[1] > 0.0)
@@ -206,6 +211,18 @@ class GlareEstimate:
     def glare_term(self) -> float:
         """Σ L²ω/P² over the sources (cd²·m⁻⁴·sr)."""
         return float(sum(s.l2w / s.position_index**2 for s in self.sources))
+
+
+def _pixel_half_sizes(shape: tuple[int, int], n: int) -> np.ndarray:
+    """Each map pixel's angular half-diagonal, radians (the half map of :mod:`.view`; a one-row map of
+    ``n`` pixels without a layout: 0)."""
+    h, w = shape
+    if h * w != n or h == 1:
+        return np.zeros(n)
+    dlon, dlat = math.pi / w, math.pi / h
+    lat = 0.5 * math.pi - (np.arange(h) + 0.5) * dlat
+    half = 0.5 * np.sqrt((dlon * np.cos(lat)) ** 2 + dlat**2)
+    return np.repeat(half, w)
 
 
 def _not_lone_noise(pix: PixelStats, shape: tuple[int, int], settings: GlareSettings, omega, dirs) -> np.ndarray:
@@ -269,7 +286,8 @@ def evaluate(pix: PixelStats, omega: np.ndarray, dirs: np.ndarray, frame: np.nda
     all_se = np.concatenate([np.sqrt(pix.lum_var[:, c]), np.array([float(s.mean_stderr[c]) for s in sun_list])])
     eligible = np.concatenate([_not_lone_noise(pix, shape, settings, all_w[:len(omega)], all_d[:len(omega)]),
                                np.ones(len(sun_list), bool)])
-    src: Sources = find_sources(all_d, all_w, all_l, view, up, settings, all_se, eligible)
+    half = np.concatenate([_pixel_half_sizes(shape, len(omega)), np.array([s.angular_radius for s in sun_list])])
+    src: Sources = find_sources(all_d, all_w, all_l, view, up, settings, all_se, eligible, half)
     n_pix = len(omega)
     lab_pix = src.label[:n_pix]
 

@@ -16,7 +16,10 @@ its disk's solid angle). With ``settings`` a :class:`GlareSettings`:
    the angle between two pixel directions with the radius, so pixels merge
    within ``search_radius / 2`` radians (5.7° by default). The end result is
    the connected groups of source pixels linked by steps of at most that
-   angle; that is what :func:`find_sources` computes. On a traced map a
+   angle; that is what :func:`find_sources` computes, measuring a step
+   between the pixels' nearest points (a traced map's pixels, 1.4° by
+   default, are coarser than a picture's: between centres, a gap would read
+   up to a pixel wider than a fine picture shows it). On a traced map a
    pixel of a surface below the threshold whose few paths happened to find
    a light can read above it: such noise is left out twice. A pixel above
    the threshold with no neighbour above it (in the map's grid) counts only
@@ -208,8 +211,12 @@ def _significant(m: np.ndarray, omega: np.ndarray, lum: np.ndarray, se: np.ndarr
     return mean - thr > NOISE_Z * err
 
 
-def _components(d: np.ndarray, angle: float) -> np.ndarray:
-    """Connected groups of unit directions linked by steps of at most ``angle`` radians: a label each."""
+def _components(d: np.ndarray, angle: float, half: np.ndarray | None = None) -> np.ndarray:
+    """Connected groups of unit directions linked by steps of at most ``angle`` radians: a label each.
+
+    ``half``: each pixel's angular half-size (radians); two pixels are linked when their centres are
+    within ``angle`` plus both half-sizes (their nearest points within ``angle``), as a fine picture of the
+    same regions would link them."""
     n = len(d)
     if n == 0:
         return np.zeros(0, np.int64)
@@ -217,8 +224,12 @@ def _components(d: np.ndarray, angle: float) -> np.ndarray:
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import cKDTree
 
-    chord = 2.0 * math.sin(0.5 * angle) * (1.0 + 1e-12)
+    reach = angle + (0.0 if half is None else 2.0 * float(np.max(half)))
+    chord = 2.0 * math.sin(0.5 * min(reach, math.pi)) * (1.0 + 1e-12)
     pairs = cKDTree(d).query_pairs(chord, output_type="ndarray")
+    if half is not None and len(pairs):
+        gap = np.arccos(np.clip(np.einsum("ij,ij->i", d[pairs[:, 0]], d[pairs[:, 1]]), -1.0, 1.0))
+        pairs = pairs[gap - half[pairs[:, 0]] - half[pairs[:, 1]] <= angle * (1.0 + 1e-12)]
     graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n)) if len(pairs) else coo_matrix((n, n))
     _, labels = connected_components(graph, directed=False)
     return labels
@@ -226,7 +237,7 @@ def _components(d: np.ndarray, angle: float) -> np.ndarray:
 
 def find_sources(d: np.ndarray, omega: np.ndarray, lum: np.ndarray, view: np.ndarray, up: np.ndarray,
                  settings: GlareSettings, lum_stderr: np.ndarray | None = None,
-                 eligible: np.ndarray | None = None) -> Sources:  # fmt: skip
+                 eligible: np.ndarray | None = None, half_size: np.ndarray | None = None) -> Sources:  # fmt: skip
     """The glare sources among N pixels (module docstring).
 
     Parameters
@@ -246,6 +257,9 @@ def find_sources(d: np.ndarray, omega: np.ndarray, lum: np.ndarray, view: np.nda
         source (module docstring, step 2).
     eligible : ndarray of bool, shape (N,), optional
         Pixels that may be source pixels (default all).
+    half_size : ndarray, shape (N,), optional
+        Each pixel's angular half-size, radians (default 0: points): pixels merge when their nearest
+        points are within the merging angle (a traced map's pixels are larger than a picture's).
     """
     d = np.asarray(d, np.float64)
     omega = np.asarray(omega, np.float64)
@@ -257,7 +271,8 @@ def find_sources(d: np.ndarray, omega: np.ndarray, lum: np.ndarray, view: np.nda
     groups: list[np.ndarray] = []
     peaks: list[bool] = []
     if len(hot):
-        comp = _components(d[hot], merge)
+        hs = None if half_size is None else np.asarray(half_size, np.float64)
+        comp = _components(d[hot], merge, None if hs is None else hs[hot])
         members = [hot[comp == c] for c in range(comp.max() + 1)]
         if lum_stderr is not None:
             members = [m for m in members if _significant(m, omega, lum, np.asarray(lum_stderr, np.float64), thr)]
@@ -270,7 +285,7 @@ def find_sources(d: np.ndarray, omega: np.ndarray, lum: np.ndarray, view: np.nda
                 if len(rest):
                     groups.append(rest)
                     peaks.append(False)
-                sub = _components(d[high], merge)
+                sub = _components(d[high], merge, None if hs is None else hs[high])
                 for c in range(sub.max() + 1):
                     groups.append(high[sub == c])
                     peaks.append(True)
