@@ -54,6 +54,7 @@ class StudyResult:
     files: list = field(default_factory=list)
     areas: list = field(default_factory=list)  #: simulator.study.figures.areas.AreaRow, EN 12464-1 areas
     ugr: list = field(default_factory=list)  #: simulator.study.figures.ugr.UgrRow, the areas' observers
+    glare: list = field(default_factory=list)  #: simulator.study.figures.glare_views.GlareViewRow, the stage's glare prims
     scene: object | None = None  #: the stage as read (geometry for the heat maps' plans); not in any output file
 
 
@@ -296,6 +297,10 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
 
     areas = area_rows(study, sets, candidates, scenarios, mean, stderr, label)
     ugr = _ugr(study, base, scenarios, groups, ugr_plan, results, warnings) if ugr_plan is not None else []
+    from simulator.study.figures.glare_views import study_glare, views_of
+
+    views = views_of(base)
+    glare = study_glare(study, stage, views, tgs, groups, tuple(sky_split), log) if views and scenarios else []
     placement = None
     if study.placement is not None:
         pl = study.placement
@@ -338,7 +343,7 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
         chunks_computed=computed, chunks_loaded=loaded, mode=used_mode, workers=n_workers, sensor_block=int(block),
         timings_s={"setup": t_setup - t0, "chunks": t_traced - t_chunks, "trace_in_chunks": trace_s,
                    "analysis": t_analysis - t_traced, "reference_run": t_end - t_analysis, "total": t_end - t0},
-        chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings, scene=base, areas=areas, ugr=ugr,
+        chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings, scene=base, areas=areas, ugr=ugr, glare=glare,
         chunk_trace_s={(s.trace_key, s.block): float(np.sum(results[s.id]["trace_s"])) for s in specs},
         chunk_trace_cpu_s={(s.trace_key, s.block): float(results[s.id].get("trace_cpu_s", 0.0)) for s in specs},
     )  # fmt: skip
