@@ -59,8 +59,12 @@ VIEWS = {
     "window": ((4.5, 2.0, 1.2), (-1.0, 0.0, 0.0), "as authored: uniform sky, sun (out of sight), lamps"),
     "overcast": ((4.5, 2.0, 1.2), (-1.0, 0.0, 0.0), "CIE overcast sky, no sun, lamps off"),
     "luminaires": ((3.0, 2.0, 1.2), (1.0, 0.0, 0.0), "lamps only (no sky, no sun)"),
+    "luminaires_256": ((3.0, 2.0, 1.2), (1.0, 0.0, 0.0), "lamps only; probesim's map 256 x 256"),
     "sun": ((1.6, 2.6, 1.2), (-1.0, 0.5, 0.0), "as authored: the sun in sight"),
 }
+#: probesim's half map per view where it is not the default, and the view whose Radiance picture a view shares
+RESOLUTION = {"luminaires_256": 256}
+SAME_PICTURE = {"luminaires_256": "luminaires"}
 #: the CIE overcast sky's zenith luminance, cd/m², and the ground's (gensky -c's ground: 0.2 reflectance
 #: of the sky's horizontal illuminance, (7/9)·π·L_z, over π)
 ZENITH_CD_M2 = 4000.0
@@ -170,8 +174,9 @@ def probesim_view(tmp: Path, name: str, eye, direction, lighting: str):
     wrapper_stage(stage, lighting)
     d = ", ".join(f"{x:g}" for x in direction)
     cfg = tmp / f"{name}.toml"
+    res = f"resolution = [{RESOLUTION[name]}, {RESOLUTION[name]}]\n" if name in RESOLUTION else ""
     cfg.write_text(f'stage = "{stage.name}"\n[simulation]\nseed = 3\n[[sensor]]\nname = "{name}"\nkind = "glare"\n'
-                   f'position = [{", ".join(map(str, eye))}]\ndirection = [{d}]\n')  # fmt: skip
+                   f'position = [{", ".join(map(str, eye))}]\ndirection = [{d}]\n{res}')  # fmt: skip
     t0 = time.process_time()
     out = simulator.run(simulator.load_config(cfg), log=lambda m: None)
     cpu = time.process_time() - t0
@@ -190,6 +195,7 @@ def main(argv=None) -> int:
     ap.add_argument("--procs", type=int, default=2)
     ap.add_argument("--views", default=",".join(VIEWS))
     ap.add_argument("--keep", help="a folder to keep the pictures in")
+    ap.add_argument("--reuse", action="store_true", help="with --keep: Radiance's pictures and E_v already there are read, not made again")
     a = ap.parse_args(argv)
     env = _radiance()
     amb = ["-ab", str(a.ab), "-ad", str(a.ad), "-as", str(a.ad // 4), "-aa", str(a.aa), "-ar", "256", "-lw", "2e-4"]
@@ -202,6 +208,11 @@ def main(argv=None) -> int:
         for name in a.views.split(","):
             eye, direction, lighting = VIEWS[name]
             rec, hdr, scene, cpu = probesim_view(tmp, name, eye, direction, lighting)
+            if name in SAME_PICTURE:  # Radiance's side is another view's
+                twin = next(r for r in rows if r[0] == SAME_PICTURE[name])
+                rows.append((name, lighting, rec, twin[3], twin[4], twin[5], evalglare(hdr, env), twin[7], cpu, 0.0))
+                print(f"{name}: probesim {cpu:.1f} s CPU ({rec['passes']} passes), Radiance's as {SAME_PICTURE[name]}'s", flush=True)
+                continue
             export_rad(scene, lighting, tmp / f"{name}.rad")
             with open(tmp / f"{name}.oct", "wb") as fh:
                 subprocess.run(["oconv", f"{name}.rad"], cwd=tmp, env=env, check=True, stdout=fh)
@@ -209,6 +220,17 @@ def main(argv=None) -> int:
             dv = np.asarray(direction, float) / np.linalg.norm(direction)
             point = f"{eye[0]} {eye[1]} {eye[2]} {dv[0]} {dv[1]} {dv[2]}\n"
             t1 = time.perf_counter()
+            cache = tmp / f"{name}_radiance.json"
+            if a.reuse and cache.is_file() and (tmp / f"{name}_radiance.hdr").is_file():
+                import json
+
+                kept = json.loads(cache.read_text())
+                eg_rad = evalglare(tmp / f"{name}_radiance.hdr", env, vw)
+                eg_rad_i = evalglare(tmp / f"{name}_radiance.hdr", env, vw + ["-i", f"{kept['ev_rt']:.3f}"])
+                eg_ps = evalglare(hdr, env)
+                rows.append((name, lighting, rec, kept["ev_rt"], eg_rad, eg_rad_i, eg_ps, kept["sun_rt"], cpu, 0.0))
+                print(f"{name}: probesim {cpu:.1f} s CPU ({rec['passes']} passes), Radiance's picture and E_v reused", flush=True)
+                continue
             irr = subprocess.run(["rtrace", "-h", "-I", "-n", str(a.procs), *amb_ev, f"{name}.oct"], cwd=tmp, env=env, check=True,
                                  input=point, capture_output=True, text=True).stdout.split()  # fmt: skip
             ev_rt = 179.0 * (0.265 * float(irr[0]) + 0.670 * float(irr[1]) + 0.065 * float(irr[2]))
@@ -231,6 +253,9 @@ def main(argv=None) -> int:
                                      check=True, input=point, capture_output=True, text=True).stdout.split()  # fmt: skip
                 sun_rt = 179.0 * (0.265 * float(irr[0]) + 0.670 * float(irr[1]) + 0.065 * float(irr[2]))
             rows.append((name, lighting, rec, ev_rt, eg_rad, eg_rad_i, eg_ps, sun_rt, cpu, wall))
+            import json
+
+            cache.write_text(json.dumps({"ev_rt": ev_rt, "sun_rt": sun_rt}))
             print(f"{name}: probesim {cpu:.1f} s CPU ({rec['passes']} passes), Radiance {wall:.0f} s wall", flush=True)
     print()
     print("| view | lighting | E_v probesim (lx) | E_v Radiance rtrace -I | E_v evalglare: Radiance / probesim picture | "
