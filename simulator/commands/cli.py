@@ -252,7 +252,7 @@ def _cmd_run(args) -> int:
     trace = rec["timings_s"]["trace"]
     used = ", ".join(f"{m} ×{k}" for m, k in rec["method"]["used"].items())
     if rec["method"].get("probes"):
-        used += f", probes by {rec['method']['probes']}"
+        used = ", ".join(x for x in (used, f"probes and glare views by {rec['method']['probes']}") if x)
     t = rec["timings_s"]
     print(
         f"{n} sensors, {rec['triangles']:,} triangles, {total:,} samples, methods {used} on {rec['device']} "
