@@ -166,7 +166,11 @@ def test_evalglare_options():
     assert parse_evalglare_options("-b 5 -r 0.3 -x -C l+") == {"threshold": 5.0, "search_radius": 0.3,
                                                               "peak_extraction": False, "low_light": True}  # fmt: skip
     assert parse_evalglare_options("-Y 30000") == {"peak_extraction": True, "peak_cd_m2": 30000.0}
-    for bad, word in [("-d", "'-d'"), ("-b", "-b needs"), ("-b x", "number"), ("-C q", "-C")]:
+    t = parse_evalglare_options("-b 5 -t 0 2 0 30")
+    assert t["threshold"] == 5.0 and np.allclose(t["task_direction"], [0, 1, 0]) and t["task_angle_deg"] == 30.0
+    assert GlareSettings(**t).evalglare_options() == "-b 5 -r 0.2 -Y 50000 -t 0 1 0 30"
+    for bad, word in [("-d", "'-d'"), ("-b", "-b needs"), ("-b x", "number"), ("-C q", "-C"), ("-t 0 0 0 10", "zero length"),
+                      ("-t 1 0 0", "-t needs")]:
         with pytest.raises(ValueError, match=word):
             parse_evalglare_options(bad)
     assert GlareSettings().evalglare_options() == "-b 2000 -r 0.2 -Y 50000"

@@ -42,7 +42,7 @@ STUDY = """
 stage = "view.usda"
 seed = 3
 [simulation]
-samples = 32
+samples = 64
 [compute]
 mode = "inprocess"
 [[candidates]]

@@ -95,6 +95,10 @@ def _parser() -> argparse.ArgumentParser:
     w = sub.add_parser("warmup", help="compile every kernel now (first run only; runs then load them from the cache)")
     w.add_argument("--device", choices=("cpu", "cuda", "auto"),
                    help="compile for this device only (default: the CPU, and CUDA when there is a device)")
+    sn = sub.add_parser("sensor", help="a sensor model's quality indices (f1′, f2, DIN 5032-7 class, mismatch factor) "
+                        "and electronics; --list: the bundled models")
+    sn.add_argument("model", nargs="?", metavar="MODEL", help="a bundled model's name or a model .toml file")
+    sn.add_argument("--list", action="store_true", help="list the bundled models")
     sd = sub.add_parser("study", help="placement study: candidates x scenarios, zone figures, the best K sensors (resumable, dask)")
     sd.add_argument("study", metavar="STUDY.toml", help="study file (.toml)")
     sd.add_argument("-o", "--out", metavar="DIR", help="output and chunk folder (default: the study's [output] dir)")
@@ -177,7 +181,15 @@ def _cmd_plan(args) -> int:
     for w in scene.warnings:
         print(f"warning: {w}", file=sys.stderr)
     sensors = [s for s in collect_sensors(cfg, scene) if s.spec.reader == "estimate"]
-    print(format_plan(make_plan(scene, sensors, cfg.simulation.method, cfg.simulation.component), max_rows=10**6))
+    plan = make_plan(scene, sensors, cfg.simulation.method, cfg.simulation.component)
+    from simulator.sensor_models.readings import optics_twins
+
+    twins = optics_twins(sensors)
+    if twins:  # modelled sensors are read again through their optics
+        from simulator.plan.planner import with_optics
+
+        plan = with_optics(plan, scene, twins)
+    print(format_plan(plan, max_rows=10**6))
     return 0
 
 
@@ -245,7 +257,9 @@ def _cmd_run(args) -> int:
         return 130
     if not args.quiet:
         print(format_table(out.rows, photometric_first=cfg.light_units == "photometric"))
-        for line in glare_lines(out.rows):
+        from simulator.commands.sensor import format_readings
+
+        for line in format_readings(out.rows) + glare_lines(out.rows):
             print(line)
     n = rec["sensors"]
     total = rec["samples_total"]
@@ -314,6 +328,10 @@ def main(argv: list[str] | None = None) -> int:
             return _cmd_stability(args)
         if args.command == "example":
             return _cmd_example(args)
+        if args.command == "sensor":
+            from simulator.commands.sensor import main_sensor
+
+            return main_sensor(args.model, args.list)
         if args.command == "study":
             from simulator.commands.study import main_study
 

@@ -26,7 +26,7 @@ from pydantic_core import PydanticCustomError
 
 from simulator.config.errors import MISSING, expected, rule, unknown_key
 from simulator.config.fields import (
-    PARALLEL_SIN, Direction, Number, Point, Resolution, Size, Text, UpDirection, interval, nonblank, one_of,
+    PARALLEL_SIN, Direction, Number, Point, Positive, Resolution, Size, Text, UpDirection, interval, nonblank, one_of,
 )  # fmt: skip
 from simulator.config.table import Table
 from simulator.scene.model import DEFAULT_GLARE_RESOLUTION, DEFAULT_PROBE_RESOLUTION, SensorKind, Sensor
@@ -84,15 +84,44 @@ class SensorFields(Table):
         raise NotImplementedError
 
 
+#: a sensor model a ``[[sensor]]`` or ``[[grid]]`` names (checked against its file by the loader)
+ModelName = Annotated[Text, nonblank("empty model name")]
+MODEL_NAME = Field(None, description="a sensor model, bundled (probesim sensor --list) or a .toml file: the row "
+                   "adds the reading through its optics and electronics (docs/sensors.md)")
+#: the part's gain: one of its list, or "auto" (checked against the model by the loader)
+MODEL_GAIN = Field(None, json_schema_extra={"type": 'number or "auto"'},
+                   description='with a model: the part\'s gain, one of its list, or "auto" (default: auto where the part '
+                   "ranges, else its reference)")
+MODEL_INTEGRATION = Field(None, description="with a model: the integration time, one of the part's (default: the "
+                          "part's choice)")
+
+
 class IrradianceEntry(SensorFields):
-    """A point receiver: irradiance on the side ``normal`` faces."""
+    """A point receiver: irradiance on the side ``normal`` faces; with ``model``, also a real head's reading."""
 
     KIND = SensorKind.IRRADIANCE
     kind: Literal["irradiance"]
     normal: Annotated[Direction, Field(description="the side it faces (toward the light it measures)")]
+    model: ModelName | None = MODEL_NAME
+    gain: Any = MODEL_GAIN
+    integration_ms: Positive | None = MODEL_INTEGRATION
+    azimuth_ref: Direction | None = Field(
+        None, json_schema_extra={"type": "[x, y, z]"},
+        description="with a model with azimuth columns: its azimuth 0 (in the sensor's plane)")
 
     def to_sensor(self, name: str, source: str) -> Sensor:
-        return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.normal, source=source)
+        return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.normal, source=source,
+                      azimuth_ref=_in_plane(self.azimuth_ref, self.normal), gain=self.gain,
+                      integration_ms=self.integration_ms)
+
+
+def _in_plane(ref, normal: np.ndarray):
+    """``ref`` made orthogonal to ``normal`` and unit, or None (none given, or parallel to the normal)."""
+    if ref is None:
+        return None
+    v = ref - float(np.dot(ref, normal)) * normal
+    n = float(np.linalg.norm(v))
+    return v / n if n > PARALLEL_SIN else None
 
 
 class RadianceEntry(SensorFields):
@@ -213,16 +242,6 @@ def _evalglare(text: str) -> dict:
         raise rule(str(e)) from None
 
 
-def _task(value: list[float]) -> tuple[np.ndarray, float]:
-    d = np.array(value[:3], np.float64)
-    length = float(np.linalg.norm(d))
-    if not length > 0.0:
-        raise rule("the task's direction [dx, dy, dz] has zero length")
-    if not 0.0 < value[3] <= 180.0:
-        raise rule(f"the task's opening angle must be in (0, 180] degrees, got {value[3]:g}")
-    return d / length, float(value[3])
-
-
 class GlareEntry(SensorFields):
     """An eye at ``position`` looking along ``direction``: E_v, DGP, DGPs, UGR and the glare sources
     (:mod:`simulator.glare`)."""
@@ -236,9 +255,7 @@ class GlareEntry(SensorFields):
     evalglare: Annotated[Text, AfterValidator(_evalglare)] = Field(
         "", description="source finding as evalglare options: -b threshold (cd/m², or ≤ 100: × task or mean "
                         "luminance; 2000), -r radius (0.2), -y/-x/-Y lum (peak extraction, 50000), -C l+ (low-light "
-                        "correction; off)")
-    task: Annotated[list[Number], BeforeValidator(lambda v: _four(v)), AfterValidator(_task)] | None = Field(
-        None, description="[dx, dy, dz, angle_deg]: the task zone a relative threshold multiplies (default: the whole view)")
+                        "correction; off), -t dx dy dz angle_deg (the task zone as a direction)")
     dgp_stderr: Annotated[Number, interval(0.0, 1.0)] = Field(
         0.005, description="the view traces until DGP's standard error is at most this")
 
@@ -246,17 +263,8 @@ class GlareEntry(SensorFields):
         from simulator.glare.sources import GlareSettings
 
         opts = dict(self.evalglare) if isinstance(self.evalglare, dict) else {}
-        if self.task is not None:
-            opts["task_direction"], opts["task_angle_deg"] = self.task
         return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.direction, up=self.up,
                       resolution=self.resolution, source=source, glare=GlareSettings(dgp_stderr=self.dgp_stderr, **opts))
-
-
-def _four(value: Any) -> Any:
-    if not isinstance(value, list) or len(value) != 4:
-        raise rule(expected("an array of 4 numbers [dx, dy, dz, angle_deg]", value) if not isinstance(value, list)
-                   else f"expected an array of 4 numbers [dx, dy, dz, angle_deg], got {len(value)} element(s)")
-    return value
 
 
 #: the model of each kind, by the name configs use (the order of

@@ -384,6 +384,8 @@ class Engine:
         p.pick_light = 0
         p.tally_pick = 0
         p.split_indirect = 0
+        p.optics = 0  # set per sensor by the estimator kernel (a probe's: 0, the cosine at every vertex)
+        p.optics_x = warp().vec3(1.0, 0.0, 0.0)
         p.rr_threshold = float(self.rr_threshold if self.rr_threshold is not None else self._rr_rule())
         return p
 

@@ -92,11 +92,13 @@ class GlareSettings:
     dgp_stderr: float = 0.005
 
     def evalglare_options(self) -> str:
-        """The evalglare options that make it find the same sources (the task zone given as a direction)."""
+        """The options that find the same sources (``-t``: the task zone as a direction, where evalglare takes a pixel)."""
         opts = [f"-b {self.threshold:g}", f"-r {self.search_radius:g}"]
         opts.append(f"-Y {self.peak_cd_m2:g}" if self.peak_extraction else "-x")
         if self.low_light:
             opts.append("-C l+")
+        if self.task_direction is not None:
+            opts.append("-t " + " ".join(f"{x:.6g}" for x in self.task_direction) + f" {self.task_angle_deg:g}")
         return " ".join(opts)
 
 
@@ -105,7 +107,9 @@ def parse_evalglare_options(text: str) -> dict:
 
     Understood: ``-b threshold``, ``-r search_radius``, ``-y`` (peak extraction on, the default), ``-x``
     (off), ``-Y peak_luminance`` (on, at that luminance), ``-C l+`` / ``-C l-`` / ``-C 0`` (low-light
-    correction on / off / every correction off) and ``-4`` (low-light correction off).
+    correction on / off / every correction off), ``-4`` (low-light correction off) and ``-t dx dy dz
+    angle_deg``: the task zone a threshold of at most 100 multiplies, as a view direction and its full
+    opening angle in degrees (evalglare's ``-t`` takes a pixel position and an angle in radians).
 
     Raises
     ------
@@ -144,13 +148,28 @@ def parse_evalglare_options(text: str) -> dict:
             out["peak_extraction"], out["peak_cd_m2"] = True, number(w)
         elif w == "-4":
             out["low_light"] = False
+        elif w == "-t":
+            if i + 4 >= len(words):
+                raise ValueError("-t needs a direction and an angle: -t dx dy dz angle_deg")
+            try:
+                v = [float(x) for x in words[i + 1:i + 5]]
+            except ValueError:
+                raise ValueError("-t needs four numbers: dx dy dz angle_deg") from None
+            d = np.array(v[:3])
+            n = float(np.linalg.norm(d))
+            if not (n > 0 and math.isfinite(n)):
+                raise ValueError("-t: the task's direction has zero length")
+            if not 0.0 < v[3] <= 180.0:
+                raise ValueError(f"-t: the task's opening angle must be in (0, 180] degrees, not {v[3]:g}")
+            out["task_direction"], out["task_angle_deg"] = d / n, v[3]
+            i += 4
         elif w == "-C":
             if i + 1 >= len(words) or words[i + 1] not in ("l+", "l-", "0"):
                 raise ValueError("-C takes l+, l- or 0")
             out["low_light"] = words[i + 1] == "l+"
             i += 1
         else:
-            raise ValueError(f"{w!r} is not an option a glare view takes (-b, -r, -y, -x, -Y, -C, -4)")
+            raise ValueError(f"{w!r} is not an option a glare view takes (-b, -r, -y, -x, -Y, -C, -4, -t)")
         i += 1
     return out
 

@@ -329,6 +329,15 @@ class Geometry:
     texture_uv : ndarray, shape (T, 3, 2), float64, or None
         Per triangle corner: the texture's ``st`` (after its st transform),
         zero where ``texture_id`` is -1; None with ``texture_id``.
+    shading_normals : ndarray, shape (T, 3, 3), float32, or None
+        Per triangle corner: the unit normal of the curved surface the
+        triangle stands for (an authored ``normals`` primvar, a subdivision
+        cage's smooth normals, an implicit gprim's own;
+        :mod:`simulator.scene.usd.normals`), kept on glossy, mirror and pane
+        faces, zero on a flat face or a matte one (its face normal); None
+        where no such face has them. The kernels shade glossy and mirror
+        faces by it (:mod:`simulator.kernels.glossy`), matte faces and panes
+        by their face normal.
     """
 
     points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
@@ -350,6 +359,7 @@ class Geometry:
     coverage_textures: list = field(default_factory=list)
     texture_id: np.ndarray | None = None
     texture_uv: np.ndarray | None = None
+    shading_normals: np.ndarray | None = None
 
     @property
     def has_surfaces(self) -> bool:
@@ -523,6 +533,21 @@ class Sensor:
         Name of the ``[[grid]]`` this sensor was expanded from.
     source : str
         Where it was defined (config key or prim path), for messages.
+    model : SensorModel or None
+        The sensor model it names (:mod:`simulator.sensor_models`): the run reads it as today (the
+        ideal quantity) and also through the model (optics, device). None: an ideal sensor.
+    optics : AngularResponse or None
+        Set only on the engine's optics twin of a modelled sensor
+        (:func:`simulator.sensor_models.readings.optics_twins`): its first vertex weighs by this response
+        instead of the cosine. None: the cosine.
+    azimuth_ref : ndarray, shape (3,), or None
+        The in-plane direction of azimuth 0 of a model with azimuth columns (made orthogonal to
+        ``normal``); None: any (a symmetric head).
+    gain : float, "auto" or None
+        A modelled sensor's gain (one of its part's); None: the part's default (auto-ranging where it
+        ranges, else its reference gain).
+    integration_ms : float or None
+        A modelled sensor's integration time, ms (one of its part's); None: the part's choice.
     """
 
     name: str
@@ -535,6 +560,11 @@ class Sensor:
     resolution: tuple[int, int] = (0, 0)
     grid: str | None = None
     source: str = ""
+    model: object | None = None
+    optics: object | None = None
+    azimuth_ref: np.ndarray | None = None
+    gain: float | str | None = None
+    integration_ms: float | None = None
     glare: object | None = None
 
     @property

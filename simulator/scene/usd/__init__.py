@@ -185,6 +185,8 @@ attribute                        type         meaning
 ``probesim:sensor:evalglare``    string       glare: source finding as evalglare options
                                               (``-b``, ``-r``, ``-y``/``-x``/``-Y``, ``-C``)
 ``probesim:sensor:dgpStderr``    float        glare: DGP's standard error to trace to (0.005)
+``probesim:sensor:model``        string       irradiance: a sensor model, bundled or a
+                                              .toml beside the stage (docs/sensors.md)
 ===============================  ===========  ===========================================
 
 The sensor sits at the prim's world origin and faces down its local -Z axis,
@@ -213,7 +215,7 @@ from pxr import Usd, UsdGeom, UsdLux
 
 from simulator.errors import UserError
 from simulator.scene.model import Geometry, Light, LightKind, Scene, Sensor
-from simulator.scene.surfaces import mirror_limits
+from simulator.scene.surfaces import curved_mirrors, curved_notes, mirror_limits, shaded_faces
 from simulator.scene.usd.facets import faceted_note, faceted_reflectors
 from simulator.scene.usd.collections import light_collections
 from simulator.scene.usd.context import _Context
@@ -368,10 +370,15 @@ def load_stage(
             closed = sorted({geometry.prim_names[i] for i in np.unique(geometry.prim[geometry.solid_side != 0])})
             ctx.ignored[f"refraction's bend in closed transparent mesh(es) {', '.join(closed[:3])}"
                         f"{' ...' if len(closed) > 3 else ''} (read as slabs entered once, no offset)"] += len(closed)
-        for note in mirror_limits(geometry.points, geometry.triangles, geometry.surface_id, geometry.surfaces,
-                                  [l.name for l in lights if l.is_delta]):
+        delta_lights = [l.name for l in lights if l.is_delta]
+        shaded = shaded_faces(geometry)
+        curves = curved_mirrors(geometry, shaded)
+        for note in (mirror_limits(geometry.points, geometry.triangles, geometry.surface_id, geometry.surfaces,
+                                   delta_lights, shaded, curves.n + curves.left_out)
+                     + curved_notes(curves, delta_lights + [l.name for l in lights if l.kind == LightKind.DISTANT
+                                                            and not l.is_delta])):
             ctx.warn(f"{os.path.basename(str(path))}: {note}")
-        faceted = faceted_reflectors(stage, geometry)
+        faceted = faceted_reflectors(geometry)
         if faceted:
             ctx.warn(f"{os.path.basename(str(path))}: {faceted_note(faceted)}")
         ctx.pxr_messages += pxr_said.collect()

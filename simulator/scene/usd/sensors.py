@@ -44,6 +44,19 @@ def _read_sensor(ctx: _Context, prim: Usd.Prim) -> Sensor:
         name=str(_sensor_attr(ctx, prim, "name", str(prim.GetPath()))),
         kind=kind, position=t, normal=normal, up=up, source=str(prim.GetPath()),
     )
+    model = str(_sensor_attr(ctx, prim, "model", "") or "").strip()
+    if model:  # a sensor model: a bundled name, or a .toml relative to the stage file
+        if kind != SensorKind.IRRADIANCE:
+            raise ctx.error(prim, f"{SENSOR_ATTR_PREFIX}model: only an irradiance sensor takes a model")
+        from pathlib import Path
+
+        from simulator.errors import UserError
+        from simulator.sensor_models.model import load_model
+
+        try:
+            sensor.model = load_model(model, Path(ctx.path).parent, f"{SENSOR_ATTR_PREFIX}model")
+        except UserError as e:
+            raise ctx.error(prim, str(e)) from None
     if kind == SensorKind.RADIANCE:
         half = float(_sensor_attr(ctx, prim, "halfAngleDeg", 0.0))
         if not (math.isfinite(half) and 0.0 <= half <= 90.0):
