@@ -18,6 +18,7 @@ from simulator.interrupts import StopFlag, sigint_deferred
 from simulator.io.maps import grid_outputs, probe_outputs
 from simulator.plan.cache import cached_plan
 from simulator.plan.planner import Plan, make_plan, probe_method
+from simulator.io.glare_maps import glare_readings
 from simulator.io.results import Reading, probe_readings, readings_from, write_outputs
 from simulator.scene.model import Scene, Sensor, SensorKind
 from simulator.scene.light_flux import lights_record
@@ -233,7 +234,7 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True, sensors: l
     t0 = time.perf_counter()
     scene, token = cached_scene(cfg)
     sensors = collect_sensors(cfg, scene) if sensors is None else list(sensors)
-    twins = optics_twins([s for s in sensors if s.kind != SensorKind.PROBE])  # modelled sensors read again
+    twins = optics_twins([s for s in sensors if s.spec.reader == "estimate"])  # modelled sensors read again
     spectrum = None  # the emitters' spectrum, for response columns (grey scenes: exact post hoc)
     hero = None  # spectral transport's tables (a colour can change a reading: hero wavelengths)
     if choose_transport(scene)[0] == "grey":
@@ -245,10 +246,12 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True, sensors: l
         hero = run_hero_tables(cfg, scene, extra=channel_responses(twins))
     misplaced = sensor_warnings(scene, sensors)  # sensors a stage would read a plausible wrong number at
     misplaced += _response_notes(cfg)
-    # probes are read by their own kernel (simulator.engine.probes)
+    # probes are read by their own kernel (simulator.engine.probes), glare views by simulator.engine.glare
     probes = [s for s in sensors if s.kind == SensorKind.PROBE]
-    plain = [s for s in sensors if s.kind != SensorKind.PROBE]
+    plain = [s for s in sensors if s.spec.reader == "estimate"]
     sim = cfg.simulation
+    if sim.component != "total" and any(s.kind == SensorKind.GLARE for s in sensors):
+        raise UserError(f"{cfg.path}: simulation.component: glare sensors need the total light, not {sim.component!r}")
     t_read = time.perf_counter()
     plan = cached_plan(lambda: make_plan(scene, plain, sim.method, sim.component), token, plain, sim.method, sim.component)
     if twins:
@@ -257,9 +260,9 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True, sensors: l
         plan = with_optics(plan, scene, twins)
     reason = "per-sensor plan (see plan)" if sim.method == "auto" else "as requested"
     probes_method = None
-    if probes:  # no closed form for a probe: its method is chosen for the run
+    if probes or any(s.kind == SensorKind.GLARE for s in sensors):  # no closed form: one method for the run
         probes_method, why = probe_method(scene, sim.method, sim.component)
-        reason += f"; probes: {why}"
+        reason += f"; probes and glare views: {why}"
     t_load = time.perf_counter()
     engine = config_engine(cfg, scene, plain + twins, hero=hero)
     for w in _scene_warnings(scene, engine) + ([] if hero is None else hero.notes) + misplaced:
@@ -331,6 +334,25 @@ def _model_columns(cfg, plain, twins, by_name, res, spectrum, engine, log) -> di
     return model_record(twins, notes)
 
 
+def _run_glare(cfg, scene, sensors, views, method, engine, stop, progress) -> list:
+    """The run's glare views (:func:`simulator.engine.glare.run_glare`), on engines like the run's own."""
+    from simulator.engine.driver import Progress
+    from simulator.engine.glare import run_glare
+
+    sim = cfg.simulation
+    hero = getattr(engine, "hero_tables", None)
+
+    def report(done, total, samples, elapsed):
+        if progress is not None:
+            progress(Progress(done, total, samples, elapsed, None))
+
+    return run_glare(
+        scene, views, method, lambda sc, ss: config_engine(cfg, sc, ss, hero=hero), seed=sim.seed,
+        stream_ids=[i for i, s in enumerate(sensors) if s.kind == SensorKind.GLARE], max_depth=sim.max_depth,
+        time_limit_s=sim.time_limit_s, progress=report, stop=stop,
+    )  # fmt: skip
+
+
 def _traced_columns(cfg, plan, engine, plain, by_name, res, probes) -> tuple[dict, list[dict]]:
     """Response columns of a spectrally traced run's plain sensors, its record and its map channels."""
     from simulator.spectra.posthoc import response_channels
@@ -398,13 +420,19 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         )  # fmt: skip
         for p in probe_res:
             res.warnings.extend(p.warnings)
+    views = [s for s in sensors if s.kind == SensorKind.GLARE]
+    glare_res = _run_glare(cfg, scene, sensors, views, probes_method, engine, stop, progress) if views and not stop.requested else []
+    for g in glare_res:
+        res.warnings.extend(g.warnings)
     # a stop that came after the last batch changed nothing: the run is complete
     interrupted = stop.requested and (bool(res.unfinished.any()) or len(probe_res) < len(probes)
-                                      or any(p.interrupted for p in probe_res))
+                                      or any(p.interrupted for p in probe_res) or len(glare_res) < len(views)
+                                      or any(g.interrupted for g in glare_res))
     for w in res.warnings:
         log(f"warning: {w}")
     by_name = {r.sensor.name: r for r in readings_from(plain, res.mean, res.stderr, res.samples, res.seconds, res.methods, res.target_met)}
     by_name.update({r.sensor.name: r for r in probe_readings(probe_res, probes_method)})
+    by_name.update({r.sensor.name: r for r in glare_readings(glare_res, probes_method)})
     spectra_record, response_maps = None, []
     models_record = _model_columns(cfg, plain, twins, by_name, res, spectrum, engine, log) if twins else {}
     if isinstance(spectrum, _ModelsOnly):
@@ -416,11 +444,12 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
     elif res.responses is not None:  # traced spectrally: response columns from the same samples
         spectra_record, response_maps = _traced_columns(cfg, plan, engine, plain, by_name, res, probes)
     extra, probe_maps, n_finished = {}, {}, len(sensors)
-    if interrupted:  # probes not reached: an empty row each
-        by_name.update({s.name: Reading(s, {}, 0, 0.0, probes_method, None) for s in probes if s.name not in by_name})
+    if interrupted:  # probes and glare views not reached: an empty row each
+        by_name.update({s.name: Reading(s, {}, 0, 0.0, probes_method, None) for s in probes + views if s.name not in by_name})
         unfinished = dict(zip((s.name for s in plain), res.unfinished))
-        unfinished.update({s.name: True for s in probes})
+        unfinished.update({s.name: True for s in probes + views})
         unfinished.update({p.sensor.name: p.interrupted for p in probe_res})
+        unfinished.update({g.sensor.name: g.interrupted for g in glare_res})
         rows = _partial_rows([by_name[s.name] for s in sensors], unfinished, res.target_met is not None)
         n_finished = sum(1 for u in unfinished.values() if not u)
     else:
@@ -435,6 +464,11 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
                 probe_meta["rgb"] = (spectrum.name, rgb_per_luminance(spectrum))
             probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, probe_meta)
             extra.update(probe_files)
+            if glare_res:
+                from simulator.io.glare_maps import glare_outputs
+
+                glare_files, glare_record = glare_outputs(cfg.output.csv, glare_res, {**meta, "method": probes_method})
+                extra.update(glare_files)
     t_end = time.perf_counter()
     record = {
         "config_path": str(cfg.path),
@@ -444,7 +478,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
                   "variants": dict(cfg.variants), "time": _time_record(scene)},
         "seed": sim.seed,
         "samples_requested": sim.samples,
-        "samples_total": int(res.samples.sum()) + sum(p.samples for p in probe_res),
+        "samples_total": int(res.samples.sum()) + sum(p.samples for p in probe_res) + sum(g.samples for g in glare_res),
         "interrupted": interrupted,
         "sensors_read": sum(1 for r in rows if r.values),
         "sensors_finished": n_finished,
@@ -457,7 +491,8 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         "threads": engine.threads,
         "host": {"platform": platform.platform(), "machine": platform.machine(), "processor": platform.processor(), "python": sys.version.split()[0]},
         "versions": _versions(),
-        "timings_s": {"load": t_read - t0, "plan": t_load - t_read, "setup": t_setup - t_load, "trace": res.wall_s + sum(p.seconds for p in probe_res),
+        "timings_s": {"load": t_read - t0, "plan": t_load - t_read, "setup": t_setup - t_load,
+                      "trace": res.wall_s + sum(p.seconds for p in probe_res) + sum(g.seconds for g in glare_res),
                       "guide": engine.guide.seconds if engine.guide is not None else 0.0, "total": t_end - t0},
         **({} if engine.guide is None else {"guide": engine.guide.to_record()}),
         **({} if engine.rr_pilot is None else {"roulette": _roulette_record(engine.rr_pilot)}),
@@ -470,6 +505,8 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         "non_finite_samples": int(res.non_finite.sum()) + sum(p.non_finite for p in probe_res),
         "maps": sorted(p.name for p in extra),
         "probe_maps": probe_maps,
+        **({"glare": {"method": probes_method, "views": len(glare_res), "file": cfg.output.csv.stem + ".glare.json"}}
+           if glare_res else {}),
         "adaptive": None
         if res.target_met is None
         else {

@@ -180,7 +180,7 @@ def _cmd_plan(args) -> int:
     scene = load_scene(cfg)
     for w in scene.warnings:
         print(f"warning: {w}", file=sys.stderr)
-    sensors = [s for s in collect_sensors(cfg, scene) if s.kind.name != "PROBE"]
+    sensors = [s for s in collect_sensors(cfg, scene) if s.spec.reader == "estimate"]
     plan = make_plan(scene, sensors, cfg.simulation.method, cfg.simulation.component)
     from simulator.sensor_models.readings import optics_twins
 
@@ -223,6 +223,7 @@ def _cmd_bench(args) -> int:
 def _cmd_run(args) -> int:
     from simulator.config.loader import apply_overrides, load_config
     from simulator.commands.progress import ProgressBar
+    from simulator.io.glare_maps import glare_lines
     from simulator.io.results import format_table
     from simulator.pipeline import run
 
@@ -258,14 +259,14 @@ def _cmd_run(args) -> int:
         print(format_table(out.rows, photometric_first=cfg.light_units == "photometric"))
         from simulator.commands.sensor import format_readings
 
-        for line in format_readings(out.rows):
+        for line in format_readings(out.rows) + glare_lines(out.rows):
             print(line)
     n = rec["sensors"]
     total = rec["samples_total"]
     trace = rec["timings_s"]["trace"]
     used = ", ".join(f"{m} ×{k}" for m, k in rec["method"]["used"].items())
     if rec["method"].get("probes"):
-        used += f", probes by {rec['method']['probes']}"
+        used = ", ".join(x for x in (used, f"probes and glare views by {rec['method']['probes']}") if x)
     t = rec["timings_s"]
     print(
         f"{n} sensors, {rec['triangles']:,} triangles, {total:,} samples, methods {used} on {rec['device']} "

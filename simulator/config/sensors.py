@@ -8,7 +8,7 @@ discriminated union of them on ``kind``; a new kind is one more model in
 
 ::
 
-    [[sensor]]            # irradiance | radiance | patch | probe | cylindrical | semicylindrical
+    [[sensor]]            # irradiance | radiance | patch | probe | cylindrical | semicylindrical | glare
     name = "desk"         # default: "sensor[<index>]"
     kind = "irradiance"
     position = [0, 0, 0.75]   # metres
@@ -29,7 +29,7 @@ from simulator.config.fields import (
     PARALLEL_SIN, Direction, Number, Point, Positive, Resolution, Size, Text, UpDirection, interval, nonblank, one_of,
 )  # fmt: skip
 from simulator.config.table import Table
-from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SensorKind, Sensor
+from simulator.scene.model import DEFAULT_GLARE_RESOLUTION, DEFAULT_PROBE_RESOLUTION, SensorKind, Sensor
 
 __all__ = [
     "SensorFields",
@@ -39,6 +39,7 @@ __all__ = [
     "ProbeEntry",
     "CylindricalEntry",
     "SemicylindricalEntry",
+    "GlareEntry",
     "SENSOR_ENTRIES",
     "SENSOR_KEYS",
     "SensorEntry",
@@ -67,7 +68,7 @@ class SensorFields(Table):
     name: Annotated[Text, nonblank("empty name")] | None = Field(
         None, description="the CSV row's name (default: sensor[<index>])"
     )
-    kind: str = Field(description="irradiance | radiance | patch | probe | cylindrical | semicylindrical")
+    kind: str = Field(description="irradiance | radiance | patch | probe | cylindrical | semicylindrical | glare")
     position: Annotated[
         Point, Field(description="where the sensor is (a patch's centre)", json_schema_extra={"unit": "m"})
     ]
@@ -146,7 +147,7 @@ class PatchEntry(SensorFields):
     kind: Literal["patch"]
     normal: Direction
     size: Annotated[Size, Field(description="width, height of the rectangle", json_schema_extra={"unit": "m"})]
-    up: Annotated[UpDirection, Field(description="direction of the height side")]
+    up: Annotated[UpDirection, Field(description="direction of the height side (glare: up in the view; default +Z)")]
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         return Sensor(
@@ -160,7 +161,8 @@ class ProbeEntry(SensorFields):
 
     KIND = SensorKind.PROBE
     kind: Literal["probe"]
-    resolution: Resolution = Field(DEFAULT_PROBE_RESOLUTION, description="lat-long map width, height in pixels")
+    resolution: Resolution = Field(DEFAULT_PROBE_RESOLUTION, description="lat-long map width, height in pixels "
+                                                                         "(glare: of the half in front, [128, 128])")
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         # a probe has no facing; normal and up are placeholders (the map's
@@ -220,6 +222,51 @@ class SemicylindricalEntry(SensorFields):
         return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.facing, up=self.axis, source=source)
 
 
+def _up_beside_direction(up: np.ndarray, info: ValidationInfo) -> np.ndarray:
+    view = info.data.get("direction")
+    if view is None:
+        return up
+    ortho = up - float(np.dot(up, view)) * view
+    length = float(np.linalg.norm(ortho))
+    if length < PARALLEL_SIN:
+        raise rule("parallel to {sibling}; up must point above the line of sight", sibling="direction")
+    return ortho / length
+
+
+def _evalglare(text: str) -> dict:
+    from simulator.glare.sources import parse_evalglare_options
+
+    try:
+        return parse_evalglare_options(text)
+    except ValueError as e:
+        raise rule(str(e)) from None
+
+
+class GlareEntry(SensorFields):
+    """An eye at ``position`` looking along ``direction``: E_v, DGP, DGPs, UGR and the glare sources
+    (:mod:`simulator.glare`)."""
+
+    KIND = SensorKind.GLARE
+    kind: Literal["glare"]
+    direction: Direction
+    up: Annotated[Direction, AfterValidator(_up_beside_direction)] = Field(
+        default_factory=lambda: [0.0, 0.0, 1.0], validate_default=True, description="up in the view (made orthogonal to direction)")
+    resolution: Resolution = Field(DEFAULT_GLARE_RESOLUTION)
+    evalglare: Annotated[Text, AfterValidator(_evalglare)] = Field(
+        "", description="source finding as evalglare options: -b threshold (cd/m², or ≤ 100: × task or mean "
+                        "luminance; 2000), -r radius (0.2), -y/-x/-Y lum (peak extraction, 50000), -C l+ (low-light "
+                        "correction; off), -t dx dy dz angle_deg (the task zone as a direction)")
+    dgp_stderr: Annotated[Number, interval(0.0, 1.0)] = Field(
+        0.005, description="the view traces until DGP's standard error is at most this")
+
+    def to_sensor(self, name: str, source: str) -> Sensor:
+        from simulator.glare.sources import GlareSettings
+
+        opts = dict(self.evalglare) if isinstance(self.evalglare, dict) else {}
+        return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.direction, up=self.up,
+                      resolution=self.resolution, source=source, glare=GlareSettings(dgp_stderr=self.dgp_stderr, **opts))
+
+
 #: the model of each kind, by the name configs use (the order of
 #: :data:`simulator.scene.model.SENSOR_KINDS`)
 SENSOR_ENTRIES: dict[str, type[SensorFields]] = {
@@ -229,6 +276,7 @@ SENSOR_ENTRIES: dict[str, type[SensorFields]] = {
     "probe": ProbeEntry,
     "cylindrical": CylindricalEntry,
     "semicylindrical": SemicylindricalEntry,
+    "glare": GlareEntry,
 }
 #: every key some kind takes, in a stable order
 SENSOR_KEYS: tuple[str, ...] = tuple(dict.fromkeys(k for m in SENSOR_ENTRIES.values() for k in m.model_fields))

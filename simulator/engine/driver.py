@@ -1201,6 +1201,22 @@ class Engine:
                       inputs=[self._dev.rec, rec, params, 1, 0, 0, 1, 1, 0, 0], outputs=[d_shift, d_sum, d_sq, d_bad])
             return d_sum.numpy()[0][: P.N_QUANTITIES * P.N_CHANNELS].reshape(P.N_QUANTITIES, P.N_CHANNELS)
 
+    # probe passes over a layout of the caller's (glare views: simulator.engine.glare)
+
+    def probe_record(self):
+        """An empty ``ProbeRec`` to fill with a layout of one's own, the probe kernels loaded."""
+        KM.load([KM.trace_module(self.trace_variant.surfaces)], self.device)
+        return self._KP.ProbeRec()
+
+    def probe_passes(self, rec, params, first_pass: int, n_passes: int):
+        """Passes [first_pass, first_pass + n_passes) of every pixel of ``rec``: per-pixel
+        ``(counts, means, m2s, non_finite)`` as :meth:`run_probes` merges them."""
+        return self._launch_passes(rec, params, int(rec.width) * int(rec.height), first_pass, n_passes)
+
+    def probe_delta(self, rec, params) -> np.ndarray:
+        """The delta lights' exact part of the probe integrals at ``rec.position``, (22, 2)."""
+        return self._probe_delta(rec, params)
+
     def run_probes(
         self,
         probes: list[Sensor],

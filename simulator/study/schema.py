@@ -418,9 +418,15 @@ class AreaSpec(_Model):
     )
     maintenance_factor: float = Field(1.0, gt=0.0, le=1.0, description="every figure is maintained: × this factor")
     horizontal: str | None = Field(None, description="cylindrical: a horizontal set at the same points, for E_z/E_h")
+    ugr_limit: float | None = Field(None, gt=0.0, description="the task's UGR_L: UGR at the observers, of the lamps, is judged against it")
+    observers: list[tuple[float, float, float, float, float, float]] | None = Field(
+        None, description="with ugr_limit: [[x, y, z, dx, dy, dz], ...] eyes and view directions (default: the task's "
+                          "sides, 1.2 m above the floor, looking across)", json_schema_extra={"unit": "m"})
 
     @model_validator(mode="after")
     def _fields(self):
+        if self.observers is not None and self.ugr_limit is None:
+            raise ValueError("observers are for a UGR check: give ugr_limit (the standard's UGR_L for the task)")
         for key, v in (("task", self.task), ("region", self.region)):
             if v is not None and not (v[0] < v[2] and v[1] < v[3]):
                 raise ValueError(f"{key}: expected [x0, y0, x1, y1] with x0 < x1 and y0 < y1")

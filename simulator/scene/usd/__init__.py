@@ -171,8 +171,8 @@ Any prim (usually an ``Xform``) that has the attribute
 ===============================  ===========  ===========================================
 attribute                        type         meaning
 ===============================  ===========  ===========================================
-``probesim:sensor:kind``         token/string ``irradiance``, ``radiance``, ``patch`` or
-                                              ``probe`` (required)
+``probesim:sensor:kind``         token/string ``irradiance``, ``radiance``, ``patch``,
+                                              ``probe``, ... or ``glare`` (required)
 ``probesim:sensor:name``         string       name in results (default: the prim path)
 ``probesim:sensor:halfAngleDeg`` float        radiance: cone half-angle, degrees, in
                                               [0, 90] (default 0: one direction)
@@ -180,7 +180,11 @@ attribute                        type         meaning
                                               the prim's local X and Y (required); the
                                               world transform's scale applies too
 ``probesim:sensor:resolution``   int2         probe: lat-long map (width, height) in
-                                              pixels (default (64, 32))
+                                              pixels (default (64, 32)); glare: its half
+                                              map in front of the eye (default (128, 128))
+``probesim:sensor:evalglare``    string       glare: source finding as evalglare options
+                                              (``-b``, ``-r``, ``-y``/``-x``/``-Y``, ``-C``)
+``probesim:sensor:dgpStderr``    float        glare: DGP's standard error to trace to (0.005)
 ``probesim:sensor:model``        string       irradiance: a sensor model, bundled or a
                                               .toml beside the stage (docs/sensors.md)
 ===============================  ===========  ===========================================
