@@ -228,9 +228,11 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True, sensors: l
     from simulator.sensor_models.readings import channel_responses, optics_twins
 
     if getattr(cfg, "times", None) and sensors is None:  # one row per sensor and time code
+        import sys
+
         from simulator.timecodes import run_times
 
-        return run_times(cfg, progress, log, write)
+        return run_times(cfg, sys.modules[__name__], progress, log, write)
     t0 = time.perf_counter()
     scene, token = cached_scene(cfg)
     sensors = collect_sensors(cfg, scene) if sensors is None else list(sensors)

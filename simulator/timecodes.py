@@ -63,9 +63,11 @@ def _named(rows) -> list:
     return rows
 
 
-def run_times(cfg, progress=None, log=print, write: bool = True):
+def run_times(cfg, pipeline, progress=None, log=print, write: bool = True):
     """Read ``cfg``'s sensors at each of ``cfg.times`` (see module docstring); returns the
-    :class:`simulator.pipeline.RunOutput` of the whole series.
+    :class:`simulator.pipeline.RunOutput` of the whole series. ``pipeline`` is the
+    :mod:`simulator.pipeline` module, whose ``run`` calls this (passed, not imported, so the
+    two modules do not import each other).
 
     Raises
     ------
@@ -73,7 +75,8 @@ def run_times(cfg, progress=None, log=print, write: bool = True):
         A probe among the sensors (maps are not read along time), or a sensor name used twice at a time.
     """
     from simulator.io.results import write_outputs
-    from simulator.pipeline import RunOutput, cached_scene, collect_sensors, run
+
+    RunOutput, cached_scene, collect_sensors, run = pipeline.RunOutput, pipeline.cached_scene, pipeline.collect_sensors, pipeline.run
 
     times = list(cfg.times)
     at = [dataclasses.replace(cfg, time=t, times=None) for t in times]

@@ -47,6 +47,7 @@ import numpy as np
 
 from simulator.errors import UserError
 from simulator.spectra.grid import WAVELENGTHS_NM, integrate
+from simulator.spectra.planck import C2_CIE_M_K, C_M_S, H_J_S, K_B_J_K, planck_W_m2_sr_nm
 from simulator.units import K_M as _K_M
 
 __all__ = [
@@ -67,16 +68,8 @@ __all__ = [
     "spectral_emission",
 ]
 
-#: Planck constant, J s (exact, SI 2019)
-H_J_S = 6.62607015e-34
-#: speed of light in vacuum, m/s (exact)
-C_M_S = 299792458.0
-#: Boltzmann constant, J/K (exact, SI 2019)
-K_B_J_K = 1.380649e-23
 #: Avogadro constant, 1/mol (exact, SI 2019)
 N_A_PER_MOL = 6.02214076e23
-#: second radiation constant for colour temperatures, m K (CIE 15:2004, ITS-90)
-C2_CIE_M_K = 1.4388e-2
 #: maximum luminous efficacy for photopic vision, lm/W: :data:`simulator.units.K_M` (683.002, CIE 018:2019)
 K_M_LM_W = _K_M
 
@@ -136,24 +129,6 @@ def _shape(name: str, values, notes=(), wide=None, wide_range=(380.0, 780.0)) ->
     v = np.asarray(values, dtype=np.float64).copy()
     v.setflags(write=False)
     return Spectrum(name, v, tuple(n for n in notes if n), wide, tuple(map(float, wide_range)))
-
-
-def planck_W_m2_sr_nm(temperature_K: float, wavelength_nm, c2_m_K: float | None = None) -> np.ndarray:
-    """Blackbody spectral radiance B_λ(T), W m⁻² sr⁻¹ nm⁻¹ (see module Notes).
-
-    Parameters
-    ----------
-    temperature_K : float
-        > 0.
-    wavelength_nm : array_like
-        Wavelengths in vacuum, nm.
-    c2_m_K : float, optional
-        Second radiation constant; default the exact h c / k.
-    """
-    lam = np.asarray(wavelength_nm, float) * 1e-9
-    c2 = H_J_S * C_M_S / K_B_J_K if c2_m_K is None else float(c2_m_K)
-    x = c2 / (lam * float(temperature_K))
-    return 2.0 * H_J_S * C_M_S**2 / lam**5 / np.expm1(x) * 1e-9
 
 
 def blackbody(temperature_K: float) -> Spectrum:

@@ -103,7 +103,7 @@ def daylight_wide(name: str) -> np.ndarray:
     300–830 nm from its chromaticity, the blackbody at its CCT beyond (scaled to meet it at 830 nm)."""
     import colour
 
-    from simulator.spectra.sources import C2_CIE_M_K, planck_W_m2_sr_nm
+    from simulator.spectra.planck import C2_CIE_M_K, planck_W_m2_sr_nm
 
     xy = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"][name]
     sd = colour.sd_CIE_illuminant_D_series(xy)
