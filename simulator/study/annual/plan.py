@@ -9,7 +9,8 @@ Every state (:mod:`simulator.study.annual.shading`; a study without
   (:mod:`simulator.study.annual.diffusers`);
 - the lamp groups ``[[control]]`` dims (``annual;lamps``);
 - the diffusing shades' cells, each a light group of its own (``annual;shade``);
-- with ``sun_indirect = "traced"``, the sun at each bin (``annual;sun;<az>,<el>``);
+- with ``sun_indirect = "traced"``, the sun at each bin (``annual;sun;<az>,<el>``),
+  on the candidates and the glare views' eyes;
 - with glare views on the stage, the sky and the cells at an irradiance sensor
   at each eye facing its view direction, ``component = "indirect"``
   (``annual;glare``): the one trace annual glare adds per state
@@ -103,10 +104,10 @@ def plan_state(state, study, sensors: list, groups: dict, stage, sim: dict, bloc
         plan.lamps = chunks("annual;lamps", sensors, lamp_groups, sim)
     if plan.cells:
         plan.shade = chunks("annual;shade", sensors, plan.cell_groups, sim, plan.cells)
-    for az, el in bin_suns or []:
-        plan.sun_bins.append(chunks(f"annual;sun;{az:.6f},{el:.6f}", sensors, [a.sun_group], sim, sun=(az, el)))
+    plan.eyes = [eye_sensor(v) for v in views]
+    for az, el in bin_suns or []:  # the eyes too: their interreflected sun from the same passes
+        plan.sun_bins.append(chunks(f"annual;sun;{az:.6f},{el:.6f}", list(sensors) + plan.eyes, [a.sun_group], sim, sun=(az, el)))
     if views:
-        plan.eyes = [eye_sensor(v) for v in views]
         gsim = {**sim, "component": "indirect"}
         if gsim["method"] in ("light", "bsdf", "mis"):  # direct-light estimators read no reflected light
             gsim["method"] = "path"

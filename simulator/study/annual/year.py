@@ -302,6 +302,8 @@ class StateYear:
     g: np.ndarray | None = None  #: (H, V) Σ L²ω/P²
     index: np.ndarray | None = None  #: (H, V) DGP (or DGPs)
     index_se: np.ndarray | None = None
+    eye_sun: np.ndarray | None = None  #: (H, V) traced bins: the eyes' interreflected sun
+    eye_sun_var: np.ndarray | None = None
 
 
 def _cells_luminance(sh, plan, d, q_patch, outer_sun, stderr: bool = True):
@@ -333,15 +335,22 @@ def _state_year(plan, study, results, sensors, lamp_groups, d, q, q_patch, l_dom
     if sun_bin is not None:
         co.sun = np.zeros((n_s, len(plan.sun_bins)))
         co.sun_var = np.zeros_like(co.sun)
+        eye_sun = np.zeros((len(plan.eyes), len(plan.sun_bins)))
+        eye_sun_var = np.zeros_like(eye_sun)
         for b, lst in enumerate(plan.sun_bins):
             for s_ in lst:
                 gr = readings_of(results[s_.id])
                 ids = np.asarray(s_.sensor_ids)
-                co.sun[ids, b] = gr.mean[0, :, 1]
-                co.sun_var[ids, b] = gr.stderr[0, :, 1] ** 2
+                room = ids < n_s  # the glare views' eyes follow the candidates
+                co.sun[ids[room], b] = gr.mean[0, room, 1]
+                co.sun_var[ids[room], b] = gr.stderr[0, room, 1] ** 2
+                eye_sun[ids[~room] - n_s, b] = gr.mean[0, ~room, 1]
+                eye_sun_var[ids[~room] - n_s, b] = gr.stderr[0, ~room, 1] ** 2
         # the passes trace the whole sun; its exact direct part at the bin's own sun comes off (it is added per hour)
         bin_dirs = np.stack([sun_direction(az, el) for az, el in bin_suns])
         co.sun -= direct_sun(sensors, st.scene, bin_dirs, np.full(len(bin_suns), e_auth)).T
+        if plan.eyes:
+            eye_sun -= direct_sun(plan.eyes, st.scene, bin_dirs, np.full(len(bin_suns), e_auth)).T
     c_sun = time.process_time()
     sun = direct_sun(sensors, st.scene, skies.sun_dir, skies.dni_lx)
     timing["sun_shadow_rays"] = timing.get("sun_shadow_rays", 0.0) + time.process_time() - c_sun
@@ -376,8 +385,15 @@ def _state_year(plan, study, results, sensors, lamp_groups, d, q, q_patch, l_dom
             cell_base.append(base_slot)
             base_slot += dd.n_cells
         lum = np.concatenate([d * l_dome, lum_c], axis=1)
-        xe = np.concatenate([d + q_patch, lum_c / plan.l_auth if n_c else lum_c], axis=1)
+        traced = sun_bin is not None  # the eyes' interreflected sun from the traced bins, else from the patches
+        xe = np.concatenate([d + (q if traced else q_patch), lum_c / plan.l_auth if n_c else lum_c], axis=1)
         n_h, n_v = len(d), len(views)
+        if traced:
+            on = sun_bin >= 0
+            y.eye_sun = np.zeros((n_h, n_v))
+            y.eye_sun_var = np.zeros((n_h, n_v))
+            y.eye_sun[on] = eye_sun[:, sun_bin[on]].T * sun_scale[on, None]
+            y.eye_sun_var[on] = eye_sun_var[:, sun_bin[on]].T * sun_scale[on, None] ** 2
         y.ev, y.ev_se, y.g = np.zeros((n_h, n_v)), np.zeros((n_h, n_v)), np.zeros((n_h, n_v))
         y.index, y.index_se = np.zeros((n_h, n_v)), np.zeros((n_h, n_v))
         for v, view in enumerate(views):
@@ -385,8 +401,8 @@ def _state_year(plan, study, results, sensors, lamp_groups, d, q, q_patch, l_dom
             su = sun_terms(vs, rs, skies.sun_dir, skies.dni_lx)
             y.views.append(vs)
             y.suns.append(su)
-            y.ev[:, v] = lum @ vs.a + xe @ eye_m[v] + su.ev
-            y.ev_se[:, v] = np.sqrt(np.maximum(np.sum((xe @ eye_c[v]) * xe, axis=1), 0.0))
+            y.ev[:, v] = lum @ vs.a + xe @ eye_m[v] + su.ev + (y.eye_sun[:, v] if traced else 0.0)
+            y.ev_se[:, v] = np.sqrt(np.maximum(np.sum((xe @ eye_c[v]) * xe, axis=1) + (y.eye_sun_var[:, v] if traced else 0.0), 0.0))
             y.g[:, v] = glare_term(vs, lum, su)
         _index_of(y, views, study.annual.glare_index)
         timing["views"] = timing.get("views", 0.0) + time.process_time() - c_view
@@ -430,8 +446,11 @@ def _replicate_state(y: StateYear, plan, rc: Coefficients, roots: dict, rng, d, 
         return e_r, None
     eye = _redraw(sh.eye, roots["eye"], rng)
     lum = np.concatenate([d * l_dome, lum_c], axis=1)
-    xe = np.concatenate([d + q_patch, lum_c / plan.l_auth if lum_c.shape[1] else lum_c], axis=1)
+    traced = y.eye_sun is not None
+    xe = np.concatenate([d + (q if traced else q_patch), lum_c / plan.l_auth if lum_c.shape[1] else lum_c], axis=1)
     ev = np.stack([lum @ vs.a + xe @ eye[v] + su.ev for v, (vs, su) in enumerate(zip(y.views, y.suns))], axis=1)
+    if traced:
+        ev = ev + y.eye_sun + np.sqrt(y.eye_sun_var) * rng.standard_normal(ev.shape)
     return e_r, _index_of(y, views, which, ev)
 
 
