@@ -454,18 +454,25 @@ def test_shading_needs_an_annual_table(tmp_path):
         load_study(p)
 
 
-def test_a_view_with_a_relative_threshold_is_refused_for_a_year(tmp_path):
-    """evalglare's -b 5 (five times the task luminance) needs the hour's picture: one line naming the view."""
+def test_a_view_with_a_relative_threshold_is_left_out_of_the_year_and_a_glare_rule_on_it_refused(tmp_path):
+    """evalglare's -b 5 (five times the task luminance) needs the hour's picture: the year reads the other view
+    and says so in a warning naming the view; a glare rule judging that view is a one-line error naming the key."""
     from simulator.study.annual.year import run_annual
 
     layer = (ROOT / "stages" / "office_shading.usda").read_text().replace(
         'string probesim:sensor:name = "desk_3"', 'string probesim:sensor:name = "desk_3"\n            string probesim:sensor:evalglare = "-b 5"')
     layer = layer.replace("@./office.usda@", "@" + (ROOT / "stages" / "office.usda").as_posix() + "@")
     (tmp_path / "v.usda").write_text(layer)
-    study, p = _write(tmp_path, tmp_path / "v.usda")
+    study, p = _write(tmp_path, tmp_path / "v.usda", '[shading]\nvariant_set = "blinds"\nstates = ["up", "down"]\nrule = "glare"\n'
+                      'views = ["desk_3"]\n')  # fmt: skip
     with pytest.raises(UserError) as e:
         run_annual(study, p, tmp_path / "out", log=lambda m: None)
-    assert "glare view desk_3" in str(e.value) and "probesim:sensor:evalglare: -b 5" in str(e.value) and "\n" not in str(e.value)
+    assert "shading.views[0]: glare view 'desk_3' has a relative evalglare -b" in str(e.value) and "\n" not in str(e.value)
+    study, p = _write(tmp_path, tmp_path / "v.usda", name="plain.toml")
+    said = []
+    res = run_annual(study, p, tmp_path / "plain", log=said.append)
+    assert res.glare.views == ["desk_1"]
+    assert any("glare view desk_3" in m and "-b 5" in m for m in said) and any("glare view desk_3" in n for n in res.notes)
 
 
 def test_the_report_shows_the_shades_and_the_glare_year(year):

@@ -107,7 +107,14 @@ Schema
     ground_reflectance = 0.2           # the dome below the horizon
     occupied_h = [8, 18]               # LM-83 hours, local standard time
     # da_lx, ase_lx, ase_hours, udi_lx, en17037_lx, step_h, replicates, sun_patches;
-    # sun_indirect = "traced" with sun_group (the DistantLight's group) and sun_bin_deg
+    # sun_indirect = "traced" with sun_group (the DistantLight's group) and sun_bin_deg;
+    # glare_index = "dgp" (or "dgps") at the stage's glare views, glare_limit = 0.40
+
+    [shading]                          # operable shading (simulator.study.annual.shading)
+    variant_set = "blinds"             # the stage's variant set of the window's states
+    states = ["up", "down"]            # its variants, least shaded first; each traced once
+    rule = "lm83"                      # lm83 (share, zones) | glare (dgp_limit, views) | schedule
+    diffusers = { "/Office/Blinds/Shade" = 0.10 }   # flat shade prims: diffuse transmittance
 
     [[control]]                        # photosensor control (simulator.study.annual.control)
     zone = "window_zone"

@@ -44,7 +44,7 @@ pixels fall apart in an hour (two bright parts of one window with darker sky
 between) stays one source; the sun's interreflected light comes from the
 patches around it (as for every annual reading with ``sun_indirect =
 "patches"``); a relative threshold (``-b`` ≤ 100, a multiple of the task or
-mean luminance) needs the picture and is refused.
+mean luminance) needs the picture: such a view is left out of the year, with a warning.
 
 DGPs (``[annual] glare_index = "dgps"``) is 6.22·10⁻⁵·E_v + 0.184 from the
 same E_v. Figures of a year (:func:`glare_metrics`): glare autonomy (the
@@ -78,7 +78,7 @@ from simulator.scene.model import Sensor, SensorKind
 from simulator.study.inputs import sky_patches as SP
 
 __all__ = ["GRID", "SUN_HALF_ANGLE_RAD", "DGP_CLASSES", "EN17037_LEVELS", "ViewSky", "eye_sensor", "view_sky", "sun_terms",
-           "glare_term", "dgp_hourly", "dgps_hourly", "glare_metrics", "GLARE_METRICS", "check_views", "hour_scene", "full_view"]
+           "glare_term", "dgp_hourly", "dgps_hourly", "glare_metrics", "GLARE_METRICS", "annual_views", "hour_scene", "full_view"]
 
 #: the half map of the directly seen sky and shades: width, height (0.7° pixels)
 GRID = (256, 256)
@@ -143,14 +143,19 @@ def eye_sensor(view: Sensor) -> Sensor:
                   normal=n / np.linalg.norm(n), source=view.source)  # fmt: skip
 
 
-def check_views(views: list, label: str) -> None:
-    """Annual glare needs each view's threshold absolute: one line naming the view otherwise."""
+def annual_views(views: list) -> tuple[list, list[str]]:
+    """The glare views a year can read, and a warning for each it cannot: a relative threshold (``-b`` ≤ 100, a
+    multiple of the task or mean luminance) needs the hour's picture."""
+    keep, notes = [], []
     for v in views:
         s = v.glare if v.glare is not None else GlareSettings()
         if s.threshold <= 100.0:
-            raise UserError(f"{label}: glare view {v.name} ({v.source}): probesim:sensor:evalglare: -b {s.threshold:g} is a "
-                            "multiple of the task or mean luminance, which a year without pictures cannot read: give an "
-                            "absolute threshold (above 100 cd/m², 2000 by default) for annual glare")  # fmt: skip
+            notes.append(f"glare view {v.name} ({v.source}) is not read over the year: its probesim:sensor:evalglare -b "
+                         f"{s.threshold:g} is a multiple of the task or mean luminance, which needs the hour's picture "
+                         "(give an absolute threshold, above 100 cd/m², for annual glare)")  # fmt: skip
+        else:
+            keep.append(v)
+    return keep, notes
 
 
 def view_sky(view: Sensor, rs, diffusers: list, cell_base: list[int], n_slots: int) -> ViewSky:

@@ -47,6 +47,12 @@ def _f(x) -> str:
     return "nan" if math.isnan(x) else f"{x:.6g}"
 
 
+#: the definitions of a year with [shading] where they differ from a plain year's (METRICS)
+SHADED_DEFINITIONS = {
+    "sDA": "share of sensors with DA >= 50% (LM-83-12, with operable shading: the shades as the rule operated them)",
+    "ASE": "share of sensors with direct sun >= ase_lx for more than ase_hours occupied hours (shades in their first state)",
+}
+
 #: rows of annual_metrics.csv beyond a plain year's: key -> (unit, definition)
 EXTRA_METRICS = {
     "DA_open": ("%", "DA with the shades in their first state all year (no operation)"),
@@ -95,9 +101,12 @@ def metrics_csv(res) -> str:
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(("zone", "metric", "value", "stderr", "unit", "definition"))
+    shaded = getattr(res, "shading", None) is not None
     for z, m in res.metrics.items():
         for k, (unit, what) in METRICS.items():
             v, se = m[k]
+            if shaded and k in SHADED_DEFINITIONS:
+                what = SHADED_DEFINITIONS[k]
             w.writerow((z, k, _f(v), _f(se), unit, what))
     for (z, k), (v, se) in getattr(res, "extra", {}).items():
         unit, what = extra_definition(k)

@@ -3,8 +3,8 @@
 A ray from ``o`` along unit ``d`` meets every triangle on its way (Möller and
 Trumbore, float64, all hits with t > :data:`T_MIN_M`). Each face it meets
 passes a share of the light, as the kernels' shadow rays take it
-(:func:`simulator.kernels.surfaces.pass_factor`; docs/REFERENCES.md §Thin
-slab, §Coverage):
+(:func:`simulator.kernels.surfaces.pass_factor`;
+docs/REFERENCES.md §Thin slab, §Coverage):
 
 - a matte face: 0 (it is *opaque*: the ray ends there);
 - a surface of coverage c that is not a pane (presence, a threshold): 1 − c;

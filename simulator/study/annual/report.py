@@ -315,7 +315,7 @@ def glare_part(ares) -> str:
     head = (f"<h3>Glare over the year</h3><p>{idx} at each glare view every occupied hour, from daylight coefficients "
             "(the imageless method: the sky, the ground, the shades and the sun seen directly are the sources; every "
             "surface seen adds to the vertical illuminance at the eye but is never a source). Glare autonomy: the "
-            f"share of occupied hours with {idx} below {a.glare_limit:g}. EN 17037 protection from glare: the highest "
+            f"share of occupied hours with {idx} below {a.glare_limit:.2f}. EN 17037 protection from glare: the highest "
             f"level (high 0.35, medium 0.40, minimum 0.45) whose {idx} is exceeded in at most 5% of the occupied hours.</p>")  # fmt: skip
     rows = []
     for v in g.views:

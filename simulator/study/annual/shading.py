@@ -27,6 +27,7 @@ satisfies it, or the last when none does:
     in the first state.
 
 The rule is applied every analysed hour; the metrics read the occupied ones.
+Sources: docs/REFERENCES.md §Operable shading.
 """
 
 from __future__ import annotations

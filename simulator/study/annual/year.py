@@ -304,6 +304,8 @@ class StateYear:
     index_se: np.ndarray | None = None
     eye_sun: np.ndarray | None = None  #: (H, V) traced bins: the eyes' interreflected sun
     eye_sun_var: np.ndarray | None = None
+    eye_bins: np.ndarray | None = None  #: (V, B) traced bins: the eyes' interreflected sun per bin, for the authored sun
+    eye_bins_var: np.ndarray | None = None
 
 
 def _cells_luminance(sh, plan, d, q_patch, outer_sun, stderr: bool = True):
@@ -389,11 +391,8 @@ def _state_year(plan, study, results, sensors, lamp_groups, d, q, q_patch, l_dom
         xe = np.concatenate([d + (q if traced else q_patch), lum_c / plan.l_auth if n_c else lum_c], axis=1)
         n_h, n_v = len(d), len(views)
         if traced:
-            on = sun_bin >= 0
-            y.eye_sun = np.zeros((n_h, n_v))
-            y.eye_sun_var = np.zeros((n_h, n_v))
-            y.eye_sun[on] = eye_sun[:, sun_bin[on]].T * sun_scale[on, None]
-            y.eye_sun_var[on] = eye_sun_var[:, sun_bin[on]].T * sun_scale[on, None] ** 2
+            y.eye_bins, y.eye_bins_var = eye_sun, eye_sun_var
+            y.eye_sun, y.eye_sun_var = _bins_hourly(eye_sun, sun_bin, sun_scale), _bins_hourly(eye_sun_var, sun_bin, sun_scale**2)
         y.ev, y.ev_se, y.g = np.zeros((n_h, n_v)), np.zeros((n_h, n_v)), np.zeros((n_h, n_v))
         y.index, y.index_se = np.zeros((n_h, n_v)), np.zeros((n_h, n_v))
         for v, view in enumerate(views):
@@ -407,6 +406,14 @@ def _state_year(plan, study, results, sensors, lamp_groups, d, q, q_patch, l_dom
         _index_of(y, views, study.annual.glare_index)
         timing["views"] = timing.get("views", 0.0) + time.process_time() - c_view
     return y
+
+
+def _bins_hourly(per_bin: np.ndarray, sun_bin: np.ndarray, scale: np.ndarray) -> np.ndarray:
+    """(V, B) values per sun bin → (H, V) per hour: the hour's bin × its scale (0 where the sun is down)."""
+    out = np.zeros((len(sun_bin), per_bin.shape[0]))
+    on = sun_bin >= 0
+    out[on] = per_bin[:, sun_bin[on]].T * scale[on, None]
+    return out
 
 
 def _index_of(y: StateYear, views: list, which: str, ev: np.ndarray | None = None):
@@ -449,8 +456,9 @@ def _replicate_state(y: StateYear, plan, rc: Coefficients, roots: dict, rng, d, 
     traced = y.eye_sun is not None
     xe = np.concatenate([d + (q if traced else q_patch), lum_c / plan.l_auth if lum_c.shape[1] else lum_c], axis=1)
     ev = np.stack([lum @ vs.a + xe @ eye[v] + su.ev for v, (vs, su) in enumerate(zip(y.views, y.suns))], axis=1)
-    if traced:
-        ev = ev + y.eye_sun + np.sqrt(y.eye_sun_var) * rng.standard_normal(ev.shape)
+    if traced:  # each bin's traced sun redrawn once for the whole year (its hours share it)
+        bins = y.eye_bins + np.sqrt(np.maximum(y.eye_bins_var, 0.0)) * rng.standard_normal(y.eye_bins.shape)
+        ev = ev + _bins_hourly(bins, sun_bin, sun_scale)
     return e_r, _index_of(y, views, which, ev)
 
 
@@ -461,7 +469,7 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
     from simulator.scene.usd import load_stage
     from simulator.study.annual import control as CT
     from simulator.study.annual import shading as SH
-    from simulator.study.annual.glare import GLARE_METRICS, check_views, glare_metrics
+    from simulator.study.annual.glare import GLARE_METRICS, annual_views, glare_metrics
     from simulator.study.annual.plan import plan_state
     from simulator.study.annual.rays import textured_faces
     from simulator.study.figures.glare_views import views_of
@@ -509,17 +517,23 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
     # shading states (each its own stage) and the glare views read every hour
     sh = study.shading
     states = SH.shading_states(study, stage, base, label)
-    views = views_of(base)
-    check_views(views, label)
+    all_views = views_of(base)
+    views, skipped = annual_views(all_views)
+    for w in skipped:
+        log(f"warning: {w}")
+    notes += [f"warning: {w}" for w in skipped]
     judged = list(range(len(views)))
     if sh is not None and sh.rule == "glare":
         if not views:
             raise UserError(f"{label}: shading.rule: \"glare\" needs glare views on the stage (prims with "
-                            "probesim:sensor:kind = \"glare\"); it has none")  # fmt: skip
-        names = [v.name for v in views]
+                            "probesim:sensor:kind = \"glare\" and an absolute evalglare -b); it has none")  # fmt: skip
+        names, every = [v.name for v in views], [v.name for v in all_views]
         for j, n in enumerate(sh.views):
+            if n in every and n not in names:
+                raise UserError(f"{label}: shading.views[{j}]: glare view {n!r} has a relative evalglare -b (a multiple "
+                                "of the task or mean luminance), which a year without pictures cannot read")  # fmt: skip
             if n not in names:
-                raise UserError(f"{label}: shading.views[{j}]: no glare view named {n!r} on the stage (it has: {', '.join(names)})")
+                raise UserError(f"{label}: shading.views[{j}]: no glare view named {n!r} on the stage (it has: {', '.join(every)})")
         judged = [names.index(n) for n in sh.views] if sh.views else judged
     if any(textured_faces(st.scene) for st in states):
         notes.append("the host's rays (direct sun, the views' sky) read an opacity texture at its mean coverage")
