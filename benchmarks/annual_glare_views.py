@@ -1,6 +1,6 @@
 """The imageless annual glare against the glare view's full trace of the same hours.
 
-    python benchmarks/annual_glare_views.py [STUDY.toml] [--per-kind 2] [--seed 7] [--out DIR]
+    python benchmarks/annual_glare_views.py [STUDY.toml] [--per-kind 2] [--seed 7] [--out DIR] [--traced]
 
 Runs (or resumes, in ``--out``) the annual study (default
 ``configs/studies/office_annual_shading.toml``), picks occupied hours of
@@ -13,6 +13,10 @@ luminance of the hour; :func:`simulator.study.annual.glare.full_view`), to
 DGP ± 0.005. Prints per hour the annual E_v and DGP against the full
 view's, the full view's sources, and per kind the largest difference. The
 figures the docs quote (docs/studies.md, "Annual glare") are its output.
+
+``--traced``: the same study with ``sun_indirect = "traced"`` (a group
+``sun`` holding ``--sun-light``, the stage's DistantLight, added), so the
+eyes' interreflected sun comes from the traced sun bins.
 """
 
 from __future__ import annotations
@@ -51,12 +55,28 @@ def pick_hours(res, view: int, per_kind: int) -> list[tuple[str, int]]:
     return out
 
 
+def traced_copy(path: Path, sun_light: str, folder: Path) -> Path:
+    """A copy of the study file in ``folder`` with ``sun_indirect = "traced"`` and a ``sun`` group, its paths absolute."""
+    import re
+
+    text = path.read_text()
+    text = re.sub(r'^(stage|weather) = "(?!/)([^"]+)"', lambda m: f'{m.group(1)} = "{(path.parent / m.group(2)).resolve().as_posix()}"',
+                  text, flags=re.M)  # fmt: skip
+    text = text.replace("[annual]\n", '[annual]\nsun_indirect = "traced"\nsun_group = "sun"\n', 1)
+    text = text.replace("[[zone]]\n", f'[[group]]\nname = "sun"\nlights = ["{sun_light}"]\n\n[[zone]]\n', 1)
+    out = folder / f"{path.stem}_traced.toml"
+    out.write_text(text)
+    return out
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("study", nargs="?", default=str(ROOT / "configs" / "studies" / "office_annual_shading.toml"))
     ap.add_argument("--per-kind", type=int, default=2)
     ap.add_argument("--seed", type=int, default=7)
     ap.add_argument("--out", default=None, help="the study's output folder (resumed); default: a folder under the system's temp")
+    ap.add_argument("--traced", action="store_true", help="sun_indirect = \"traced\"")
+    ap.add_argument("--sun-light", default="/Office/Sun", help="--traced: the stage's DistantLight")
     a = ap.parse_args(argv)
     import tempfile
 
@@ -64,8 +84,11 @@ def main(argv=None) -> int:
     from simulator.study.annual.year import run_annual
     from simulator.study.schema import load_study
 
-    study, p = load_study(a.study)
-    out = Path(a.out) if a.out else Path(tempfile.gettempdir()) / f"probesim-{p.stem}-glare-check"
+    path = Path(a.study).resolve()
+    if a.traced:
+        path = traced_copy(path, a.sun_light, Path(tempfile.mkdtemp(prefix="probesim-traced-")))
+    study, p = load_study(path)
+    out = Path(a.out) if a.out else Path(tempfile.gettempdir()) / f"probesim-{p.stem}{'-traced' if a.traced else ''}-glare-check"
     t0 = time.process_time()
     res = run_annual(study, p, out, log=lambda m: print(m, file=sys.stderr))
     g = res.glare

@@ -341,6 +341,27 @@ def test_an_annual_glare_year_adds_one_trace_per_state(year, tmp_path):
     without = {s: sum(t.values()) for s, t in bare.traces.items()}
     assert with_views == {s: n + 1 for s, n in without.items()}
     assert all(t["glare"] == 1 for t in rec["traces"].values())
+    # that year's schedule: down on the June day at 12:30 and 13:30, up every other hour
+    c = bare.weather.centre[bare.rows]
+    want = (np.asarray(c.month) == 6) & (np.asarray(c.hour) >= 12) & (np.asarray(c.hour) < 14)
+    assert want.sum() == 2
+    np.testing.assert_array_equal(bare.state, want.astype(int))
+
+
+def test_the_glare_rule_closes_the_blind_exactly_when_a_view_sees_disturbing_glare(tmp_path):
+    """rule = "glare" judged at desk_1 (its window on its right, the low sun in sight some afternoons): the blind
+    is down in the hours whose DGP at desk_1 with it up exceeds 0.40, and only then; desk_3, not judged, may keep
+    its glare."""
+    from simulator.study.annual.year import run_annual
+
+    shading = ('[shading]\nvariant_set = "blinds"\nstates = ["up", "down"]\nrule = "glare"\nviews = ["desk_1"]\n'
+               'diffusers = { "/Office/Blinds/Shade" = 0.10 }\n')  # fmt: skip
+    study, p = _write(tmp_path, ROOT / "stages" / "office_shading.usda", shading)
+    res = run_annual(study, p, tmp_path / "out", log=lambda m: None)
+    up = res.detail["years"][0].index[:, res.glare.views.index("desk_1")]
+    np.testing.assert_array_equal(res.state, (up > 0.40).astype(int))
+    assert 0 < res.state.sum() < len(res.state)
+    assert np.all(res.glare.index[:, 0] <= np.maximum(0.40, res.detail["years"][1].index[:, 0]))
 
 
 def test_annual_dgp_of_an_hour_matches_the_views_full_trace(year):
@@ -371,8 +392,9 @@ def test_annual_dgp_of_an_hour_matches_the_views_full_trace(year):
 def test_blinds_that_never_close_leave_every_figure_as_it_was(tmp_path):
     """The office without [shading], against the same stage with a blind whose schedule never fires (its only
     hours, 23:30, are never analysed) and with one state: annual_hourly*.csv are the same bytes but for the
-    state column at the end, annual_control.csv the same bytes, annual_metrics.csv the same lines first, then
-    its own rows (sDA and DA without operation equal to the figures, the hours in each state)."""
+    state column at the end, annual_control.csv the same bytes, annual_metrics.csv the same figures (every
+    column's text but sDA's and ASE's definitions, which say the shades were operated, or up), then its own
+    rows (sDA and DA without operation equal to the figures, the hours in each state)."""
     from simulator.study.annual.outputs import write_annual_outputs
     from simulator.study.annual.year import run_annual
 
@@ -396,8 +418,12 @@ def test_blinds_that_never_close_leave_every_figure_as_it_was(tmp_path):
             assert lines[0].endswith(",state_blinds") and all(x.endswith(",up") for x in lines[1:])
             assert "\n".join(x.rsplit(",", 1)[0] for x in lines) + "\n" == base[f]
         assert got["annual_control.csv"] == base["annual_control.csv"]
-        assert got["annual_metrics.csv"].startswith(base["annual_metrics.csv"])
-        extra = list(csv.reader(io.StringIO(got["annual_metrics.csv"][len(base["annual_metrics.csv"]):])))
+        rows, plain_rows = (list(csv.reader(io.StringIO(t))) for t in (got["annual_metrics.csv"], base["annual_metrics.csv"]))
+        # every figure the same text; only sDA's and ASE's definitions say that the shades were operated, or up
+        assert [r[:5] for r in rows[: len(plain_rows)]] == [r[:5] for r in plain_rows]
+        assert [r[5] for r in rows[: len(plain_rows)] if r[1] not in ("sDA", "ASE")] == [
+            r[5] for r in plain_rows if r[1] not in ("sDA", "ASE")]
+        extra = rows[len(plain_rows):]
         byk = {(r[0], r[1]): r[2] for r in extra}
         plain = {(r[0], r[1]): r[2] for r in csv.reader(io.StringIO(base["annual_metrics.csv"]))}
         assert byk[("room", "sDA_open")] == plain[("room", "sDA")] and byk[("room", "DA_open")] == plain[("room", "DA")]
@@ -409,13 +435,15 @@ def test_blinds_that_never_close_leave_every_figure_as_it_was(tmp_path):
 
 @pytest.mark.parametrize("shading, message", [
     ('states = ["up", "dwn"]', "shading.states[1]: "),
+    ('states = ["up", "down"]', "shading.variant_set: "),
     ('states = ["up", "down"]\nrule = "glare"\nviews = ["desk_2"]', "shading.views[0]: no glare view named 'desk_2'"),
     ('states = ["up", "down"]\ndiffusers = { "/Office/Blinds/Shad" = 0.1 }', "shading.diffusers./Office/Blinds/Shad: no prim"),
 ])  # fmt: skip
 def test_a_missing_state_view_or_shade_is_one_line_naming_its_key(tmp_path, shading, message):
     from simulator.study.annual.year import run_annual
 
-    study, p = _write(tmp_path, ROOT / "stages" / "office_shading.usda", '[shading]\nvariant_set = "blinds"\n' + shading)
+    vset = "blind" if "variant_set" in message else "blinds"
+    study, p = _write(tmp_path, ROOT / "stages" / "office_shading.usda", f'[shading]\nvariant_set = "{vset}"\n' + shading)
     with pytest.raises(UserError) as e:
         run_annual(study, p, tmp_path / "out", log=lambda m: None)
     assert message in str(e.value) and "\n" not in str(e.value)

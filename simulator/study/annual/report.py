@@ -142,7 +142,8 @@ def metric_names(cfg, shaded: bool = False) -> dict[str, tuple[str, str]]:
         "sDA": (f"sDA{da}/50%", f"Spatial daylight autonomy: the share of the zone's points that get at least {da} lx from "
                                 f"daylight for at least half of the occupied hours (IES LM-83-12; {blinds})."),
         "ASE": (f"ASE{ase}/{ah}h", f"Annual sunlight exposure: the share of points that get more than {ase} lx of direct "
-                                   f"sunlight for more than {ah} occupied hours a year (IES LM-83-12, shades up; exact, no error)."),
+                                   f"sunlight for more than {ah} occupied hours a year (IES LM-83-12{', shades up' if shaded else ''}; "
+                                   "exact, no error)."),
         "UDI_fell_short": (f"UDI < {lo} lx", f"Useful daylight illuminance, fell short: the share of occupied hours below "
                                              f"{lo} lx, averaged over the points."),
         "UDI_useful": (f"UDI {lo}–{hi} lx", f"Useful daylight illuminance: the share of occupied hours from {lo} to {hi} lx, "

@@ -68,7 +68,8 @@ def shading_states(study, stage: Path, base, label: str) -> list[ShadeState]:
         try:
             scene = load_stage(stage, light_units=study.light_units, radiometric_spectrum="E", variants=variants)
         except UserError as exc:
-            raise UserError(f"{label}: shading.states[{k}]: {exc}") from None
+            key = "shading.variant_set" if "no prim has a variant set" in str(exc) else f"shading.states[{k}]"
+            raise UserError(f"{label}: {key}: {exc}") from None
         out.append(ShadeState(name, variants, "" if k == 0 else f";state={name}", scene, diffusers_of(scene, sh.diffusers, label)))
     for path in sh.diffusers:
         if not any(d.prim == path for s in out for d in s.diffusers):
