@@ -134,7 +134,7 @@ def test_straddling_the_horizon_and_a_straddling_wall():
 
 def test_lambert_pieces_matches_closed_form():
     """The vectorised contour sum of convex pieces above the horizon equals the one-receiver
-    closed form (``polygon_irradiance``, docs/REFERENCES.md §Lambert's formula) of the same polygon."""
+    closed form (``polygon_irradiance``, docs/REFERENCES.md §Lambert's polygon formula) of the same polygon."""
     rng = np.random.default_rng(3)
     P = np.c_[rng.uniform(-2, 2, (40, 2)), rng.uniform(0.0, 1.5, 40)]
     N = np.c_[rng.normal(size=(40, 2)) * 0.3, np.ones(40)]

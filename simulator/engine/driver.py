@@ -936,7 +936,7 @@ class Engine:
         mask[:, : cov.shape[1]][cov] = 2
         self.exact_seconds = t_exact
         try:
-            choice = self._hybrid_choice(base, irr, kw, full, mask, t_exact)
+            choice = self._hybrid_choice(base, irr, kw, full, mask, cov, t_exact)
             if not choice["computed"]:  # the pilot finds that sampling it all is cheaper: the exact part is dropped
                 r = self.run(base, sensor_ids=ids, **kw)
                 r.wall_s += t_exact
@@ -960,7 +960,7 @@ class Engine:
         return r
 
     def _hybrid_choice(self, base: str, ids: np.ndarray, kw: dict, plain: np.ndarray, hybrid: np.ndarray,
-                       t_exact: float) -> dict:  # fmt: skip
+                       covered: np.ndarray, t_exact: float) -> dict:  # fmt: skip
         """Whether computing the direct light pays for this run, from a pilot (``hybrid_pilot`` keeps it).
 
         On up to :data:`HYBRID_PILOT_SENSORS` of the sensors (evenly spread), :data:`SPLIT_PILOT_SAMPLES`
@@ -973,10 +973,13 @@ class Engine:
             sampled:   (V_d + V_i/K)·(c_d + K·c_i)
             computed:  (V_d' + V_i/K')·(c_d' + K'·c_i + x/n),
 
-        x the computed part's time in rays (its measured seconds over the pilot's seconds per ray)
-        per sensor and n the samples per sensor the run will draw (its ``samples``, or in an adaptive
-        run the pilot's need z²·V/rel² where larger). The exact part is kept where it costs less."""
+        x the computed part's time in rays per sensor (the planner's cost model of it,
+        ``plan.exact_rule.exact_costs``, over ``RAY_S``: counts, not seconds, so the choice is the same
+        at any thread count or load) and n the samples per sensor the run will draw (its
+        ``samples``, or in an adaptive run the pilot's need z²·V/rel² where larger). The exact part
+        is kept where it costs less."""
         from simulator.engine.scenario_split import neyman_split
+        from simulator.plan.exact_rule import RAY_S, exact_costs
 
         tb = time.perf_counter()
         seed, depth = int(kw["seed"]), int(kw["max_depth"])
@@ -1001,14 +1004,12 @@ class Engine:
                 self.set_light_mask(mask)
                 params.bounces, params.skip_direct = bounces, skip
                 self.rays_traced = 0
-                t = time.perf_counter()
                 _, cnt, mean, m2 = self._launch(params, pick, np.zeros(len(pick), np.int64), count)[:4]
-                parts.append((mean[:, 1], m2[:, 1] / np.maximum(cnt - 1, 1), max(self.rays_traced / max(1, int(cnt.sum())), 1.0),
-                              (time.perf_counter() - t) / max(self.rays_traced, 1)))  # fmt: skip
+                parts.append((mean[:, 1], m2[:, 1] / np.maximum(cnt - 1, 1), max(self.rays_traced / max(1, int(cnt.sum())), 1.0)))
         finally:
             self.rays_traced = rays_kept
             self.set_light_mask(plain)
-        (m_d, v_d, c_d, _), (_, v_h, c_h, _), (m_i, v_i, c_i, sec_ray) = parts
+        (m_d, v_d, c_d), (_, v_h, c_h), (m_i, v_i, c_i) = parts
         m = m_d + m_i
         ok = m > 0
         rv = [float((v[ok] / m[ok] ** 2).sum()) for v in (v_d, v_h, v_i)]
@@ -1020,7 +1021,8 @@ class Engine:
         if kw["rel_error"] is not None:  # adaptive: the samples the mean pilot sensor needs
             z = z_for_confidence(kw["confidence"])
             n = max(n, z * z * var_h / max(int(ok.sum()), 1) / kw["rel_error"] ** 2)
-        x = t_exact / max(len(ids), 1) / max(sec_ray, 1e-12)  # the exact part per sensor, in rays
+        recs = [np.flatnonzero(covered[i]).tolist() for i in ids]
+        x = float(exact_costs(self.scene, [self.sensors[i] for i in ids], recs)[0].sum()) / max(len(ids), 1) / RAY_S
         cost_p, cost_h = var_p * ray_p, var_h * (ray_h + x / max(n, 1.0))
         self.hybrid_pilot = {"computed": bool(cost_h < cost_p), "relvar_direct_sampled": rv[0] / max(int(ok.sum()), 1),
                              "relvar_direct_left": rv[1] / max(int(ok.sum()), 1),

@@ -27,7 +27,7 @@ import numpy as np
 from simulator.plan.bounds import _morton_order
 from simulator.scene.vectors import cross3
 
-__all__ = ["LEAF", "FANOUT", "OccluderIndex", "pyramid_planes", "cluster_planes", "cull_clustered", "test_pairs"]
+__all__ = ["LEAF", "FANOUT", "OccluderIndex", "pyramid_planes", "cluster_planes", "cull_clustered", "reaching_pairs"]
 
 #: triangles per leaf
 LEAF = 8
@@ -157,19 +157,25 @@ class OccluderIndex:
         return tj[order], self.original[tt[order]]
 
 
-def test_pairs(planes: np.ndarray, job: np.ndarray, tri: np.ndarray, tris: np.ndarray, scale: float) -> np.ndarray:
-    """Per (job, triangle) pair: whether the triangle is not wholly outside one of the job's planes
-    (the leaf test of :meth:`OccluderIndex.cull`), shape (Q,)."""
+def reaching_pairs(planes: np.ndarray, job: np.ndarray, tri: np.ndarray, tris: np.ndarray) -> np.ndarray:
+    """Per (job, triangle) pair: whether some of the triangle lies inside every one of the job's
+    planes (it reaches into the job's hull), shape (Q,): the triangle clipped by each plane in turn
+    (Sutherland–Hodgman) keeps at least three vertices. A triangle wholly outside the hull by more
+    than rounding is out whichever planes culled it first, so this answer is the same after a
+    per-receiver or a clustered cull."""
+    from simulator.engine.visible import clip_halfplane
+
     keep = np.zeros(len(job), bool)
     for a in range(0, len(job), _STEP):
         j, t = job[a : a + _STEP], tri[a : a + _STEP]
         pl = planes[j]
-        w, o = pl[..., :3], pl[..., 3]
-        lim = o - _MARGIN * scale * (1.0 + np.linalg.norm(w, axis=2))
-        out = np.ones(o.shape, bool)
-        for v in range(3):
-            out &= w[..., 0] * tris[t, v, 0, None] + w[..., 1] * tris[t, v, 1, None] + w[..., 2] * tris[t, v, 2, None] < lim
-        keep[a : a + _STEP] = ~np.any(out, axis=1)
+        V, cnt = tris[t], np.full(len(t), 3)
+        for k in range(pl.shape[1]):
+            w, o = pl[:, k, :3], pl[:, k, 3]
+            has = np.any(w != 0.0, axis=1)
+            s = np.einsum("qvd,qd->qv", V, w) - o[:, None]
+            V, cnt = clip_halfplane(V, cnt, np.where(has[:, None], s, 1.0))
+        keep[a : a + _STEP] = cnt >= 3
     return keep
 
 
@@ -238,8 +244,9 @@ def cull_clustered(index: OccluderIndex, P: np.ndarray, N: np.ndarray, poly: np.
                    cluster: int = 32) -> tuple[np.ndarray, np.ndarray]:  # fmt: skip
     """:meth:`OccluderIndex.cull` for many receivers (P, N) and one shared emitter polygon: receivers
     grouped along a Morton curve into clusters of ``cluster``, the hierarchy culled once per cluster
-    by :func:`cluster_planes`, then each receiver's own planes test the cluster's candidates.
-    Returns (receiver index, original triangle index) pairs sorted by receiver."""
+    by :func:`cluster_planes`, then each of the cluster's candidates clipped to each receiver's own
+    hull (:func:`reaching_pairs`). Returns (receiver index, original triangle index) pairs sorted by
+    receiver: the triangles that reach into its hull, the same whatever receivers it was grouped with."""
     from simulator.plan.bounds import _morton_order
 
     if not index.n or not len(P):
@@ -266,8 +273,7 @@ def cull_clustered(index: OccluderIndex, P: np.ndarray, N: np.ndarray, poly: np.
     within = np.arange(int(n_pairs.sum())) - np.repeat(np.cumsum(n_pairs) - n_pairs, n_pairs)
     tri = ct[np.repeat(first[rec_rows], n_pairs) + within]
     planes = pyramid_planes(P, N, np.broadcast_to(poly, (len(P), *poly.shape)), np.full(len(P), cnt))
-    tris = index.tris_by_original()
-    keep = test_pairs(planes, job, tri, tris, index.scale)
+    keep = reaching_pairs(planes, job, tri, index.tris_by_original())
     job, tri = job[keep], tri[keep]
     o = np.argsort(job, kind="stable")
     return job[o], tri[o]

@@ -112,6 +112,9 @@ def clip_halfplane(V: np.ndarray, cnt: np.ndarray, s: np.ndarray, lab: np.ndarra
     with np.errstate(divide="ignore", invalid="ignore"):
         t = np.where(cross, sa / (sa - s), 0.0)
     q = a + (V - a) * t[:, :, None]
+    # a vertex on the line is its own crossing, exactly (not within rounding of itself: an edge between
+    # two copies of a point is then of length 0, no line, rather than a line of any direction)
+    q = np.where((s == 0.0)[:, :, None], V, np.where((sa == 0.0)[:, :, None], a, q))
     pts = np.stack([q, V], axis=2).reshape(M, 2 * K, D)  # per edge: its crossing, then its end if inside
     keep = np.stack([cross, valid & inb], axis=2).reshape(M, 2 * K)
     n_out = keep.sum(axis=1)
@@ -206,13 +209,16 @@ def _side(V: np.ndarray, g: np.ndarray) -> np.ndarray:
 
 def _polygon_lines(V: np.ndarray, cnt: np.ndarray) -> np.ndarray:
     """The edge lines of convex counter-clockwise polygons ``V`` (M, K, 2) from their vertices,
-    implicit and normalised, inner side positive: (M, K, 3); zeros for an edge of zero length or
-    past the count (no line)."""
+    implicit and normalised, inner side positive: (M, K, 3); zeros (no line) past the count and for an
+    edge shorter than 10⁻⁹ of its polygon's size, whose direction rounding may have turned any way
+    (leaving a line out only enlarges the polygon its lines bound, by a sliver: what these lines
+    serve, telling a shadow that misses the emitter and sizing it, stays on the safe side)."""
     K = V.shape[1]
     nxt = (np.arange(K)[None, :] + 1) % np.maximum(cnt[:, None], 1)
     d = np.take_along_axis(V, nxt[:, :, None].repeat(2, axis=2), axis=1) - V
     n = np.linalg.norm(d, axis=2)
-    ok = (np.arange(K)[None, :] < cnt[:, None]) & (n > 0.0)
+    size = np.abs(V).max(axis=(1, 2))[:, None]
+    ok = (np.arange(K)[None, :] < cnt[:, None]) & (n > 1e-9 * size)
     a = np.stack([-d[..., 1], d[..., 0]], axis=2) / np.where(n > 0.0, n, 1.0)[:, :, None]  # left normal
     g = np.concatenate([a, -np.sum(a * V, axis=2, keepdims=True)], axis=2)
     return np.where(ok[:, :, None], g, 0.0)

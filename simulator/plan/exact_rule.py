@@ -41,7 +41,7 @@ import numpy as np
 from simulator.engine.exact import covered_records, record_polygons, transmitting
 from simulator.scene.model import Scene, Sensor, SensorKind
 
-__all__ = ["EXACT_JOB_S", "EXACT_OCCLUDER_S", "EXACT_MAX_S", "PATH_SAMPLE_S", "HYBRID_SHARE", "EMISSIVE",
+__all__ = ["EXACT_JOB_S", "EXACT_OCCLUDER_S", "EXACT_MAX_S", "PATH_SAMPLE_S", "HYBRID_SHARE", "RAY_S", "EMISSIVE",
            "exact_plan_refusal", "exact_plan_refusals", "exact_costs", "hybrid_records"]
 
 #: seconds of host time per (sensor, emitter polygon) with nothing in the way (one CPU core;
@@ -56,6 +56,10 @@ EXACT_MAX_S = 4e-3
 PATH_SAMPLE_S = 6e-6
 #: the share of a path-traced sensor's sampling time its computed direct light may cost
 HYBRID_SHARE = 0.25
+#: seconds per ray of a path sample (6.49 µs over 15.07 rays on the office, docs/DESIGN.md §Per-sample
+#: cost): the engine's pilot weighs the computed part, in this model's seconds, against rays counted
+#: (so its choice is the same at any thread count or load)
+RAY_S = 4.3e-7
 #: the name the plan gives the emissive triangles' light record
 EMISSIVE = "emissive surfaces"
 
