@@ -874,22 +874,20 @@ class Engine:
 
     def _run_analytic(self, sensor_ids: np.ndarray) -> EngineResult:
         """Closed-form readings (the caller has checked they apply): exact up
-        to float32 rounding, so the standard error is 0 and no samples are drawn."""
-        wp = warp()
+        to float32 rounding, so the standard error is 0 and no samples are drawn.
+        Where every sensor and light has a host closed form (:mod:`.analytic`)
+        they are read on the host in float64, and Warp is not imported."""
+        from simulator.engine.analytic import host_analytic
+
         n_s = len(self.sensors)
         t0 = time.perf_counter()
-        mean = np.zeros((n_s, 2))
-        with wp.ScopedDevice(self.device):
-            ids = wp.array(sensor_ids.astype(np.int32), dtype=wp.int32)
-            out = wp.empty(len(sensor_ids), dtype=wp.vec2d)
-            if len(sensor_ids):
-                KM.load([KM.analytic_module()], self.device)
-                wp.launch(self._K.analytic_kernel, dim=len(sensor_ids), inputs=[self._dev.rec, self._dev.sensors, ids], outputs=[out])
-                mean[sensor_ids] = out.numpy().astype(np.float64)
+        mean = host_analytic(self.scene, self.sensors, sensor_ids, self._light_mask)
+        if mean is None:
+            mean = self._kernel_analytic(sensor_ids)
         wall = time.perf_counter() - t0
         return EngineResult(
             method="analytic",
-            device=self.device,
+            device=self.device if self._device_scene is not None else "cpu",
             mean=mean,
             stderr=np.zeros((n_s, 2)),
             samples=np.zeros(n_s, np.int64),
@@ -899,6 +897,20 @@ class Engine:
             wall_s=wall,
             warnings=list(self.warnings),
         )
+
+    def _kernel_analytic(self, sensor_ids: np.ndarray) -> np.ndarray:
+        """The closed forms by the analytic kernel, (S, 2)."""
+        wp = warp()
+        n_s = len(self.sensors)
+        mean = np.zeros((n_s, 2))
+        with wp.ScopedDevice(self.device):
+            ids = wp.array(sensor_ids.astype(np.int32), dtype=wp.int32)
+            out = wp.empty(len(sensor_ids), dtype=wp.vec2d)
+            if len(sensor_ids):
+                KM.load([KM.analytic_module()], self.device)
+                wp.launch(self._K.analytic_kernel, dim=len(sensor_ids), inputs=[self._dev.rec, self._dev.sensors, ids], outputs=[out])
+                mean[sensor_ids] = out.numpy().astype(np.float64)
+        return mean
 
     def _run_hybrid(self, method: str, ids: np.ndarray, kw: dict) -> EngineResult:
         """``exact+path`` / ``exact+guided``: each irradiance sensor's direct light from the emitters
@@ -921,8 +933,8 @@ class Engine:
             r = self.run(base, sensor_ids=ids, **kw)
             r.method = method
             return r
+        n_rec = int(self._dev.rec.n_lights)  # the device scene (uploaded here if not yet) counts the records
         t0 = time.perf_counter()
-        n_rec = int(self._dev.rec.n_lights)
         kept = self._light_mask
         full = np.ones((n_s, n_rec), np.int32)
         if kept is not None:

@@ -169,13 +169,23 @@ def reaching_pairs(planes: np.ndarray, job: np.ndarray, tri: np.ndarray, tris: n
     for a in range(0, len(job), _STEP):
         j, t = job[a : a + _STEP], tri[a : a + _STEP]
         pl = planes[j]
-        V, cnt = tris[t], np.full(len(t), 3)
+        V = tris[t]
+        # first the cheap test: wholly outside one plane (by more than rounding) is out
+        out = np.zeros(len(t), bool)
+        for k in range(pl.shape[1]):
+            h = np.einsum("qvd,qd->qv", V, pl[:, k, :3]) - pl[:, k, 3:4]
+            out |= np.all(h < -_MARGIN * np.abs(pl[:, k, 3:4]) - 1e-300, axis=1)
+        pl, V, cnt, rows = pl[~out], V[~out], np.full(int((~out).sum()), 3), np.flatnonzero(~out)
         for k in range(pl.shape[1]):
             w, o = pl[:, k, :3], pl[:, k, 3]
             has = np.any(w != 0.0, axis=1)
             s = np.einsum("qvd,qd->qv", V, w) - o[:, None]
             V, cnt = clip_halfplane(V, cnt, np.where(has[:, None], s, 1.0))
-        keep[a : a + _STEP] = cnt >= 3
+            live = cnt >= 3
+            if not live.all():  # clipped away: out
+                pl, V, cnt, rows = pl[live], V[live], cnt[live], rows[live]
+            V = V[:, : max(int(cnt.max()) if len(cnt) else 1, 1)]
+        keep[a + rows] = cnt >= 3
     return keep
 
 

@@ -117,8 +117,9 @@ def clip_halfplane(V: np.ndarray, cnt: np.ndarray, s: np.ndarray, lab: np.ndarra
     q = np.where((s == 0.0)[:, :, None], V, np.where((sa == 0.0)[:, :, None], a, q))
     pts = np.stack([q, V], axis=2).reshape(M, 2 * K, D)  # per edge: its crossing, then its end if inside
     keep = np.stack([cross, valid & inb], axis=2).reshape(M, 2 * K)
-    n_out = keep.sum(axis=1)
     pos = np.cumsum(keep, axis=1) - 1
+    keep &= pos <= K  # a convex polygon cut by a line keeps at most K + 1 (rounding may find more)
+    n_out = keep.sum(axis=1)
     W = np.zeros((M, K + 1, D))
     r, c = np.nonzero(keep)
     W[r, pos[r, c]] = pts[r, c]
