@@ -243,8 +243,7 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True) -> RunOutp
     plain = [s for s in sensors if s.kind != SensorKind.PROBE]
     sim = cfg.simulation
     t_read = time.perf_counter()
-    plan = cached_plan(lambda: make_plan(scene, plain, sim.method, sim.component, sim.samples), token, plain, sim.method,
-                       sim.component, sim.samples)  # fmt: skip
+    plan = cached_plan(lambda: make_plan(scene, plain, sim.method, sim.component), token, plain, sim.method, sim.component)
     reason = "per-sensor plan (see plan)" if sim.method == "auto" else "as requested"
     probes_method = None
     if probes:  # no closed form for a probe: its method is chosen for the run

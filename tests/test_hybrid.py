@@ -261,7 +261,7 @@ def test_hybrid_leaves_a_pane_and_the_sun_sampled():
     cfg = load_config(ROOT / "configs" / "walkthrough.toml")
     scene = load_scene(cfg)
     sensors = [s for s in collect_sensors(cfg, scene) if s.kind == SensorKind.IRRADIANCE][::3]
-    plan = make_plan(scene, sensors, samples=1024)
+    plan = make_plan(scene, sensors)
     hyb = [sp for sp in plan.sensors if sp.method == "exact+guided"]
     assert hyb and all("pane or a cut-out" in sp.reason for sp in hyb if "/Room/Sky" not in sp.computed)
     out = []

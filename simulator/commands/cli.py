@@ -177,8 +177,7 @@ def _cmd_plan(args) -> int:
     for w in scene.warnings:
         print(f"warning: {w}", file=sys.stderr)
     sensors = [s for s in collect_sensors(cfg, scene) if s.kind.name != "PROBE"]
-    print(format_plan(make_plan(scene, sensors, cfg.simulation.method, cfg.simulation.component, cfg.simulation.samples),
-                      max_rows=10**6))
+    print(format_plan(make_plan(scene, sensors, cfg.simulation.method, cfg.simulation.component), max_rows=10**6))
     return 0
 
 

@@ -56,16 +56,15 @@ def _rules() -> tuple:
     from simulator.scene import emitters  # the plan's note on emitter pieces
 
     return (planner.AUTO_GUIDED, planner.LARGE_SOURCE_SR, exact_rule.EXACT_JOB_S, exact_rule.EXACT_OCCLUDER_S,
-            exact_rule.EXACT_MAX_S, exact_rule.PATH_SAMPLE_S, exact_rule.HYBRID_SHARE, emitters.PIECE_M,
+            exact_rule.EXACT_MAX_S, exact_rule.PATH_SAMPLE_S, exact_rule.HYBRID_MAX_S, emitters.PIECE_M,
             emitters.SPLIT_M, emitters.MAX_PIECES, emitters.MAX_SPLIT, emitters.PIECES_MIN_GAIN)
 
 
-def cached_plan(make, token: int | None, sensors, requested: str, component: str, samples: int = 1024):
-    """The plan ``make()`` returns, or the one kept for this scene token, sensors, method, component and
-    samples per sensor (the cost model of computed direct light weighs them)."""
+def cached_plan(make, token: int | None, sensors, requested: str, component: str):
+    """The plan ``make()`` returns, or the one kept for this scene token, sensors, method and component."""
     if token is None:
         return make()
-    key = (token, sensors_digest(sensors), requested, component, int(samples), _rules())
+    key = (token, sensors_digest(sensors), requested, component, _rules())
     plan = _entries.get(key)
     if plan is not None:
         return plan

@@ -14,7 +14,7 @@ n_occluders the triangles the hull of the sensor and the emitter may hold
 (:func:`simulator.engine.occluders.cull_clustered`, each sensor's own, so a
 sensor's plan does not depend on the others'; a dome's five half-cube faces
 count every triangle above the sensor's horizon), against the
-time the run spends sampling that sensor, ``samples`` × the time of one sample:
+time sampling spends on that sensor:
 
 - a **direct-only** irradiance sensor (nothing it sees reflects) whose every
   light can be computed gets ``exact`` where t_exact ≤ :data:`EXACT_MAX_S`
@@ -22,11 +22,13 @@ time the run spends sampling that sensor, ``samples`` × the time of one sample:
   samples a penumbra's reading takes to 1%; the run's ``samples`` do not
   enter, so such a sensor's plan is the same at any budget);
 - an irradiance sensor that needs **paths** gets the hybrid when the lights
-  computed for it cost at most :data:`HYBRID_SHARE` of ``samples`` ×
-  :data:`PATH_SAMPLE_S` (computed cheapest first; a light that would pass
-  the budget stays sampled): the computed lights leave every sample's
-  variance and rays at the sensor, and the reflected light is what is
-  sampled.
+  computed for it cost at most :data:`HYBRID_MAX_S`, a quarter of the time of
+  the ~1,000 path samples a reading in a furnished room takes to a few percent
+  (computed cheapest first; a light that would pass the budget stays sampled):
+  the computed lights leave every sample's variance and rays at the sensor,
+  and the reflected light is what is sampled. Whether that pays for a given
+  run (its budget or target, the lights' share of the variance) the engine's
+  pilot decides (``Engine._hybrid_choice``; the run record's ``hybrid``).
 
 Never computed (their direct light stays sampled): point, sphere, cylinder
 and distant lights (the sun), shaped lights, textured domes, and an emitter
@@ -41,7 +43,7 @@ import numpy as np
 from simulator.engine.exact import covered_records, record_polygons, transmitting
 from simulator.scene.model import Scene, Sensor, SensorKind
 
-__all__ = ["EXACT_JOB_S", "EXACT_OCCLUDER_S", "EXACT_MAX_S", "PATH_SAMPLE_S", "HYBRID_SHARE", "RAY_S", "EMISSIVE",
+__all__ = ["EXACT_JOB_S", "EXACT_OCCLUDER_S", "EXACT_MAX_S", "PATH_SAMPLE_S", "HYBRID_MAX_S", "RAY_S", "EMISSIVE",
            "exact_plan_refusal", "exact_plan_refusals", "exact_costs", "hybrid_records"]
 
 #: seconds of host time per (sensor, emitter polygon) with nothing in the way (one CPU core;
@@ -54,8 +56,9 @@ EXACT_OCCLUDER_S = 1.2e-5
 EXACT_MAX_S = 4e-3
 #: seconds of one path sample in a furnished room (~15 rays at ~0.4 µs: docs/DESIGN.md §Per-sample cost)
 PATH_SAMPLE_S = 6e-6
-#: the share of a path-traced sensor's sampling time its computed direct light may cost
-HYBRID_SHARE = 0.25
+#: the most host seconds a path-traced sensor's computed direct light may cost: a quarter of 1,024
+#: path samples (the default ``samples``) at :data:`PATH_SAMPLE_S`
+HYBRID_MAX_S = 0.25 * 1024 * PATH_SAMPLE_S
 #: seconds per ray of a path sample (6.49 µs over 15.07 rays on the office, docs/DESIGN.md §Per-sample
 #: cost): the engine's pilot weighs the computed part, in this model's seconds, against rays counted
 #: (so its choice is the same at any thread count or load)
@@ -238,13 +241,13 @@ def exact_plan_refusal(scene: Scene, sensor: Sensor, culled: list[str]) -> str |
     return exact_plan_refusals(scene, [sensor], [culled])[0]
 
 
-def hybrid_records(scene: Scene, sensors: list[Sensor], culled: list[list[str]], samples: int) -> list[tuple[list[int], str]]:
+def hybrid_records(scene: Scene, sensors: list[Sensor], culled: list[list[str]]) -> list[tuple[list[int], str]]:
     """Per sensor that needs paths: the light records whose direct light the hybrid computes for it
     (empty: none; read by paths alone) and why.
 
-    A record is computed where it can be (:func:`simulator.engine.exact.covered_records`), cheapest
-    first while the total stays within :data:`HYBRID_SHARE` of ``samples`` path samples
-    (:data:`PATH_SAMPLE_S` each)."""
+    A record is computed where it can be (:func:`simulator.engine.exact.covered_records`) and no
+    pane or cut-out may stand in its way, cheapest first while the total stays within
+    :data:`HYBRID_MAX_S`."""
     out: list[tuple[list[int], str]] = [([], "")] * len(sensors)
     names = _names(scene)
     pending, recs = [], []
@@ -258,16 +261,17 @@ def hybrid_records(scene: Scene, sensors: list[Sensor], culled: list[list[str]],
     if not pending:
         return out
     cost, blocked = exact_costs(scene, [sensors[i] for i in pending], recs)
-    budget = HYBRID_SHARE * samples * PATH_SAMPLE_S
+    budget = HYBRID_MAX_S
     for row, blk, i, ok in zip(cost, blocked, pending, recs):
         chosen, total = [], 0.0
         for r in sorted((r for r in ok if not blk[r]), key=lambda r: row[r]):
             if total + row[r] <= budget:
                 chosen.append(r)
                 total += row[r]
+        chosen.sort()  # in the records' order
         left = [names[r] for r in ok if r not in chosen and not blk[r]]
-        why = (f"direct light of {len(chosen)} emitter(s) computed (~{1e3 * total:.2g} ms, within {HYBRID_SHARE:g} of "
-               f"{samples} path samples)" if chosen else "")
+        why = (f"direct light of {len(chosen)} emitter(s) computed (~{1e3 * total:.2g} ms, within {1e3 * budget:.2g} ms)"
+               if chosen else "")
         if chosen and left:
             why += f"; sampled to keep within it: {', '.join(left)}"
         if chosen and blk.any():

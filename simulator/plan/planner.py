@@ -513,16 +513,13 @@ def _reflecting_in_front(scene: Scene, sensor: Sensor, bounds: SceneBounds) -> t
     return ("reflecting surfaces" if reflects else "black occluders"), reflects
 
 
-def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", component: str = "total", samples: int = 1024,
-              hybrid: bool = True) -> Plan:  # fmt: skip
+def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", component: str = "total",
+              hybrid: bool = True) -> Plan:
     """Plan how each sensor is read (see the module docstring for the rules).
 
     An explicit ``requested`` method applies to every sensor (``analytic``
-    raises :class:`UserError` naming a sensor it cannot read). ``samples``: the
-    run's samples per sensor (its first batch where adaptive), which the cost
-    model of computed direct light weighs (:mod:`simulator.plan.exact_rule`);
-    ``hybrid`` False: no hybrid (a light-group pass tallies every light on its
-    paths).
+    raises :class:`UserError` naming a sensor it cannot read). ``hybrid``
+    False: no hybrid (a light-group pass tallies every light on its paths).
     """
     transport, channels, channel_reason = _transport(scene)
     bounds = scene_bounds(scene)
@@ -544,8 +541,7 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
     if hybrid and requested == "auto" and component == "total" and transport == "grey":
         need = [i for i, (_, reflects) in enumerate(seen) if reflects and sensors[i].kind == SensorKind.IRRADIANCE]
         names = [l.name for l in scene.lights] + [EMISSIVE]
-        for i, (recs, why) in zip(need, hybrid_records(scene, [sensors[i] for i in need], [culled_of[i] for i in need],
-                                                       samples)):  # fmt: skip
+        for i, (recs, why) in zip(need, hybrid_records(scene, [sensors[i] for i in need], [culled_of[i] for i in need])):
             if recs:
                 hyb[i] = ([names[r] for r in recs], why)
     plans = []
