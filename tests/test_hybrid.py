@@ -4,8 +4,8 @@ forms for every emitter it reads, the occluder cull against a scan of every tria
 of a furnace and against the all-sampled reading of furnished rooms, within 4 standard errors.
 
 The closed forms are :mod:`simulator.reference.closed_forms` (Lambert's polygon formula, the disk on
-its axis, the furnace), which share no code with the engine (docs/REFERENCES.md §Lambert's polygon
-formula, §Uniform disk, §Furnace, §Visible part of an emitter).
+its axis, the furnace), which share no code with the engine (docs/REFERENCES.md
+§Lambert's polygon formula, §Uniform disk, §Furnace, §Visible part of an emitter).
 """
 
 from __future__ import annotations
@@ -118,7 +118,8 @@ def test_disk_polygon_bounds_hold_the_disk():
     """A DiskLight of radius 0.5 m facing down 1.5 m above receivers on its axis, facing up or tilted
     by 0.4 rad: the reading (the mean of its inscribed and circumscribed 256-gons' visible parts)
     lies within its reported bound of the disk's closed form (``disk_irradiance_on_axis``,
-    docs/REFERENCES.md §Uniform disk), and the bound is at most 8·10⁻⁵ of the reading (π²/(2n²) = 7.5·10⁻⁵ at n = 256)."""
+    docs/REFERENCES.md §Uniform disk), and the bound is at most 8·10⁻⁵ of the reading (π²/(2n²) = 7.5·10⁻⁵
+    at n = 256)."""
     disk = Light("/Disk", LightKind.DISK, np.array([0.0, 0.0, 1.5]), np.eye(3), (L, L), radius=0.5)
     scene = _scene(np.zeros((0, 3, 3)), lights=[disk])
     tilt = 0.4
@@ -156,8 +157,8 @@ def test_uniform_sky_whole_and_through_an_opening():
 def test_cull_keeps_every_triangle_that_reaches_the_hull():
     """The box hierarchy's cull per receiver returns exactly the triangles a scan of every triangle
     keeps (those not wholly outside one of the receiver's planes, a superset of what can block), and
-    the clustered cull exactly those of them that reach into the receiver's hull, whichever
-    receivers it is grouped with: a triangle it sets aside, clipped to that hull, leaves nothing."""
+    the clustered cull, whichever receivers it groups, a subset of those that holds every triangle
+    reaching into the receiver's hull: one it sets aside, clipped to that hull, leaves nothing."""
     from simulator.engine.occluders import reaching_pairs
 
     rng = np.random.default_rng(8)
@@ -177,9 +178,11 @@ def test_cull_keeps_every_triangle_that_reaches_the_hull():
     reach = reaching_pairs(planes, sj, st, tris)
     want = set(zip(sj[reach].tolist(), st[reach].tolist()))
     assert len(want) > 100 and len(want) < scan.sum()  # some candidates reach, some only seem to
+    every = set(zip(sj.tolist(), st.tolist()))
     for size in (1, 7, 16, 70):
         jc, tc = cull_clustered(idx, P, N, poly, 4, cluster=size)
-        assert set(zip(jc.tolist(), tc.tolist())) == want
+        got = set(zip(jc.tolist(), tc.tolist()))
+        assert want <= got <= every
 
 
 # ---------------------------------------------------------------- the hybrid, sampled

@@ -9,8 +9,8 @@ cylindrical sensor) :func:`host_analytic` returns None and the kernel reads it. 
 throughout (the kernels read float32 records), the readings differ from the kernel's by float32
 rounding of the inputs (~1e-7 of a reading).
 
-Formulas (docs/REFERENCES.md §Point source, §Uniform sphere, §Lambert's polygon formula, §Uniform
-disk, §Uniform environment):
+Formulas (docs/REFERENCES.md §Point source, §Uniform sphere, §Lambert's polygon formula,
+§Uniform disk and §Uniform environment):
 
 - point: E = I·cosξ/d²;
 - sphere of angular radius σ (a distant light of half-angle σ the same at infinity), centre at θ

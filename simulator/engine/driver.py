@@ -272,6 +272,9 @@ class Engine:
         self._offset: np.ndarray | None = None
         self.exact_seconds = 0.0  #: the host's time on the latest hybrid run's computed direct light
         self.hybrid_pilot: dict | None = None  #: what the latest hybrid run's pilot measured and chose (_hybrid_choice)
+        #: hybrid runs: "auto" (the pilot decides whether computing the direct light pays), True (always
+        #: computed) or False (always sampled)
+        self.hybrid: str | bool = "auto"
         self._computed: np.ndarray | None = None  # the plan's computed direct light (set_computed)
         #: paths: learn the light pick's factors per surface patch too, for the vertices past the first
         #: (kernels.light_pick; docs/DESIGN.md §Next-event estimation); False: one row serves them all
@@ -948,7 +951,10 @@ class Engine:
         mask[:, : cov.shape[1]][cov] = 2
         self.exact_seconds = t_exact
         try:
-            choice = self._hybrid_choice(base, irr, kw, full, mask, cov, t_exact)
+            if self.hybrid == "auto":
+                choice = self._hybrid_choice(base, irr, kw, full, mask, cov, t_exact)
+            else:
+                self.hybrid_pilot = choice = {"computed": bool(self.hybrid), "chosen_by": "Engine.hybrid"}
             if not choice["computed"]:  # the pilot finds that sampling it all is cheaper: the exact part is dropped
                 r = self.run(base, sensor_ids=ids, **kw)
                 r.wall_s += t_exact

@@ -27,7 +27,7 @@ import numpy as np
 from simulator.plan.bounds import _morton_order
 from simulator.scene.vectors import cross3
 
-__all__ = ["LEAF", "FANOUT", "OccluderIndex", "pyramid_planes", "cluster_planes", "cull_clustered", "reaching_pairs"]
+__all__ = ["LEAF", "FANOUT", "OccluderIndex", "pyramid_planes", "cluster_planes", "cull_clustered", "outside_none", "reaching_pairs"]
 
 #: triangles per leaf
 LEAF = 8
@@ -157,6 +157,22 @@ class OccluderIndex:
         return tj[order], self.original[tt[order]]
 
 
+def outside_none(planes: np.ndarray, job: np.ndarray, tri: np.ndarray, tris: np.ndarray, scale: float) -> np.ndarray:
+    """Per (job, triangle) pair: whether the triangle is not wholly outside one of the job's planes
+    (by :meth:`OccluderIndex.cull`'s margin), shape (Q,)."""
+    keep = np.zeros(len(job), bool)
+    for a in range(0, len(job), _STEP):
+        j, t = job[a : a + _STEP], tri[a : a + _STEP]
+        pl = planes[j]
+        lim = pl[..., 3] - _MARGIN * scale * (1.0 + np.linalg.norm(pl[..., :3], axis=2))
+        out = np.ones(lim.shape, bool)
+        for v in range(3):
+            out &= (pl[..., 0] * tris[t, v, 0, None] + pl[..., 1] * tris[t, v, 1, None] + pl[..., 2] * tris[t, v, 2, None]
+                    < lim)  # fmt: skip
+        keep[a : a + _STEP] = ~np.any(out, axis=1)
+    return keep
+
+
 def reaching_pairs(planes: np.ndarray, job: np.ndarray, tri: np.ndarray, tris: np.ndarray) -> np.ndarray:
     """Per (job, triangle) pair: whether some of the triangle lies inside every one of the job's
     planes (it reaches into the job's hull), shape (Q,): the triangle clipped by each plane in turn
@@ -254,9 +270,11 @@ def cull_clustered(index: OccluderIndex, P: np.ndarray, N: np.ndarray, poly: np.
                    cluster: int = 32) -> tuple[np.ndarray, np.ndarray]:  # fmt: skip
     """:meth:`OccluderIndex.cull` for many receivers (P, N) and one shared emitter polygon: receivers
     grouped along a Morton curve into clusters of ``cluster``, the hierarchy culled once per cluster
-    by :func:`cluster_planes`, then each of the cluster's candidates clipped to each receiver's own
-    hull (:func:`reaching_pairs`). Returns (receiver index, original triangle index) pairs sorted by
-    receiver: the triangles that reach into its hull, the same whatever receivers it was grouped with."""
+    by :func:`cluster_planes`, then each of the cluster's candidates tested against each receiver's
+    own planes (:func:`outside_none`). Returns (receiver index, original triangle index) pairs sorted
+    by receiver: every triangle that reaches into its hull (:func:`reaching_pairs`), and of the others
+    at most those :meth:`OccluderIndex.cull` keeps for it (a cluster's planes may set aside a few more
+    of those: which depends on the receivers it is grouped with, the readings only in rounding)."""
     from simulator.plan.bounds import _morton_order
 
     if not index.n or not len(P):
@@ -283,7 +301,7 @@ def cull_clustered(index: OccluderIndex, P: np.ndarray, N: np.ndarray, poly: np.
     within = np.arange(int(n_pairs.sum())) - np.repeat(np.cumsum(n_pairs) - n_pairs, n_pairs)
     tri = ct[np.repeat(first[rec_rows], n_pairs) + within]
     planes = pyramid_planes(P, N, np.broadcast_to(poly, (len(P), *poly.shape)), np.full(len(P), cnt))
-    keep = reaching_pairs(planes, job, tri, index.tris_by_original())
+    keep = outside_none(planes, job, tri, index.tris_by_original(), index.scale)
     job, tri = job[keep], tri[keep]
     o = np.argsort(job, kind="stable")
     return job[o], tri[o]

@@ -24,7 +24,8 @@ How (all receivers at once, float64 numpy):
    piece C minus a convex shadow S with edges e_1..e_k is the disjoint
    union of C ∩ H_1ᶜ, C ∩ H_1 ∩ H_2ᶜ, … (H_i the inner half-plane of e_i),
    each convex, found by Sutherland–Hodgman clipping of all pieces at once;
-4. F = Σ over the pieces of Lambert's contour integral (Arvo 1995):
+4. F = Σ over the pieces of Lambert's contour integral (Arvo 1995; docs/REFERENCES.md
+   §Visible part of an emitter):
    |Σ_i γ_i n·û_i| / 2, u_i the unit vectors from ``p`` to the piece's
    vertices, γ_i = ∠(u_i, u_{i+1}), û_i = normalize(u_i × u_{i+1}). The
    pieces are disjoint and above the horizon, so their integrals add.

@@ -11,9 +11,9 @@ benchmarks/exact_scaling.py`` prints the fit):
     t_exact(s) = Σ over the sensor's emitter polygons (t_job + t_occluder · n_occluders),
 
 n_occluders the triangles the hull of the sensor and the emitter may hold
-(:func:`simulator.engine.occluders.cull_clustered`, each sensor's own, so a
-sensor's plan does not depend on the others'; a dome's five half-cube faces
-count every triangle above the sensor's horizon), against the
+(a count of the hierarchy's cull by the sensor's own planes, an upper bound on
+what the engine then clips, so a sensor's plan does not depend on the others'; a
+dome's five half-cube faces count every triangle above the sensor's horizon), against the
 time sampling spends on that sensor:
 
 - a **direct-only** irradiance sensor (nothing it sees reflects) whose every
@@ -92,7 +92,7 @@ def exact_costs(scene: Scene, sensors: list[Sensor], records: list[list[int]]) -
         its hull with the emitter may hold).
     """
     from simulator.engine.exact import occluder_index
-    from simulator.engine.occluders import cull_clustered
+    from simulator.engine.occluders import pyramid_planes
 
     n_rec = len(_names(scene))
     out = np.zeros((len(sensors), n_rec))
@@ -132,10 +132,12 @@ def exact_costs(scene: Scene, sensors: list[Sensor], records: list[list[int]]) -
             if not idx.n:
                 out[w, r] += EXACT_JOB_S
                 continue
-            j, _ = cull_clustered(idx, P[w], N[w], V, c)  # each receiver's own candidates (its hull's)
-            out[w, r] += EXACT_JOB_S + EXACT_OCCLUDER_S * np.bincount(j, minlength=len(w))
+            # each receiver's own candidate count (its planes', not its cluster's: the same whatever
+            # sensors a plan is asked for)
+            pl = pyramid_planes(P[w], N[w], np.broadcast_to(V, (len(w), *V.shape)), np.full(len(w), c))
+            out[w, r] += EXACT_JOB_S + EXACT_OCCLUDER_S * idx.cull(pl, count_only=True)
             if tidx is not None:
-                blocked[w, r] |= np.bincount(cull_clustered(tidx, P[w], N[w], V, c)[0], minlength=len(w)) > 0
+                blocked[w, r] |= tidx.cull(pl, count_only=True) > 0
     return out, blocked
     trans = transmitting(scene.geometry)
     tidx = occluder_index(scene, trans) if trans.any() else None
