@@ -936,29 +936,38 @@ class Engine:
             r = self.run(base, sensor_ids=ids, **kw)
             r.method = method
             return r
+        from simulator.engine.exact import covered_records
+
         n_rec = int(self._dev.rec.n_lights)  # the device scene (uploaded here if not yet) counts the records
-        t0 = time.perf_counter()
         kept = self._light_mask
         full = np.ones((n_s, n_rec), np.int32)
         if kept is not None:
             full[:, : kept.shape[1]] = kept
         # the plan's choice (set_computed) where it made one for these sensors, else every light that can be
-        want = self._computed if self._computed is not None and self._computed[irr].any() else None
-        ex = exact_direct(self.scene, self.sensors, irr, full, want)
-        t_exact = time.perf_counter() - t0
-        cov = ex.covered[:, :n_rec]
-        mask = full.copy()
-        mask[:, : cov.shape[1]][cov] = 2
-        self.exact_seconds = t_exact
+        if self._computed is not None and self._computed[irr].any():
+            want = np.zeros((n_s, n_rec), bool)
+            want[:, : min(n_rec, self._computed.shape[1])] = self._computed[:, :n_rec]
+        else:
+            want = np.zeros((n_s, n_rec), bool)
+            for r_, why in covered_records(self.scene):
+                want[irr, r_] = why is None and r_ < n_rec
+        want &= full != 0
+        t_exact = 0.0
         try:
-            if self.hybrid == "auto":
-                choice = self._hybrid_choice(base, irr, kw, full, mask, cov, t_exact)
+            if self.hybrid == "auto":  # decided before computing anything: the pilot reads the mask it would run
+                mask = full.copy()
+                mask[want] = 2
+                choice = self._hybrid_choice(base, irr, kw, full, mask, want)
             else:
                 self.hybrid_pilot = choice = {"computed": bool(self.hybrid), "chosen_by": "Engine.hybrid"}
-            if not choice["computed"]:  # the pilot finds that sampling it all is cheaper: the exact part is dropped
+            if not choice["computed"]:  # the pilot finds that sampling it all is cheaper: nothing is computed
                 r = self.run(base, sensor_ids=ids, **kw)
-                r.wall_s += t_exact
                 return r
+            t0 = time.perf_counter()
+            ex = exact_direct(self.scene, self.sensors, irr, full, want)
+            t_exact = self.exact_seconds = time.perf_counter() - t0
+            mask = full.copy()
+            mask[:, : ex.covered.shape[1]][ex.covered[:, :n_rec]] = 2  # what a pane keeps from the host stays sampled
             self.set_light_mask(mask)
             self._offset = ex.mean
             r = self.run(base, sensor_ids=ids, **kw)
@@ -978,7 +987,7 @@ class Engine:
         return r
 
     def _hybrid_choice(self, base: str, ids: np.ndarray, kw: dict, plain: np.ndarray, hybrid: np.ndarray,
-                       covered: np.ndarray, t_exact: float) -> dict:  # fmt: skip
+                       covered: np.ndarray) -> dict:  # fmt: skip
         """Whether computing the direct light pays for this run, from a pilot (``hybrid_pilot`` keeps it).
 
         On up to :data:`HYBRID_PILOT_SENSORS` of the sensors (evenly spread), :data:`SPLIT_PILOT_SAMPLES`
@@ -1047,7 +1056,7 @@ class Engine:
                              "relvar_indirect": rv[2] / max(int(ok.sum()), 1), "rays_direct_sampled": c_d,
                              "rays_direct_left": c_h, "rays_indirect": c_i, "k_sampled": k_p, "k_computed": k_h,
                              "exact_rays_per_sensor": x, "samples_per_sensor": n, "cost_sampled": cost_p,
-                             "cost_computed": cost_h, "exact_seconds": t_exact, "seconds": time.perf_counter() - tb}  # fmt: skip
+                             "cost_computed": cost_h, "seconds": time.perf_counter() - tb}  # fmt: skip
         return self.hybrid_pilot
 
     def _run_exact(self, sensor_ids: np.ndarray) -> EngineResult:
