@@ -161,14 +161,15 @@ def outside_none(planes: np.ndarray, job: np.ndarray, tri: np.ndarray, tris: np.
     """Per (job, triangle) pair: whether the triangle is not wholly outside one of the job's planes
     (by :meth:`OccluderIndex.cull`'s margin), shape (Q,)."""
     keep = np.zeros(len(job), bool)
+    wx, wy, wz = (np.ascontiguousarray(planes[..., i]) for i in range(3))
+    lim_all = planes[..., 3] - _MARGIN * scale * (1.0 + np.sqrt(wx * wx + wy * wy + wz * wz))  # per job, once
     for a in range(0, len(job), _STEP):
         j, t = job[a : a + _STEP], tri[a : a + _STEP]
-        pl = planes[j]
-        lim = pl[..., 3] - _MARGIN * scale * (1.0 + np.linalg.norm(pl[..., :3], axis=2))
+        x, y, z = wx[j], wy[j], wz[j]
+        lim = lim_all[j]
         out = np.ones(lim.shape, bool)
         for v in range(3):
-            out &= (pl[..., 0] * tris[t, v, 0, None] + pl[..., 1] * tris[t, v, 1, None] + pl[..., 2] * tris[t, v, 2, None]
-                    < lim)  # fmt: skip
+            out &= x * tris[t, v, 0, None] + y * tris[t, v, 1, None] + z * tris[t, v, 2, None] < lim
         keep[a : a + _STEP] = ~np.any(out, axis=1)
     return keep
 
@@ -266,10 +267,15 @@ def cluster_planes(P: np.ndarray, N: np.ndarray, poly: np.ndarray, cnt: int, sid
     return out
 
 
+#: the largest side of a cluster's cell, metres: receivers farther apart share little of their hulls
+CLUSTER_CELL_M = 1.0
+
+
 def cull_clustered(index: OccluderIndex, P: np.ndarray, N: np.ndarray, poly: np.ndarray, cnt: int,
                    cluster: int = 32) -> tuple[np.ndarray, np.ndarray]:  # fmt: skip
     """:meth:`OccluderIndex.cull` for many receivers (P, N) and one shared emitter polygon: receivers
-    grouped along a Morton curve into clusters of ``cluster``, the hierarchy culled once per cluster
+    grouped by cells of :data:`CLUSTER_CELL_M` into clusters of at most ``cluster`` (in a cell, along a
+    Morton curve), the hierarchy culled once per cluster
     by :func:`cluster_planes`, then each of the cluster's candidates tested against each receiver's
     own planes (:func:`outside_none`). Returns (receiver index, original triangle index) pairs sorted
     by receiver: every triangle that reaches into its hull (:func:`reaching_pairs`), and of the others
@@ -282,10 +288,15 @@ def cull_clustered(index: OccluderIndex, P: np.ndarray, N: np.ndarray, poly: np.
     V = poly[:cnt]
     m = np.cross(V[1] - V[0], V[2] - V[0])
     side = np.where((P - V[0]) @ m >= 0.0, 1.0, -1.0)
-    order = np.concatenate([np.flatnonzero(side > 0)[_morton_order(P[side > 0])] if np.any(side > 0) else np.zeros(0, int),
-                            np.flatnonzero(side < 0)[_morton_order(P[side < 0])] if np.any(side < 0) else np.zeros(0, int)])
-    n_pos = int(np.sum(side > 0))
-    starts = np.r_[np.arange(0, n_pos, cluster), np.arange(n_pos, len(P), cluster)]
+    cell = np.floor((P - P.min(axis=0)) / CLUSTER_CELL_M).astype(np.int64)
+    morton = np.empty(len(P), np.int64)
+    morton[_morton_order(P)] = np.arange(len(P))
+    order = np.lexsort((morton, cell[:, 2], cell[:, 1], cell[:, 0], side))  # by side, cell, then along the curve
+    key = np.stack([side[order], *cell[order].T], axis=1)
+    new = np.r_[True, np.any(key[1:] != key[:-1], axis=1)]
+    group_start = np.maximum.accumulate(np.where(new, np.arange(len(P)), 0))
+    new |= (np.arange(len(P)) - group_start) % cluster == 0  # at most ``cluster`` a cluster
+    starts = np.flatnonzero(new)
     ends = np.r_[starts[1:], len(P)]
     cp = cluster_planes(P[order], N[order], poly, cnt, side[order[starts]], starts, ends)
     cj, ct = index.cull(cp)  # (cluster, original triangle)

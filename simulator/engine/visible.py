@@ -442,6 +442,8 @@ def visible_factors(light: np.ndarray, light_cnt: np.ndarray, P: np.ndarray, N: 
         keep = ~miss & (qc >= 3)
         order = np.lexsort((-area[keep], qj[keep]))  # per job, the largest first
         SG, sj = G[keep][order], qj[keep][order]
+        # each shadow's box within its piece's (a piece outside it is left whole without a clip)
+        SB = np.concatenate([np.maximum(s_lo, l_lo), np.minimum(s_hi, l_hi)], axis=1)[keep][order]
     else:
         sj = np.zeros(0, np.int64)
     # 3. subtract the shadows, one per job per round, from every piece of that job
@@ -451,17 +453,30 @@ def visible_factors(light: np.ndarray, light_cnt: np.ndarray, P: np.ndarray, N: 
     if len(sj):
         first = np.searchsorted(sj, np.arange(J))
         n_sh = np.bincount(sj, minlength=J)
+        done_v, done_c, done_j = [], [], []  # pieces of jobs whose shadows are all subtracted
         for k in range(int(n_sh.max())):
-            on = n_sh[pj] > k
+            finished = n_sh[pj] <= k
+            if finished.any():
+                done_v.append(Pv[finished])
+                done_c.append(pc[finished])
+                done_j.append(pj[finished])
+                Pv, pc, pj = Pv[~finished], pc[~finished], pj[~finished]
+            if not len(pj):
+                break
+            idx = first[pj] + k
+            # pieces whose box misses the shadow's keep whole, unclipped
+            valid = np.arange(Pv.shape[1])[None, :] < pc[:, None]
+            p_lo = np.where(valid[:, :, None], Pv, np.inf).min(axis=1)
+            p_hi = np.where(valid[:, :, None], Pv, -np.inf).max(axis=1)
+            box = SB[idx]
+            on = np.all(p_lo < box[:, 2:], axis=1) & np.all(p_hi > box[:, :2], axis=1)
             if not on.any():
                 continue
-            idx = first[pj[on]] + k
-            kv, kc, kj, dr = _subtract(Pv[on], pc[on], pj[on], SG[idx], a_min)
+            kv, kc, kj, dr = _subtract(Pv[on], pc[on], pj[on], SG[idx[on]], a_min)
             for jj, aa in dr:
                 np.add.at(dropped_area, jj, aa)
             Pv, pc, pj = _concat([Pv[~on]] + kv, [pc[~on]] + kc, [pj[~on]] + kj)
-            if not len(pj):
-                break
+        Pv, pc, pj = _concat([Pv] + done_v, [pc] + done_c, [pj] + done_j)
     # 4. Lambert's formula on each piece, summed per job
     if len(pj):
         d = (c[pj] - P[pj])[:, None, :] + Pv[..., :1] * e1[pj][:, None, :] + Pv[..., 1:] * e2[pj][:, None, :]
