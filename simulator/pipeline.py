@@ -18,6 +18,7 @@ from simulator.interrupts import StopFlag, sigint_deferred
 from simulator.io.maps import grid_outputs, probe_outputs
 from simulator.plan.cache import cached_plan
 from simulator.plan.planner import Plan, make_plan, probe_method
+from simulator.io.glare_maps import glare_readings
 from simulator.io.results import Reading, probe_readings, readings_from, write_outputs
 from simulator.scene.model import Scene, Sensor, SensorKind
 from simulator.scene.light_flux import lights_record
@@ -81,6 +82,7 @@ def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = Non
     """
     n = len(plan.sensors)
     groups = plan.groups()
+    order = plan.run_order() if hasattr(plan, "run_order") else list(groups.items())
     out = EngineResult(
         method="+".join(groups), device=engine.device, mean=np.zeros((n, 2)), stderr=np.zeros((n, 2)),
         samples=np.zeros(n, np.int64), seconds=np.zeros(n), target_met=np.ones(n, bool) if sim.adaptive else None,
@@ -95,7 +97,7 @@ def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = Non
         out.responses = [r.name for r in hero.responses]
         out.response_mean = np.full((n, len(hero.responses)), np.nan)
         out.response_stderr = np.full((n, len(hero.responses)), np.nan)
-    for method, ids in groups.items():
+    for method, ids in order:
         if stop is not None and stop.requested:
             break
         r = engine.run(
@@ -196,7 +198,7 @@ def _batch_record(plan: dict) -> dict:
     return {k: v for k, v in plan.items() if v is not None}
 
 
-def run(cfg: RunConfig, progress=None, log=print, write: bool = True) -> RunOutput:
+def run(cfg: RunConfig, progress=None, log=print, write: bool = True, sensors: list[Sensor] | None = None) -> RunOutput:
     """Run a validated config and write its CSV and run record.
 
     Parameters
@@ -210,6 +212,9 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True) -> RunOutp
         False: write nothing (no CSV, run record or maps); the output's rows
         and record are the same, its ``csv_path`` and ``record_path`` None
         and its record's ``maps`` empty.
+    sensors : list of Sensor, optional
+        The sensors to read instead of the config's and the stage's (a run over ``times`` reads
+        every time's in one trace, :mod:`simulator.timecodes`).
 
     Notes
     -----
@@ -225,42 +230,67 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True) -> RunOutp
     """
     from simulator.spectra.transport import choose_transport
 
+    from simulator.sensor_models.readings import channel_responses, optics_twins
+
+    if getattr(cfg, "times", None) and sensors is None:  # one row per sensor and time code
+        import sys
+
+        from simulator.timecodes import run_times
+
+        return run_times(cfg, sys.modules[__name__], progress, log, write)
     t0 = time.perf_counter()
     scene, token = cached_scene(cfg)
+    sensors = collect_sensors(cfg, scene) if sensors is None else list(sensors)
+    twins = optics_twins([s for s in sensors if s.spec.reader == "estimate"])  # modelled sensors read again
     spectrum = None  # the emitters' spectrum, for response columns (grey scenes: exact post hoc)
     hero = None  # spectral transport's tables (a colour can change a reading: hero wavelengths)
     if choose_transport(scene)[0] == "grey":
-        if cfg.spectra is not None:
-            spectrum = _run_spectrum(cfg, scene)
+        if cfg.spectra is not None or twins:
+            spectrum = _run_spectrum(cfg, scene, force=bool(twins))
     else:
         from simulator.spectra.traced import run_hero_tables
 
-        hero = run_hero_tables(cfg, scene)
-    sensors = collect_sensors(cfg, scene)
+        hero = run_hero_tables(cfg, scene, extra=channel_responses(twins))
     misplaced = sensor_warnings(scene, sensors)  # sensors a stage would read a plausible wrong number at
-    # probes are read by their own kernel (simulator.engine.probes)
+    misplaced += _response_notes(cfg)
+    # probes are read by their own kernel (simulator.engine.probes), glare views by simulator.engine.glare
     probes = [s for s in sensors if s.kind == SensorKind.PROBE]
-    plain = [s for s in sensors if s.kind != SensorKind.PROBE]
+    plain = [s for s in sensors if s.spec.reader == "estimate"]
     sim = cfg.simulation
+    if sim.component != "total" and any(s.kind == SensorKind.GLARE for s in sensors):
+        raise UserError(f"{cfg.path}: simulation.component: glare sensors need the total light, not {sim.component!r}")
     t_read = time.perf_counter()
     plan = cached_plan(lambda: make_plan(scene, plain, sim.method, sim.component), token, plain, sim.method, sim.component)
+    if twins:
+        from simulator.plan.planner import with_optics
+
+        plan = with_optics(plan, scene, twins)
     reason = "per-sensor plan (see plan)" if sim.method == "auto" else "as requested"
     probes_method = None
-    if probes:  # no closed form for a probe: its method is chosen for the run
+    if probes or any(s.kind == SensorKind.GLARE for s in sensors):  # no closed form: one method for the run
         probes_method, why = probe_method(scene, sim.method, sim.component)
-        reason += f"; probes: {why}"
+        reason += f"; probes and glare views: {why}"
     t_load = time.perf_counter()
-    engine = config_engine(cfg, scene, plain, hero=hero)
+    engine = config_engine(cfg, scene, plain + twins, hero=hero)
     for w in _scene_warnings(scene, engine) + ([] if hero is None else hero.notes) + misplaced:
         log(f"warning: {w}")
     t_setup = time.perf_counter()
     with sigint_deferred() as stop:  # Ctrl-C from here on: stop after the batch, write what was measured
         return _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log,
-                                (t0, t_read, t_load, t_setup), spectrum, write, misplaced)  # fmt: skip
+                                (t0, t_read, t_load, t_setup), spectrum, write, misplaced, twins)  # fmt: skip
 
 
-def _run_spectrum(cfg: RunConfig, scene: Scene):
-    """The emitters' spectrum for the config's responses (:func:`simulator.spectra.posthoc.run_spectrum`).
+def _response_notes(cfg: RunConfig) -> list[str]:
+    """What the config's custom responses leave out (a file short of 380–780 nm, a responsivity beyond
+    it), as warning lines."""
+    if cfg.spectra is None:
+        return []
+    return [n for r in cfg.spectra.responses for n in r.notes]
+
+
+def _run_spectrum(cfg: RunConfig, scene: Scene, force: bool = False):
+    """The emitters' spectrum for the config's responses (:func:`simulator.spectra.posthoc.run_spectrum`);
+    ``force``: wanted whatever the config asks (sensor models weigh it by their channels).
 
     Raises
     ------
@@ -270,10 +300,64 @@ def _run_spectrum(cfg: RunConfig, scene: Scene):
     """
     from simulator.spectra import posthoc
 
+    settings = cfg.spectra
+    if force and (settings is None or not settings.wanted):
+        from types import SimpleNamespace
+
+        settings = SimpleNamespace(wanted=True, responses=(), lights=None if settings is None else settings.lights)
     try:
-        return posthoc.run_spectrum(cfg.spectra, scene, cfg.light_units, cfg.radiometric_spectrum)
+        spectrum = posthoc.run_spectrum(settings, scene, cfg.light_units, cfg.radiometric_spectrum)
     except UserError as e:
-        raise UserError(f"{cfg.path}: output.responses: {e}") from None
+        raise UserError(f"{cfg.path}: {'output.responses' if cfg.spectra is not None else 'sensor model'}: {e}") from None
+    return spectrum if cfg.spectra is not None or not force else _ModelsOnly(spectrum)
+
+
+class _ModelsOnly:
+    """A grey run's emitter spectrum wanted by its sensor models only: no response columns from it."""
+
+    def __init__(self, spectrum):
+        self.spectrum = spectrum
+
+
+def _model_columns(cfg, plain, twins, by_name, res, spectrum, engine, log) -> dict:
+    """The sensor models' columns on their sensors' rows (:mod:`simulator.sensor_models.readings`) and the
+    run record's ``sensor_models``."""
+    from simulator.sensor_models.readings import add_model_columns, model_record
+
+    n = len(plain)
+    mean = res.mean[n:].copy()
+    mean[res.samples[n:] == 0] = np.nan  # never read (interrupted)
+    hero = getattr(engine, "hero_tables", None)
+    if hero is None:
+        spec = spectrum.spectrum if isinstance(spectrum, _ModelsOnly) else spectrum
+        notes = add_model_columns(by_name, twins, mean, res.stderr[n:], cfg.simulation.seed, spectrum=spec)
+    else:
+        names = [r.name for r in hero.responses]
+        notes = add_model_columns(by_name, twins, mean, res.stderr[n:], cfg.simulation.seed, responses=names,
+                                  response_mean=res.response_mean[n:], response_stderr=res.response_stderr[n:],
+                                  ideal_mean=res.response_mean[:n], ideal_index={s.name: i for i, s in enumerate(plain)})
+    for note in notes:
+        log(f"warning: {note}")
+    return model_record(twins, notes)
+
+
+def _run_glare(cfg, scene, sensors, views, method, engine, stop, progress) -> list:
+    """The run's glare views (:func:`simulator.engine.glare.run_glare`), on engines like the run's own."""
+    from simulator.engine.driver import Progress
+    from simulator.engine.glare import run_glare
+
+    sim = cfg.simulation
+    hero = getattr(engine, "hero_tables", None)
+
+    def report(done, total, samples, elapsed):
+        if progress is not None:
+            progress(Progress(done, total, samples, elapsed, None))
+
+    return run_glare(
+        scene, views, method, lambda sc, ss: config_engine(cfg, sc, ss, hero=hero), seed=sim.seed,
+        stream_ids=[i for i, s in enumerate(sensors) if s.kind == SensorKind.GLARE], max_depth=sim.max_depth,
+        time_limit_s=sim.time_limit_s, progress=report, stop=stop,
+    )  # fmt: skip
 
 
 def _traced_columns(cfg, plan, engine, plain, by_name, res, probes) -> tuple[dict, list[dict]]:
@@ -289,7 +373,9 @@ def _traced_columns(cfg, plan, engine, plain, by_name, res, probes) -> tuple[dic
                                "colour; their response columns are not estimated")
     if cfg.spectra is not None:
         record.update(cfg.spectra.raw)
-    wanted = [r for r in hero.responses if r.name not in ("radiometric", "photopic")]
+    from simulator.spectra.traced import writes_columns
+
+    wanted = [r for r in hero.responses if writes_columns(r)]
     return record, response_channels(wanted)
 
 
@@ -326,7 +412,7 @@ def _partial_rows(rows: list[Reading], unfinished: dict[str, bool], adaptive: bo
 
 
 def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log, times,
-                     spectrum=None, write=True, misplaced=()) -> RunOutput:
+                     spectrum=None, write=True, misplaced=(), twins=()) -> RunOutput:
     """The rest of :func:`run`: trace (until done or ``stop``), then write the files."""
     t0, t_read, t_load, t_setup = times
     sim = cfg.simulation
@@ -341,14 +427,23 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         )  # fmt: skip
         for p in probe_res:
             res.warnings.extend(p.warnings)
+    views = [s for s in sensors if s.kind == SensorKind.GLARE]
+    glare_res = _run_glare(cfg, scene, sensors, views, probes_method, engine, stop, progress) if views and not stop.requested else []
+    for g in glare_res:
+        res.warnings.extend(g.warnings)
     # a stop that came after the last batch changed nothing: the run is complete
     interrupted = stop.requested and (bool(res.unfinished.any()) or len(probe_res) < len(probes)
-                                      or any(p.interrupted for p in probe_res))
+                                      or any(p.interrupted for p in probe_res) or len(glare_res) < len(views)
+                                      or any(g.interrupted for g in glare_res))
     for w in res.warnings:
         log(f"warning: {w}")
     by_name = {r.sensor.name: r for r in readings_from(plain, res.mean, res.stderr, res.samples, res.seconds, res.methods, res.target_met)}
     by_name.update({r.sensor.name: r for r in probe_readings(probe_res, probes_method)})
+    by_name.update({r.sensor.name: r for r in glare_readings(glare_res, probes_method)})
     spectra_record, response_maps = None, []
+    models_record = _model_columns(cfg, plain, twins, by_name, res, spectrum, engine, log) if twins else {}
+    if isinstance(spectrum, _ModelsOnly):
+        spectrum = None
     if spectrum is not None:  # response columns from the stated column (exact: the scene is grey)
         from simulator.spectra import posthoc
 
@@ -356,11 +451,12 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
     elif res.responses is not None:  # traced spectrally: response columns from the same samples
         spectra_record, response_maps = _traced_columns(cfg, plan, engine, plain, by_name, res, probes)
     extra, probe_maps, n_finished = {}, {}, len(sensors)
-    if interrupted:  # probes not reached: an empty row each
-        by_name.update({s.name: Reading(s, {}, 0, 0.0, probes_method, None) for s in probes if s.name not in by_name})
+    if interrupted:  # probes and glare views not reached: an empty row each
+        by_name.update({s.name: Reading(s, {}, 0, 0.0, probes_method, None) for s in probes + views if s.name not in by_name})
         unfinished = dict(zip((s.name for s in plain), res.unfinished))
-        unfinished.update({s.name: True for s in probes})
+        unfinished.update({s.name: True for s in probes + views})
         unfinished.update({p.sensor.name: p.interrupted for p in probe_res})
+        unfinished.update({g.sensor.name: g.interrupted for g in glare_res})
         rows = _partial_rows([by_name[s.name] for s in sensors], unfinished, res.target_met is not None)
         n_finished = sum(1 for u in unfinished.values() if not u)
     else:
@@ -375,6 +471,11 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
                 probe_meta["rgb"] = (spectrum.name, rgb_per_luminance(spectrum))
             probe_files, probe_maps = probe_outputs(cfg.output.csv, probe_res, probe_meta)
             extra.update(probe_files)
+            if glare_res:
+                from simulator.io.glare_maps import glare_outputs
+
+                glare_files, glare_record = glare_outputs(cfg.output.csv, glare_res, {**meta, "method": probes_method})
+                extra.update(glare_files)
     t_end = time.perf_counter()
     record = {
         "config_path": str(cfg.path),
@@ -384,19 +485,21 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
                   "variants": dict(cfg.variants), "time": _time_record(scene)},
         "seed": sim.seed,
         "samples_requested": sim.samples,
-        "samples_total": int(res.samples.sum()) + sum(p.samples for p in probe_res),
+        "samples_total": int(res.samples.sum()) + sum(p.samples for p in probe_res) + sum(g.samples for g in glare_res),
         "interrupted": interrupted,
         "sensors_read": sum(1 for r in rows if r.values),
         "sensors_finished": n_finished,
         "method": {"requested": sim.method, "used": {m: len(ix) for m, ix in plan.groups().items()}, "probes": probes_method, "reason": reason},
         "plan": plan.to_record(),
         **({} if spectra_record is None else {"spectra": spectra_record}),
+        **({"sensor_models": models_record} if models_record else {}),
         "component": sim.component,
         "device": res.device,
         "threads": engine.threads,
         "host": {"platform": platform.platform(), "machine": platform.machine(), "processor": platform.processor(), "python": sys.version.split()[0]},
         "versions": _versions(),
-        "timings_s": {"load": t_read - t0, "plan": t_load - t_read, "setup": t_setup - t_load, "trace": res.wall_s + sum(p.seconds for p in probe_res),
+        "timings_s": {"load": t_read - t0, "plan": t_load - t_read, "setup": t_setup - t_load,
+                      "trace": res.wall_s + sum(p.seconds for p in probe_res) + sum(g.seconds for g in glare_res),
                       "guide": engine.guide.seconds if engine.guide is not None else 0.0, "total": t_end - t0},
         **({} if engine.guide is None else {"guide": engine.guide.to_record()}),
         **({} if engine.rr_pilot is None else {"roulette": _roulette_record(engine.rr_pilot)}),
@@ -410,6 +513,8 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         "non_finite_samples": int(res.non_finite.sum()) + sum(p.non_finite for p in probe_res),
         "maps": sorted(p.name for p in extra),
         "probe_maps": probe_maps,
+        **({"glare": {"method": probes_method, "views": len(glare_res), "file": cfg.output.csv.stem + ".glare.json"}}
+           if glare_res else {}),
         "adaptive": None
         if res.target_met is None
         else {

@@ -913,8 +913,8 @@ def test_sensor_kind_models_cover_the_kinds():
     for name, model in SENSOR_ENTRIES.items():
         assert model.KIND == SENSOR_KINDS[name]
         assert list(model.model_fields)[:3] == ["name", "kind", "position"]
-    assert SENSOR_KEYS == ("name", "kind", "position", "normal", "direction", "half_angle_deg", "size", "up", "resolution", "axis",
-                           "facing")
+    assert SENSOR_KEYS == ("name", "kind", "position", "normal", "model", "gain", "integration_ms", "azimuth_ref", "direction",
+                           "half_angle_deg", "size", "up", "resolution", "axis", "facing", "evalglare", "dgp_stderr")
 
 
 @pytest.mark.parametrize(

@@ -118,3 +118,28 @@ def test_the_bundled_daylight_study_is_one_trace():
 
     az = {s.name: float(re.search(r"azimuth ([0-9.]+)", s.notes[0]).group(1)) for s in scen if s.name.startswith("clear")}
     assert 90 < az["clear_morning"] < 150 and 210 < az["clear_afternoon"] < 270
+
+
+@pytest.mark.parametrize("old, new, key", [
+    ("samples = 64", "samples = 32", "simulation.samples"),
+    ("samples = 64", "samples = 64\nrel_error = 0.05\nmax_samples = 32", "simulation.max_samples"),
+])  # fmt: skip
+def test_a_patch_sky_needs_two_batches_for_its_errors(tmp_path, old, new, key):
+    """A sky split into patches estimates its covariance from batch means of
+    32 samples over B − 1 degrees of freedom: at 32 samples a sensor has one
+    batch and every error of the year would be undefined (nan), so the study
+    is refused in one line naming the key, and nothing is written."""
+    assert old in SKY
+    with pytest.raises(UserError) as e:
+        study, p = _study(tmp_path, SKY.replace(old, new, 1))
+        run_study(study, p, tmp_path / "out", reference_run=False, mode="inprocess")
+    assert f"{key}: a sky split into patches" in str(e.value) and "\n" not in str(e.value)
+    assert not (tmp_path / "out").exists()
+
+
+def test_the_schemas_block_is_the_engines():
+    """The schema's batch size names the engine's kernel block (a batch of the patches' covariance)."""
+    from simulator.engine.driver import BLOCK
+    from simulator.study.schema import SAMPLES_PER_BLOCK
+
+    assert SAMPLES_PER_BLOCK == BLOCK

@@ -412,7 +412,8 @@ def test_subdivision_surfaces_are_read_as_their_cage_with_one_warning(tmp_path):
     s = load_stage(stage(tmp_path, body))
     assert s.geometry.n_triangles == 3
     assert [w for w in s.warnings if "subdivision" in w] == [
-        "subdivision surfaces read as their control cage (not refined): 2 catmullClark mesh(es)"]
+        "subdivision surfaces read as their control cage (not refined; glossy and mirror faces shaded by the "
+        "cage's smooth normals): 2 catmullClark mesh(es)"]
 
 
 # --------------------------------------------------------------------------- #

@@ -98,7 +98,7 @@ def run_bench(configs: list[Path], device: str = "cpu", samples: int = 4096, cap
         cfg = load_config(path)
         scene = load_scene(cfg)
         sensors = collect_sensors(cfg, scene)
-        sensors = [s for s in sensors if s.kind.name != "PROBE"]
+        sensors = [s for s in sensors if s.spec.reader == "estimate"]
         engine = config_engine(cfg, scene, sensors, device=device, threads=0)
         info["device"] = engine.device
         info["threads"] = engine.threads
@@ -142,7 +142,7 @@ def run_bench(configs: list[Path], device: str = "cpu", samples: int = 4096, cap
     if qs and info.get("device") == "cpu" and (os.cpu_count() or 1) > 1:
         cfg = load_config(qs[0])
         scene = load_scene(cfg)
-        sensors = [s for s in collect_sensors(cfg, scene) if s.kind.name != "PROBE"]
+        sensors = [s for s in collect_sensors(cfg, scene) if s.spec.reader == "estimate"]
         rates = {}
         for threads in (1, os.cpu_count() or 1):
             eng = config_engine(cfg, scene, sensors, device="cpu", threads=threads)

@@ -83,7 +83,7 @@ def reference_curve(config: Path, device: str = "cpu", max_seconds: float = 60.0
     cfg = load_config(config)
     ref = read_reference(reference_path(config))
     scene = load_scene(cfg)
-    sensors = [s for s in collect_sensors(cfg, scene) if s.kind.name != "PROBE"]
+    sensors = [s for s in collect_sensors(cfg, scene) if s.spec.reader == "estimate"]
     missing = [s.name for s in sensors if s.name not in ref]
     if missing:
         raise UserError(f"{reference_path(config)}: no reference for sensor {missing[0]!r} ({len(missing)} missing)")

@@ -372,11 +372,10 @@ def chart_config(
     ladder, whatever the machine: what the tests use)."""
     from simulator.config.loader import load_config
     from simulator.pipeline import collect_sensors, config_engine, load_scene
-    from simulator.scene.model import SensorKind
 
     cfg = load_config(path)
     scene = load_scene(cfg)
-    sensors = [s for s in collect_sensors(cfg, scene) if s.kind != SensorKind.PROBE]
+    sensors = [s for s in collect_sensors(cfg, scene) if s.spec.reader == "estimate"]
     if not sensors:
         raise UserError(f"{cfg.path}: chart: no irradiance, radiance or patch sensors to chart")
     name = Path(cfg.path).stem

@@ -95,6 +95,10 @@ def _parser() -> argparse.ArgumentParser:
     w = sub.add_parser("warmup", help="compile every kernel now (first run only; runs then load them from the cache)")
     w.add_argument("--device", choices=("cpu", "cuda", "auto"),
                    help="compile for this device only (default: the CPU, and CUDA when there is a device)")
+    sn = sub.add_parser("sensor", help="a sensor model's quality indices (f1′, f2, DIN 5032-7 class, mismatch factor) "
+                        "and electronics; --list: the bundled models")
+    sn.add_argument("model", nargs="?", metavar="MODEL", help="a bundled model's name or a model .toml file")
+    sn.add_argument("--list", action="store_true", help="list the bundled models")
     sd = sub.add_parser("study", help="placement study: candidates x scenarios, zone figures, the best K sensors (resumable, dask)")
     sd.add_argument("study", metavar="STUDY.toml", help="study file (.toml)")
     sd.add_argument("-o", "--out", metavar="DIR", help="output and chunk folder (default: the study's [output] dir)")
@@ -176,8 +180,16 @@ def _cmd_plan(args) -> int:
     scene = load_scene(cfg)
     for w in scene.warnings:
         print(f"warning: {w}", file=sys.stderr)
-    sensors = [s for s in collect_sensors(cfg, scene) if s.kind.name != "PROBE"]
-    print(format_plan(make_plan(scene, sensors, cfg.simulation.method, cfg.simulation.component), max_rows=10**6))
+    sensors = [s for s in collect_sensors(cfg, scene) if s.spec.reader == "estimate"]
+    plan = make_plan(scene, sensors, cfg.simulation.method, cfg.simulation.component)
+    from simulator.sensor_models.readings import optics_twins
+
+    twins = optics_twins(sensors)
+    if twins:  # modelled sensors are read again through their optics
+        from simulator.plan.planner import with_optics
+
+        plan = with_optics(plan, scene, twins)
+    print(format_plan(plan, max_rows=10**6))
     return 0
 
 
@@ -211,6 +223,7 @@ def _cmd_bench(args) -> int:
 def _cmd_run(args) -> int:
     from simulator.config.loader import apply_overrides, load_config
     from simulator.commands.progress import ProgressBar
+    from simulator.io.glare_maps import glare_lines
     from simulator.io.results import format_table
     from simulator.pipeline import run
 
@@ -244,12 +257,16 @@ def _cmd_run(args) -> int:
         return 130
     if not args.quiet:
         print(format_table(out.rows, photometric_first=cfg.light_units == "photometric"))
+        from simulator.commands.sensor import format_readings
+
+        for line in format_readings(out.rows) + glare_lines(out.rows):
+            print(line)
     n = rec["sensors"]
     total = rec["samples_total"]
     trace = rec["timings_s"]["trace"]
     used = ", ".join(f"{m} ×{k}" for m, k in rec["method"]["used"].items())
     if rec["method"].get("probes"):
-        used += f", probes by {rec['method']['probes']}"
+        used = ", ".join(x for x in (used, f"probes and glare views by {rec['method']['probes']}") if x)
     t = rec["timings_s"]
     print(
         f"{n} sensors, {rec['triangles']:,} triangles, {total:,} samples, methods {used} on {rec['device']} "
@@ -311,6 +328,10 @@ def main(argv: list[str] | None = None) -> int:
             return _cmd_stability(args)
         if args.command == "example":
             return _cmd_example(args)
+        if args.command == "sensor":
+            from simulator.commands.sensor import main_sensor
+
+            return main_sensor(args.model, args.list)
         if args.command == "study":
             from simulator.commands.study import main_study
 

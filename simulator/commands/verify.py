@@ -182,6 +182,10 @@ def default_configs_dir() -> Path:
 def _load_case(case: Case, configs_dir: Path):
     """``(cfg, scene, sensors, context)`` of a case."""
     cfg, scene, sensors = read_config(configs_dir / case.config, case.light_units, case.variants)
+    if case.optics:  # the heads' readings: the optics twins of the modelled sensors
+        from simulator.sensor_models.readings import optics_twins
+
+        sensors = optics_twins(sensors)
     return cfg, scene, sensors, CaseContext(cfg, scene, configs_dir, sensors)
 
 

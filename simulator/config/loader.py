@@ -31,6 +31,7 @@ from simulator.config.records import (
     RunConfig, SimulationConfig,
 )  # fmt: skip
 from simulator.config.schema import RunFile
+from simulator.errors import UserError
 from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SENSOR_KINDS, Sensor, SensorKind
 
 __all__ = [
@@ -93,6 +94,7 @@ def load_config(path: str | os.PathLike) -> RunConfig:
     output = OutputConfig(csv=default_csv if doc.output.csv is None else resolve_path(base, doc.output.csv),
                           csv_columns=doc.output.csv_columns)
     sensors, grids = _sensors(doc, label)
+    _attach_models(doc, sensors, base, label)
     spectra = None
     if doc.output.responses is not None or doc.spectra is not None:
         from simulator.spectra.config import load_spectra_settings
@@ -111,7 +113,55 @@ def load_config(path: str | os.PathLike) -> RunConfig:
         variants=dict(doc.variants),
         spectra=spectra,
         time=doc.time,
+        times=_times(doc, label),
     )
+
+
+def _times(doc: RunFile, label: str) -> tuple[float, ...] | None:
+    """``times`` as a tuple, refused beside ``time`` (one line naming the key)."""
+    if doc.times is None:
+        return None
+    if doc.time is not None:
+        raise user_error(label, "times", "give time (one reading) or times (several), not both")
+    if len(set(doc.times)) != len(doc.times):
+        raise user_error(label, "times", "a time code is given twice")
+    return tuple(float(t) for t in doc.times)
+
+
+def _attach_models(doc: RunFile, sensors: list[Sensor], base: Path, label: str) -> None:
+    """Read the sensor models the entries name (each file once) and give each sensor its own; check
+    ``gain`` and ``integration_ms`` against the part (one line naming the key)."""
+    from simulator.sensor_models.model import load_model
+
+    by_source = {s.source: [] for s in sensors}
+    for s in sensors:
+        by_source[s.source].append(s)
+    for table, entries in (("sensor", doc.sensor), ("grid", doc.grid)):
+        for k, entry in enumerate(entries):
+            source = f"{table}[{k}]"
+            model = getattr(entry, "model", None)
+            gain, t_ms = getattr(entry, "gain", None), getattr(entry, "integration_ms", None)
+            if model is None:
+                for key, v in (("gain", gain), ("integration_ms", t_ms), ("azimuth_ref", getattr(entry, "azimuth_ref", None))):
+                    if v is not None:
+                        raise user_error(label, f"{source}.{key}", "only with a model (model = \"...\")")
+                continue
+            where = f"{label}: {source}.model"
+            try:
+                m = load_model(model, base, where)
+            except UserError as e:  # a model file's own mistake: named through the config's key
+                raise UserError(str(e) if str(e).startswith(where) else f"{where}: {e}") from None
+            if gain is not None and gain != "auto" and (isinstance(gain, bool) or not isinstance(gain, (int, float))
+                                                       or not gain > 0):
+                raise user_error(label, f"{source}.gain", f'expected a positive number or "auto", got {gain!r}')
+            if m.electronics is None:
+                if gain is not None or t_ms is not None:
+                    raise user_error(label, f"{source}.{'gain' if gain is not None else 'integration_ms'}",
+                                     f"model {m.name!r} has no electronics")
+            else:
+                m.electronics.check_setting(None if gain is None else gain, t_ms, f"{label}: {source}")
+            for s in by_source.get(source, ()):
+                s.model = m
 
 
 def _read_toml(cfg_path: Path, label: str) -> dict:

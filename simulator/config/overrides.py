@@ -167,5 +167,6 @@ def apply_overrides(
         output=output,
         variants=dict(doc.variants),
         time=doc.time,
+        times=None if time is not None else getattr(cfg, "times", None),  # --time: one reading, that time
         overrides={**cfg.overrides, **given},
     )

@@ -233,6 +233,9 @@ class RunConfig:
     time : float or None
         USD time code the stage is read at; None: its earliest time sample
         (``Usd.TimeCode.EarliestTime()``).
+    times : tuple of float or None
+        Several time codes (``times``): the run reads every sensor at each
+        (:func:`simulator.pipeline.run`); None: one reading, at ``time``.
     spectra : simulator.spectra.config.SpectraSettings or None
         ``output.responses`` and ``[spectra]``, resolved; None when the
         config has neither (the run writes only the standard columns).
@@ -251,3 +254,4 @@ class RunConfig:
     variants: dict = field(default_factory=dict)
     spectra: object | None = None
     time: float | None = None
+    times: tuple[float, ...] | None = None

@@ -81,7 +81,7 @@ from simulator.config.fields import (
 from simulator.config.records import (
     COMPONENTS, CSV_COLUMN_SETS, DEVICES, LIGHT_UNITS, METHODS, SEED_LIMIT, GridConfig, SimulationConfig,
 )  # fmt: skip
-from simulator.config.sensors import SensorEntry
+from simulator.config.sensors import MODEL_NAME, ModelName, SensorEntry
 from simulator.config.table import Table
 from simulator.config.variants import Variants
 from simulator.scene.model import Sensor, SensorKind, patch_width_axis
@@ -158,6 +158,7 @@ class Grid(Table):
         Field(description="cell size: one number or [sx, sy]; cells = round(size / spacing)",
               json_schema_extra={"unit": "m"}),
     ]
+    model: ModelName | None = MODEL_NAME
 
     def cells(self) -> tuple[int, int]:
         """``(nx, ny)``: the cell counts along the width and height, from size and spacing alone."""
@@ -177,7 +178,7 @@ class Grid(Table):
         cells = [
             Sensor(
                 name=grid.cell_name(i, j), kind=SensorKind.IRRADIANCE, position=grid.cell_centre(i, j),
-                normal=self.normal.copy(), grid=self.name, source=source,
+                normal=self.normal.copy(), grid=self.name, source=source, azimuth_ref=self.up.copy(),
             )  # fmt: skip
             for j in range(ny)
             for i in range(nx)
@@ -231,6 +232,9 @@ class RunFile(Table):
     time: Number | None = Field(
         None, description="USD time code the stage is read at (default: each attribute's earliest sample)"
     )
+    times: Annotated[list[Number], Field(min_length=1, max_length=100_000)] | None = Field(
+        None, description="or several: one CSV row per sensor and time code (a sensor prim with time samples moves "
+        "along its path), one trace for the times the rest of the stage is the same at")
     simulation: Simulation = Simulation()
     sensor: Annotated[list[SensorEntry], tables("sensor")] = []
     grid: Annotated[list[Grid], tables("grid")] = []

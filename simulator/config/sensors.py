@@ -8,7 +8,7 @@ discriminated union of them on ``kind``; a new kind is one more model in
 
 ::
 
-    [[sensor]]            # irradiance | radiance | patch | probe | cylindrical | semicylindrical
+    [[sensor]]            # irradiance | radiance | patch | probe | cylindrical | semicylindrical | glare
     name = "desk"         # default: "sensor[<index>]"
     kind = "irradiance"
     position = [0, 0, 0.75]   # metres
@@ -26,10 +26,10 @@ from pydantic_core import PydanticCustomError
 
 from simulator.config.errors import MISSING, expected, rule, unknown_key
 from simulator.config.fields import (
-    PARALLEL_SIN, Direction, Number, Point, Resolution, Size, Text, UpDirection, interval, nonblank, one_of,
+    PARALLEL_SIN, Direction, Number, Point, Positive, Resolution, Size, Text, UpDirection, interval, nonblank, one_of,
 )  # fmt: skip
 from simulator.config.table import Table
-from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SensorKind, Sensor
+from simulator.scene.model import DEFAULT_GLARE_RESOLUTION, DEFAULT_PROBE_RESOLUTION, SensorKind, Sensor
 
 __all__ = [
     "SensorFields",
@@ -39,6 +39,7 @@ __all__ = [
     "ProbeEntry",
     "CylindricalEntry",
     "SemicylindricalEntry",
+    "GlareEntry",
     "SENSOR_ENTRIES",
     "SENSOR_KEYS",
     "SensorEntry",
@@ -67,7 +68,7 @@ class SensorFields(Table):
     name: Annotated[Text, nonblank("empty name")] | None = Field(
         None, description="the CSV row's name (default: sensor[<index>])"
     )
-    kind: str = Field(description="irradiance | radiance | patch | probe | cylindrical | semicylindrical")
+    kind: str = Field(description="irradiance | radiance | patch | probe | cylindrical | semicylindrical | glare")
     position: Annotated[
         Point, Field(description="where the sensor is (a patch's centre)", json_schema_extra={"unit": "m"})
     ]
@@ -83,15 +84,44 @@ class SensorFields(Table):
         raise NotImplementedError
 
 
+#: a sensor model a ``[[sensor]]`` or ``[[grid]]`` names (checked against its file by the loader)
+ModelName = Annotated[Text, nonblank("empty model name")]
+MODEL_NAME = Field(None, description="a sensor model, bundled (probesim sensor --list) or a .toml file: the row "
+                   "adds the reading through its optics and electronics (docs/sensors.md)")
+#: the part's gain: one of its list, or "auto" (checked against the model by the loader)
+MODEL_GAIN = Field(None, json_schema_extra={"type": 'number or "auto"'},
+                   description='with a model: the part\'s gain, one of its list, or "auto" (default: auto where the part '
+                   "ranges, else its reference)")
+MODEL_INTEGRATION = Field(None, description="with a model: the integration time, one of the part's (default: the "
+                          "part's choice)")
+
+
 class IrradianceEntry(SensorFields):
-    """A point receiver: irradiance on the side ``normal`` faces."""
+    """A point receiver: irradiance on the side ``normal`` faces; with ``model``, also a real head's reading."""
 
     KIND = SensorKind.IRRADIANCE
     kind: Literal["irradiance"]
     normal: Annotated[Direction, Field(description="the side it faces (toward the light it measures)")]
+    model: ModelName | None = MODEL_NAME
+    gain: Any = MODEL_GAIN
+    integration_ms: Positive | None = MODEL_INTEGRATION
+    azimuth_ref: Direction | None = Field(
+        None, json_schema_extra={"type": "[x, y, z]"},
+        description="with a model with azimuth columns: its azimuth 0 (in the sensor's plane)")
 
     def to_sensor(self, name: str, source: str) -> Sensor:
-        return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.normal, source=source)
+        return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.normal, source=source,
+                      azimuth_ref=_in_plane(self.azimuth_ref, self.normal), gain=self.gain,
+                      integration_ms=self.integration_ms)
+
+
+def _in_plane(ref, normal: np.ndarray):
+    """``ref`` made orthogonal to ``normal`` and unit, or None (none given, or parallel to the normal)."""
+    if ref is None:
+        return None
+    v = ref - float(np.dot(ref, normal)) * normal
+    n = float(np.linalg.norm(v))
+    return v / n if n > PARALLEL_SIN else None
 
 
 class RadianceEntry(SensorFields):
@@ -117,7 +147,7 @@ class PatchEntry(SensorFields):
     kind: Literal["patch"]
     normal: Direction
     size: Annotated[Size, Field(description="width, height of the rectangle", json_schema_extra={"unit": "m"})]
-    up: Annotated[UpDirection, Field(description="direction of the height side")]
+    up: Annotated[UpDirection, Field(description="direction of the height side (glare: up in the view; default +Z)")]
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         return Sensor(
@@ -131,7 +161,8 @@ class ProbeEntry(SensorFields):
 
     KIND = SensorKind.PROBE
     kind: Literal["probe"]
-    resolution: Resolution = Field(DEFAULT_PROBE_RESOLUTION, description="lat-long map width, height in pixels")
+    resolution: Resolution = Field(DEFAULT_PROBE_RESOLUTION, description="lat-long map width, height in pixels "
+                                                                         "(glare: of the half in front, [128, 128])")
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         # a probe has no facing; normal and up are placeholders (the map's
@@ -191,6 +222,51 @@ class SemicylindricalEntry(SensorFields):
         return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.facing, up=self.axis, source=source)
 
 
+def _up_beside_direction(up: np.ndarray, info: ValidationInfo) -> np.ndarray:
+    view = info.data.get("direction")
+    if view is None:
+        return up
+    ortho = up - float(np.dot(up, view)) * view
+    length = float(np.linalg.norm(ortho))
+    if length < PARALLEL_SIN:
+        raise rule("parallel to {sibling}; up must point above the line of sight", sibling="direction")
+    return ortho / length
+
+
+def _evalglare(text: str) -> dict:
+    from simulator.glare.sources import parse_evalglare_options
+
+    try:
+        return parse_evalglare_options(text)
+    except ValueError as e:
+        raise rule(str(e)) from None
+
+
+class GlareEntry(SensorFields):
+    """An eye at ``position`` looking along ``direction``: E_v, DGP, DGPs, UGR and the glare sources
+    (:mod:`simulator.glare`)."""
+
+    KIND = SensorKind.GLARE
+    kind: Literal["glare"]
+    direction: Direction
+    up: Annotated[Direction, AfterValidator(_up_beside_direction)] = Field(
+        default_factory=lambda: [0.0, 0.0, 1.0], validate_default=True, description="up in the view (made orthogonal to direction)")
+    resolution: Resolution = Field(DEFAULT_GLARE_RESOLUTION)
+    evalglare: Annotated[Text, AfterValidator(_evalglare)] = Field(
+        "", description="source finding as evalglare options: -b threshold (cd/m², or ≤ 100: × task or mean "
+                        "luminance; 2000), -r radius (0.2), -y/-x/-Y lum (peak extraction, 50000), -C l+ (low-light "
+                        "correction; off), -t dx dy dz angle_deg (the task zone as a direction)")
+    dgp_stderr: Annotated[Number, interval(0.0, 1.0)] = Field(
+        0.005, description="the view traces until DGP's standard error is at most this")
+
+    def to_sensor(self, name: str, source: str) -> Sensor:
+        from simulator.glare.sources import GlareSettings
+
+        opts = dict(self.evalglare) if isinstance(self.evalglare, dict) else {}
+        return Sensor(name=name, kind=self.KIND, position=self.position, normal=self.direction, up=self.up,
+                      resolution=self.resolution, source=source, glare=GlareSettings(dgp_stderr=self.dgp_stderr, **opts))
+
+
 #: the model of each kind, by the name configs use (the order of
 #: :data:`simulator.scene.model.SENSOR_KINDS`)
 SENSOR_ENTRIES: dict[str, type[SensorFields]] = {
@@ -200,6 +276,7 @@ SENSOR_ENTRIES: dict[str, type[SensorFields]] = {
     "probe": ProbeEntry,
     "cylindrical": CylindricalEntry,
     "semicylindrical": SemicylindricalEntry,
+    "glare": GlareEntry,
 }
 #: every key some kind takes, in a stable order
 SENSOR_KEYS: tuple[str, ...] = tuple(dict.fromkeys(k for m in SENSOR_ENTRIES.values() for k in m.model_fields))

@@ -79,7 +79,7 @@ def host_analytic(scene, sensors, ids: np.ndarray, light_mask: np.ndarray | None
     some sensor or light needs the kernel (module docstring). ``light_mask`` (S, L): 0 where a light
     is culled for a sensor (wholly behind it: it adds nothing)."""
     ids = np.asarray(ids, np.int64)
-    if any(sensors[i].kind != SensorKind.IRRADIANCE for i in ids):
+    if any(sensors[i].kind != SensorKind.IRRADIANCE or getattr(sensors[i], "optics", None) is not None for i in ids):
         return None
     for l in scene.lights:
         if l.kind not in HOST_KINDS or l.shaping is not None or (l.kind == LightKind.DOME and l.texture):

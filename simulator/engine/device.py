@@ -161,7 +161,8 @@ class DeviceScene:
         self._keep: list = []  # device arrays referenced only by pointer from the records
         with wp.ScopedDevice(device):
             self.rec = self._upload_scene(wp, K, L, scene, len(sensors))
-            recs = [K.sensor_record(s) for s in sensors]
+            rows = self._upload_optics(wp, sensors)
+            recs = [K.sensor_record(s, rows.get(id(s.optics), 0)) for s in sensors]
             self.sensors = wp.array(recs, dtype=K.SensorRec) if recs else wp.zeros(1, dtype=K.SensorRec)
 
     def _upload_scene(self, wp, K, L, scene: Scene, n_sensors: int):
@@ -239,6 +240,22 @@ class DeviceScene:
                        rec.emit_prob, rec.lights]  # fmt: skip
         return rec
 
+    def _upload_optics(self, wp, sensors: list[Sensor]) -> dict[int, int]:
+        """The sensor models' angular responses (``Sensor.optics``, on the optics twins of modelled
+        sensors) as ``rec.optics``, one row per distinct response; returns ``id(response)`` → its row + 1
+        (``SensorRec.optics``). A run without one uploads a placeholder the kernels never read."""
+        from simulator.kernels.optics import OpticsRec, no_optics, optics_record
+
+        rows: dict[int, int] = {}
+        recs = []
+        for s in sensors:
+            if s.optics is not None and id(s.optics) not in rows:
+                recs.append(optics_record(s.optics, self._keep))
+                rows[id(s.optics)] = len(recs)
+        self.rec.optics = wp.array(recs or [no_optics(self._keep)], dtype=OpticsRec)
+        self._keep.append(self.rec.optics)
+        return rows
+
     def _upload_surfaces(self, wp, K, rec, g, lights: list) -> None:
         """The surfaces beyond Lambert (``Geometry.surfaces``, :mod:`simulator.kernels.surfaces`) on
         ``rec``; an all-matte stage gets ``surfaces = 0`` and one-element placeholders the kernels never
@@ -271,17 +288,59 @@ class DeviceScene:
         rec.surf_id = wp.array(sid, dtype=wp.int32)
         rec.surf_side = wp.array(side, dtype=wp.int32)
         rec.surf = wp.array(rows, dtype=SurfRec)
-        from simulator.scene.surfaces import mirror_planes
+        from simulator.scene.surfaces import mirror_planes, shaded_faces
 
-        planes, face_plane, _ = (mirror_planes(g.points, g.triangles, g.surface_id, g.surfaces) if modelled
+        shaded = shaded_faces(g) if modelled else None
+        planes, face_plane, _ = (mirror_planes(g.points, g.triangles, g.surface_id, g.surfaces, shaded) if modelled
                                  else (np.zeros((0, 4)), np.full(1, -1, np.int32), 0))
         rec.n_mirror_planes = len(planes)
         rec.mirror_planes = wp.array(planes.astype(np.float32) if len(planes) else np.zeros((1, 4), np.float32),
                                      dtype=wp.vec4)
         rec.face_mirror = wp.array(face_plane.astype(np.int32), dtype=wp.int32)
+        if len(planes):  # a plane that holds a mirror face (not panes alone): area lights are sampled in it
+            mirror_row = np.array([bool(getattr(s, "delta", False)) for s in g.surfaces] + [False], bool)
+            on = np.flatnonzero((face_plane >= 0) & mirror_row[g.surface_id])
+            plane_mirror = np.zeros(len(planes), np.int32)
+            plane_mirror[np.unique(face_plane[on])] = 1
+        else:
+            plane_mirror = np.zeros(1, np.int32)
+        rec.plane_mirror = wp.array(plane_mirror, dtype=wp.int32)
         self._upload_glints(wp, rec, g if modelled else None, lights)
-        self._keep += [rec.surf_id, rec.surf_side, rec.surf, rec.mirror_planes, rec.face_mirror]
+        self._keep += [rec.surf_id, rec.surf_side, rec.surf, rec.mirror_planes, rec.face_mirror, rec.plane_mirror]
         self._upload_textures(wp, rec, g if modelled else None)
+        self._upload_shading(wp, rec, g if modelled else None, shaded)
+
+    def _upload_shading(self, wp, rec, g, shaded) -> None:
+        """The shading normals of glossy and mirror faces and the curved mirrors they make
+        (:func:`simulator.scene.surfaces.curved_mirrors`, :mod:`simulator.kernels.glossy`,
+        :mod:`simulator.kernels.curved`) on ``rec``; one-element placeholders, never read, where no face
+        has them."""
+        from simulator.scene.surfaces import curved_mirrors
+
+        if g is None or shaded is None:
+            rec.n_shaded, rec.n_curves = 0, 0
+            ids, normals = np.full(1, -1, np.int32), np.zeros((3, 3), np.float32)
+            face_curve, spheres = np.full(1, -1, np.int32), np.zeros((1, 4), np.float32)
+        else:
+            faces = np.flatnonzero(shaded)
+            ids = np.full(g.n_triangles, -1, np.int32)
+            ids[faces] = np.arange(len(faces), dtype=np.int32)
+            corner = g.shading_normals[faces].astype(np.float64)
+            p = g.points[g.triangles[faces]]
+            front = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+            # on the front face's side (normals authored against the winding are read as the winding says)
+            corner *= np.where(np.einsum("ij,ij->i", corner.sum(axis=1), front) < 0, -1.0, 1.0)[:, None, None]
+            corner /= np.maximum(np.linalg.norm(corner, axis=2, keepdims=True), 1e-300)
+            normals = np.ascontiguousarray(corner.reshape(-1, 3), np.float32)
+            curves = curved_mirrors(g, shaded)
+            rec.n_shaded, rec.n_curves = len(faces), curves.n
+            face_curve = curves.face_curve.astype(np.int32)
+            spheres = curves.spheres.astype(np.float32) if curves.n else np.zeros((1, 4), np.float32)
+        rec.shade_id = wp.array(ids, dtype=wp.int32)
+        rec.shade_n = wp.array(normals, dtype=wp.vec3)
+        rec.face_curve = wp.array(face_curve, dtype=wp.int32)
+        rec.curve_sphere = wp.array(spheres, dtype=wp.vec4)
+        self._keep += [rec.shade_id, rec.shade_n, rec.face_curve, rec.curve_sphere]
 
     def _upload_glints(self, wp, rec, g, lights: list) -> None:
         """The glint pairs (:func:`simulator.scene.surfaces.glint_pairs`, :mod:`simulator.kernels.glints`)

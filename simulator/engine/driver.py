@@ -414,6 +414,8 @@ class Engine:
         p.pick_light = 0
         p.tally_pick = 0
         p.split_indirect = 0
+        p.optics = 0  # set per sensor by the estimator kernel (a probe's: 0, the cosine at every vertex)
+        p.optics_x = warp().vec3(1.0, 0.0, 0.0)
         p.rr_threshold = float(self.rr_threshold if self.rr_threshold is not None else self._rr_rule())
         return p
 
@@ -931,7 +933,8 @@ class Engine:
 
         base = HYBRID_METHODS[method]
         n_s = len(self.sensors)
-        irr = np.array([i for i in ids if self.sensors[i].kind == SensorKind.IRRADIANCE], np.int64)
+        irr = np.array([i for i in ids if self.sensors[i].kind == SensorKind.IRRADIANCE
+                        and getattr(self.sensors[i], "optics", None) is None], np.int64)  # the computed part reads the cosine
         if self._hero is not None or kw["component"] != "total" or not len(irr):
             r = self.run(base, sensor_ids=ids, **kw)
             r.method = method
@@ -1399,6 +1402,22 @@ class Engine:
             wp.launch(self._KP.probe_kernel_for(self._dev.rec.surfaces), dim=1,
                       inputs=[self._dev.rec, rec, params, 1, 0, 0, 1, 1, 0, 0], outputs=[d_shift, d_sum, d_sq, d_bad])
             return d_sum.numpy()[0][: P.N_QUANTITIES * P.N_CHANNELS].reshape(P.N_QUANTITIES, P.N_CHANNELS)
+
+    # probe passes over a layout of the caller's (glare views: simulator.engine.glare)
+
+    def probe_record(self):
+        """An empty ``ProbeRec`` to fill with a layout of one's own, the probe kernels loaded."""
+        KM.load([KM.trace_module(self.trace_variant.surfaces)], self.device)
+        return self._KP.ProbeRec()
+
+    def probe_passes(self, rec, params, first_pass: int, n_passes: int):
+        """Passes [first_pass, first_pass + n_passes) of every pixel of ``rec``: per-pixel
+        ``(counts, means, m2s, non_finite)`` as :meth:`run_probes` merges them."""
+        return self._launch_passes(rec, params, int(rec.width) * int(rec.height), first_pass, n_passes)
+
+    def probe_delta(self, rec, params) -> np.ndarray:
+        """The delta lights' exact part of the probe integrals at ``rec.position``, (22, 2)."""
+        return self._probe_delta(rec, params)
 
     def run_probes(
         self,

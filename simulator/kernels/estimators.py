@@ -81,11 +81,16 @@ from .sampling import (
 from .shadows import hit_light_before, shadow_ray_clear, shadow_ray_pass
 from .surfaces import ABSORB, MIRROR, mirror, transmittance_along
 from .bsdf import Bsdf, bsdf_f, bsdf_pdf, bsdf_sample, lobe_weights, mirror_reflectance
-from .glossy import face_bsdf, is_glossy, mirror_share
-from .mirrors import has_image, image_source, is_cone_light
+from .glossy import face_bsdf, is_glossy, is_shaded, mirror_share, spawn_origin, vertex_normal
+from .mirrors import (
+    ImageSample, area_image, area_image_mirror_prob, has_area_image, has_image, image_light_pdf, image_source,
+    is_cone_light, mirror_event_prob,
+)
+from .curved import curve_covers
 from .glints import glint_pdf, glint_sample, glint_share
 from .surface_rec import GlintRec
 from .shaping import shaping_factor
+from .optics import optics_frame_x, optics_pdf, optics_to_world, optics_weight, sample_optics
 from .spectral import Reflection, hero_nodes, lane_response, spectral_contribution, spectral_row
 from .spectral_surfaces import (
     bsdf_lanes, coloured_row, lane_ratio, mirror_lanes, pass_through_traced, shadow_lanes, walk_before,
@@ -231,6 +236,23 @@ def surface_albedo(scene: SceneRec, params: TraceParams, face: int, tint: wp.vec
     if m > 0.0:
         r.tint = t / m
     return r
+
+
+@wp.func
+def image_lanes(scene: SceneRec, params: TraceParams, im: ImageSample, tint: wp.vec4, o: wp.vec3) -> wp.vec4:
+    """``tint`` × the lanes of a light seen in a mirror (:mod:`.mirrors`), spectral mode: the mirror's
+    coloured reflectance and the coloured panes on the way to the mirror and from it to the light, each
+    over the grey share the sample already carries."""
+    tint_m = tint
+    if im.pane == 0 and coloured_row(scene, im.face)[0] != 0:
+        tint_m = wp.cw_mul(tint_m, lane_ratio(mirror_lanes(scene, im.face, params.hero, im.cos_m), im.refl))
+    if scene.spectral_panes != 0:
+        vis4 = transmittance_lanes(scene, params.hero, im.m_off, im.to_l, im.dist_l, im.tri)
+        tint_m = wp.cw_mul(tint_m, lane_ratio(vis4, im.vis))
+        if im.vis_in < 1.0:  # the panes before the mirror, per lane
+            vin4 = transmittance_lanes(scene, params.hero, o, im.wi, im.t_m - offset_length(scene, o + im.t_m * im.wi), -1)
+            tint_m = wp.cw_mul(tint_m, lane_ratio(vin4, im.vis_in))
+    return tint_m
 
 
 @wp.func
@@ -420,17 +442,21 @@ def analytic_sensor(scene: SceneRec, s: SensorRec) -> wp.vec2:
     return _analytic_chain(scene, s)
 
 
-def sensor_record(sensor: Sensor) -> SensorRec:
-    """The device record of one sensor: common fields, then its kind's ``upload``."""
+def sensor_record(sensor: Sensor, optics: int = 0) -> SensorRec:
+    """The device record of one sensor: common fields, then its kind's ``upload``. ``optics``: k ≥ 1 when
+    ``sensor.optics`` is row k − 1 of the scene's optics table (its azimuth reference goes in ``right``)."""
     r = SensorRec()
     r.kind = int(sensor.kind)
     r.position = wp.vec3(*map(float, sensor.position))
     r.normal = wp.vec3(*map(float, sensor.normal))
     r.one_minus_cos = 0.0
     r.cull = 1 if sensor.spec.culls_lights else 0
+    r.optics = int(optics)
     for k in SENSOR_KERNELS:
         if k.kind == sensor.kind and k.upload is not None:
             k.upload(r, sensor)
+    if optics > 0 and sensor.kind == SensorKind.IRRADIANCE and sensor.azimuth_ref is not None:
+        r.right = wp.vec3(*map(float, sensor.azimuth_ref))
     return r
 
 
@@ -529,6 +555,27 @@ def make_trace(surfaces: bool) -> Trace:
         g_face = int(-1)  # the glossy vertex's triangle
         g_lanes = int(0)  # 1: its BSDF is evaluated per hero lane (spectral mode, a coloured row)
         img_prev = int(0)  # 1: the vertex before p ran the image-source connection (kernels.mirrors)
+        # a sensor model's angular response r(ω) at the sensor's own vertex (kernels.optics; params.optics > 0,
+        # depth 0): light samples weigh r(ω)/cosθ, the direction is drawn by r (pdf in every MIS weight),
+        # and the guide and glints, strategies of cosine vertices, are not drawn there
+        opt = params.optics
+        opt_x = wp.vec3(1.0, 0.0, 0.0)
+        rr_t = params.rr_threshold  # the roulette's threshold on β: a head's paths carry ∫r dω/π of a cosine's
+        if opt > 0:
+            opt_x = optics_frame_x(params.optics_x, n_in)
+            rr_t = params.rr_threshold * (scene.optics[opt - 1].integral * INV_PI)
+        # a glossy vertex's shading normal (kernels.glossy.vertex_normal; n elsewhere), and whether it has one of
+        # its own (sh: its rays then leave past the face they head into, kernels.glossy.spawn_origin)
+        ns = n_in
+        sh = int(0)
+        o_prev = p_in  # the ray origin of the vertex before p, where it ran the image sources (curved mirrors' sun)
+        c_prev = int(-1)  # the curved mirror that vertex lay on (it connected none through its own)
+        # the vertex before p sampled area lights in flat mirrors (kernels.mirrors.area_image): its point, the
+        # normal its light samples stood on, and the path strategy's density of its direction toward p
+        ia_prev = int(0)
+        x_prev = p_in
+        nx_prev = n_in
+        pa_prev = float(0.0)
         if (scene.surfaces != 0 and is_glossy(scene, face_in)) if wp.static(surfaces) else False:
             gl = 1
             bs = face_bsdf(scene, face_in)
@@ -539,6 +586,10 @@ def make_trace(surfaces: bool) -> Trace:
             row = guide_row(scene, depth, cur_face)
             c_v = guide_fraction(scene, params, depth, row)
             if delta != 0:  # a mirror vertex on a pane follows its one direction: no guide there
+                c_v = 0.0
+            o_on = int(0)  # 1: this vertex is a modelled sensor's own (see opt above)
+            if depth == 0 and opt > 0:
+                o_on = 1
                 c_v = 0.0
             # Rays leave a surface from o, pushed off it (see offset_length). A
             # sensor within that push of a UsdLux light starts them at p itself:
@@ -551,8 +602,13 @@ def make_trace(surfaces: bool) -> Trace:
             count = not (skip_first != 0 and depth == 0)
             wo_l = wp.vec3(0.0, 0.0, 1.0)
             pm = float(0.0)  # probability of the glossy vertex's mirror part
+            ns = n
+            sh = 0
+            if (gl != 0 and is_shaded(scene, g_face)) if wp.static(surfaces) else False:
+                ns = vertex_normal(scene, g_face, p, n, wo_g)
+                sh = 1
             if gl != 0:
-                wo_l = to_local(wo_g, n)
+                wo_l = to_local(wo_g, ns)
                 pm = mirror_share(bs, wo_l[2])
                 # the guide is a strategy for the diffuse lobe: it is drawn with c times the share of the
                 # vertex's draws that go to that lobe, (1 − p_mirror)·w_diffuse, and the lobes with 1 − c_v
@@ -562,7 +618,7 @@ def make_trace(surfaces: bool) -> Trace:
             # samples where a glossy plane shows it a distant light's reflection: its direction density is
             # then p_dir(ω) = (1 − c_v)·((1 − gw)·cosθ/π + gw·p_glint(ω)) in every weight below
             gw = float(0.0)
-            if (scene.n_glints > 0 and gl == 0 and delta == 0) if wp.static(surfaces) else False:
+            if (scene.n_glints > 0 and gl == 0 and delta == 0 and o_on == 0) if wp.static(surfaces) else False:
                 gw = glint_share(scene.glints, scene.n_glints, p, n)
             # -- next-event estimation: each light once, or (pick_light) the
             #    delta lights and one light with area, picked with P(li | x)
@@ -583,12 +639,14 @@ def make_trace(surfaces: bool) -> Trace:
                         if li != pk.li:
                             continue
                         sel = pk.prob
-                    ls = sample_light(scene, li, p, n, u)  # geometry from the true point; only rays start at o
+                    ls = sample_light(scene, li, p, ns, u)  # geometry from the true point; only rays start at o
                     ls.value = ls.value * (shaping_factor(scene.lights[li], -ls.wi) / sel)
+                    if o_on != 0:  # the head reads L·r(ω): r(ω)/cosθ in place of the cosine ls.value carries
+                        ls.value = ls.value * optics_weight(scene.optics[opt - 1], opt_x, n, ls.wi)
                     pdf_dir = float(0.0)
                     tint_l = tint  # this sample's lanes: × each lane's BSDF and visibility over the grey ones
                     if gl != 0:  # the BSDF's value and the density its direction samples give wi
-                        wi_l = to_local(ls.wi, n)
+                        wi_l = to_local(ls.wi, ns)
                         f_grey = bsdf_f(bs, wi_l, wo_l)
                         ls.value = ls.value * (PI * f_grey)
                         pdf_dir = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
@@ -602,6 +660,8 @@ def make_trace(surfaces: bool) -> Trace:
                         if params.mis != 0 and ls.pdf > 0.0:
                             if gl == 0:
                                 pdf_dir = (1.0 - c_v) * pdf_cosine_hemisphere(wp.dot(ls.wi, n))
+                                if o_on != 0:
+                                    pdf_dir = optics_pdf(scene.optics[opt - 1], opt_x, n, ls.wi)
                                 if (gw > 0.0) if wp.static(surfaces) else False:
                                     pdf_dir = matte_dir_pdf(scene.glints, scene.n_glints, p, n, c_v, gw, ls.wi)
                             w = power_heuristic(sel * ls.pdf, pdf_dir)
@@ -609,9 +669,12 @@ def make_trace(surfaces: bool) -> Trace:
                             count_shadow_ray(scene, params)
                             clear = bool(True)
                             if (scene.surfaces != 0) if wp.static(surfaces) else False:  # through panes, cut-outs: their share
-                                vis = shadow_ray_pass(scene, o, p, li, ls)
+                                o_l = o
+                                if sh != 0:  # from the side of the face the light lies on
+                                    o_l = spawn_origin(p, o, ls.wi)
+                                vis = shadow_ray_pass(scene, o_l, p, li, ls)
                                 if params.spectral != 0 and scene.spectral_panes != 0 and vis > 0.0:
-                                    tint_l = wp.cw_mul(tint_l, lane_ratio(shadow_lanes(scene, params.hero, o, p, li, ls), vis))
+                                    tint_l = wp.cw_mul(tint_l, lane_ratio(shadow_lanes(scene, params.hero, o_l, p, li, ls), vis))
                                 ls.value = ls.value * vis
                                 clear = vis > 0.0
                             else:
@@ -635,38 +698,72 @@ def make_trace(surfaces: bool) -> Trace:
             #    light). A path from here off a mirror face of the table straight to the sun leaves the sun
             #    out (img_prev at the next vertex): this connection counts it
             img_here = int(0)
-            if params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes > 0:
+            ia_here = int(0)
+            c_here = int(-1)  # the curved mirror p lies on
+            if (scene.n_curves > 0) if wp.static(surfaces) else False:
+                own = wp.where(gl != 0, g_face, cur_face)
+                if own >= 0:
+                    c_here = scene.face_curve[own]
+            if params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes + scene.n_curves > 0:
                 img_here = 1
                 for li in range(scene.n_lights):
                     if not has_image(scene.lights[li]):
                         continue
-                    for k in range(scene.n_mirror_planes):
+                    for k in range(scene.n_mirror_planes + scene.n_curves):
+                        if k >= scene.n_mirror_planes and (pm >= 1.0 or k - scene.n_mirror_planes == c_here):
+                            continue  # a pure mirror's value would be 0 (no lobe but the delta); p's own curved mirror
                         count_shadow_ray(scene, params)
                         u_im = wp.vec2(0.0, 0.0)
                         if is_cone_light(scene.lights[li]):  # drawn for the sun only: others keep their stream
                             u_im = wp.vec2(wp.randf(rng), wp.randf(rng))
-                        im = image_source(scene, li, k, p, n, o, u_im)
+                        im = image_source(scene, li, k, p, ns, o, u_im, sh)
                         v = im.value
+                        if o_on != 0:
+                            v = v * optics_weight(scene.optics[opt - 1], opt_x, n, im.wi)
                         tint_m = tint
                         if gl != 0:
-                            f_grey = bsdf_f(bs, to_local(im.wi, n), wo_l)
+                            f_grey = bsdf_f(bs, to_local(im.wi, ns), wo_l)
                             v = v * (PI * f_grey)
                             if g_lanes != 0:
-                                f4 = bsdf_lanes(scene, g_face, params.hero, to_local(im.wi, n), wo_l)
+                                f4 = bsdf_lanes(scene, g_face, params.hero, to_local(im.wi, ns), wo_l)
                                 tint_m = wp.cw_mul(tint_m, lane_ratio(f4, f_grey))
                         if params.spectral != 0 and (v[0] > 0.0 or v[1] > 0.0):  # the mirror's and the panes' lanes
-                            if im.pane == 0 and coloured_row(scene, im.face)[0] != 0:
-                                tint_m = wp.cw_mul(tint_m, lane_ratio(mirror_lanes(scene, im.face, params.hero, im.cos_m),
-                                                                      im.refl))
-                            if scene.spectral_panes != 0:
-                                vis4 = transmittance_lanes(scene, params.hero, im.m_off, im.to_l, im.dist_l, -1)
-                                tint_m = wp.cw_mul(tint_m, lane_ratio(vis4, im.vis))
-                                if im.vis_in < 1.0:  # the panes before the mirror, per lane
-                                    vin4 = transmittance_lanes(scene, params.hero, o, im.wi,
-                                                               im.t_m - offset_length(scene, o + im.t_m * im.wi), -1)
-                                    tint_m = wp.cw_mul(tint_m, lane_ratio(vin4, im.vis_in))
+                            tint_m = image_lanes(scene, params, im, tint_m, o)
                         if v[0] > 0.0 or v[1] > 0.0:
                             total += light_contribution_dir(scene, params, li, weight * v, tint_m, im.wi)
+                # -- area lights seen in flat mirrors, sampled from p's mirror image (kernels.mirrors.area_image),
+                #    weighed by the power heuristic against the paths that make the same trip (their weight is
+                #    taken where they meet the light past the mirror, ia_prev)
+                if (params.mis != 0 and c_v <= 0.0 and gw <= 0.0 and not picks_at(params, depth)) if wp.static(surfaces) else False:
+                    ia_here = 1
+                    for li in range(scene.n_lights):
+                        if not has_area_image(scene, scene.lights[li]):
+                            continue
+                        for k in range(scene.n_mirror_planes):
+                            if scene.plane_mirror[k] == 0:
+                                continue
+                            count_shadow_ray(scene, params)
+                            im = area_image(scene, li, k, p, ns, o, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)), sh)
+                            v = im.value
+                            if v[0] > 0.0 or v[1] > 0.0:
+                                tint_m = tint
+                                pa = float(0.0)  # the path strategy's density of the same trip
+                                if gl != 0:
+                                    wi_l = to_local(im.wi, ns)
+                                    f_grey = bsdf_f(bs, wi_l, wo_l)
+                                    v = v * (PI * f_grey)
+                                    pa = (1.0 - pm) * bsdf_pdf(bs, wi_l, wo_l)
+                                    if g_lanes != 0:
+                                        tint_m = wp.cw_mul(tint_m, lane_ratio(bsdf_lanes(scene, g_face, params.hero, wi_l, wo_l), f_grey))
+                                elif o_on != 0:  # a modelled head: L·r(ω), its directions drawn by r
+                                    v = v * optics_weight(scene.optics[opt - 1], opt_x, n, im.wi)
+                                    pa = optics_pdf(scene.optics[opt - 1], opt_x, n, im.wi)
+                                else:
+                                    pa = pdf_cosine_hemisphere(wp.dot(im.wi, n))
+                                w = power_heuristic(im.pdf, pa * area_image_mirror_prob(scene, im))
+                                if params.spectral != 0:
+                                    tint_m = image_lanes(scene, params, im, tint_m, o)
+                                total += light_contribution_dir(scene, params, li, (weight * w) * v, tint_m, im.wi)
             if params.bsdf == 0:
                 break
             # -- Russian roulette (a weight window): below the threshold t the path
@@ -679,8 +776,8 @@ def make_trace(surfaces: bool) -> Trace:
             #    §Russian roulette); and a guided step toward a bright patch
             #    far off takes a small factor, which rouletting before that
             #    patch's own light is gathered would turn back into noise
-            if depth > 0 and beta < params.rr_threshold:
-                q_late = beta / params.rr_threshold
+            if depth > 0 and beta < rr_t:
+                q_late = beta / rr_t
                 if wp.randf(rng) >= q_late:
                     break
                 beta = beta / q_late
@@ -701,7 +798,7 @@ def make_trace(surfaces: bool) -> Trace:
                         if gl != 0:
                             # a glossy vertex: f·cosθx·jac / (p_lobes,A + c_v·p_guide,A), the lobes' density
                             # (1 − c_v)(1 − p_mirror)·pdf_bsdf·jac, times the segment's share
-                            gwi = to_local(g.wi, n)
+                            gwi = to_local(g.wi, ns)
                             p_lobes = (1.0 - c_v) * (1.0 - pm) * bsdf_pdf(bs, gwi, wo_l) * g.jac
                             den = p_lobes + c_v * g.density
                             if den <= 0.0:
@@ -753,6 +850,10 @@ def make_trace(surfaces: bool) -> Trace:
                     cur_face = g.face
                     prev_row = row
                     img_prev = img_here
+                    if wp.static(surfaces):
+                        o_prev = o
+                        c_prev = c_here
+                        ia_prev = 0
                     depth += 1
                     continue
             # -- a cosine-weighted direction: E ≈ π·L(ω)
@@ -763,9 +864,11 @@ def make_trace(surfaces: bool) -> Trace:
             mirror_now = int(0)
             pdf_g = float(0.0)
             gl_x = gl  # whether this vertex is glossy (gl then follows the next one)
+            o_pdf = float(0.0)  # a modelled sensor's direction: its density and r/pdf (o_on)
+            o_w = float(0.0)
             if delta == 0 and gl != 0:
                 if pm > 0.0 and wp.randf(rng) < pm:  # the mirror part: reflectance F over its probability
-                    wi = mirror(-wo_g, n)
+                    wi = mirror(-wo_g, ns)
                     f_grey = mirror_reflectance(bs, wo_l[2])
                     g_dir = f_grey / pm
                     if c_v > 0.0:  # ... which is (1 − c_v)·p_mirror beside the guide
@@ -784,7 +887,7 @@ def make_trace(surfaces: bool) -> Trace:
                         break
                     f_grey = bsdf_f(bs, wi_l, wo_l)
                     g_dir = f_grey * wi_l[2] / pdf_g
-                    wi = to_world(wi_l, n)
+                    wi = to_world(wi_l, ns)
                     if g_lanes != 0:
                         tint_d = wp.cw_mul(tint, lane_ratio(bsdf_lanes(scene, g_face, params.hero, wi_l, wo_l), f_grey))
                 if g_lanes != 0:  # β takes the lanes' mean, the tint keeps mean 1 (as surface_albedo)
@@ -799,6 +902,12 @@ def make_trace(surfaces: bool) -> Trace:
                 if glint_now:  # the glint strategy
                     wi = glint_sample(scene.glints, scene.n_glints, p, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
                     local = to_local(wi, n)
+                elif o_on != 0:  # drawn by the head's response (local: its frame, z along n)
+                    o_s = sample_optics(scene.optics[opt - 1], wp.vec2(wp.randf(rng), wp.randf(rng)))
+                    local = o_s.local
+                    wi = optics_to_world(local, opt_x, n)
+                    o_pdf = o_s.pdf
+                    o_w = o_s.weight
                 else:
                     local = sample_cosine_hemisphere(wp.vec2(wp.randf(rng), wp.randf(rng)))
                     wi = to_world(local, n)
@@ -812,6 +921,14 @@ def make_trace(surfaces: bool) -> Trace:
             if gl != 0:
                 pdf_b = pdf_g
                 w_dir = weight * PI * g_dir
+            if o_on != 0:  # E_r ≈ L·r(ω)/p_r(ω); the next vertex's weight w_dir·ρ/π: β takes (r/p)/π
+                pdf_b = o_pdf
+                w_dir = weight * o_w
+            o_x = o  # the origin p's image sources used, p and its light normal (o_prev, x_prev, nx_prev next)
+            p_x = p
+            ns_x = ns
+            if (sh != 0) if wp.static(surfaces) else False:  # leave past the face wi heads into
+                o = spawn_origin(p, o, wi)
             count_ray(scene, params)
             hit = first_hit(scene, o, wi, RAY_INF)
             event = int(0)
@@ -849,8 +966,12 @@ def make_trace(surfaces: bool) -> Trace:
                 if t > 0.0 and count and not computed_at(scene, params.mask_row, depth, li):
                     w = float(1.0)
                     if weigh:
-                        pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, t, -1)
+                        pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, ns, wi, t, -1)
                         w = power_heuristic(pdf_b, pdf_l)
+                    elif (ia_prev != 0 and (mirror_now != 0 or delta != 0) and cur_face >= 0) if wp.static(surfaces) else False:
+                        # past a flat mirror from a vertex that sampled this light in it: against that sample
+                        pb = image_light_pdf(scene, li, cur_face, x_prev, nx_prev, o, wi, t)
+                        w = power_heuristic(pa_prev * wp.where(mirror_now != 0, pm, 1.0), pb)
                     tint_l = tint_before
                     w_l = float(1.0)
                     if t >= wp.min(t_tint, t_pass):  # past a weighted or coloured pane: those in front of the light only
@@ -865,17 +986,26 @@ def make_trace(surfaces: bool) -> Trace:
                 # vertex that ran the image source: the sun along it was counted there (kernels.mirrors), not
                 # again here
                 img_skip = bool(False)
+                curve_k = int(-1)  # a curved mirror's: left out where the connection lands on this point (kernels.curved)
                 if ((mirror_now != 0 or delta != 0) and img_prev != 0 and cur_face >= 0) if wp.static(surfaces) else False:
                     img_skip = scene.face_mirror[cur_face] >= 0
+                    if scene.n_curves > 0:
+                        curve_k = scene.face_curve[cur_face]
+                        if curve_k == c_prev:
+                            curve_k = -1  # the vertex before lay on that mirror: it connected nothing through it
                 for li in range(scene.n_lights):
                     le = escaped_radiance(scene.lights[li], wi)
                     if img_skip:
                         if is_cone_light(scene.lights[li]):
                             le = wp.vec2(0.0, 0.0)
+                    elif (curve_k >= 0) if wp.static(surfaces) else False:
+                        if is_cone_light(scene.lights[li]) and (le[0] > 0.0 or le[1] > 0.0):
+                            if curve_covers(scene, curve_k, o_prev, p, wi):
+                                le = wp.vec2(0.0, 0.0)
                     if (le[0] > 0.0 or le[1] > 0.0) and count and not computed_at(scene, params.mask_row, depth, li):
                         w = float(1.0)
                         if weigh:
-                            pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, n, wi, RAY_INF, -1)
+                            pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, ns, wi, RAY_INF, -1)
                             w = power_heuristic(pdf_b, pdf_l)
                         total += light_contribution_dir(scene, params, li, (w_dir * w) * le, tint_d, wi)
                 break
@@ -900,6 +1030,9 @@ def make_trace(surfaces: bool) -> Trace:
                     # 1 − c) weighs it: β takes 1/(1 − c), and no mixture factor at the vertex it reaches
                     beta = beta / (1.0 - c_v)
                     weight = weight_in * beta
+                if o_on != 0:
+                    beta = beta * (o_w * INV_PI)
+                    weight = weight_in * beta
                 tint = tint_d
                 p = o + t_hit * wi
                 n = wp.where(cos_view > 0.0, ng, -ng)
@@ -907,6 +1040,13 @@ def make_trace(surfaces: bool) -> Trace:
                 delta = 1
                 cur_face = face
                 img_prev = wp.where(mirror_now == 0, img_here, 0)  # a pane's reflection is the image source's too
+                if wp.static(surfaces):
+                    o_prev = o_x
+                    c_prev = c_here
+                    ia_prev = wp.where(mirror_now == 0, ia_here, 0)
+                    x_prev = p_x
+                    nx_prev = ns_x
+                    pa_prev = pdf_b * mirror_event_prob(scene, face, wi, ng, 0.0)  # the path takes the pane's reflection
                 depth += 1
                 continue
             delta = 0
@@ -927,6 +1067,8 @@ def make_trace(surfaces: bool) -> Trace:
             if gl != 0:
                 beta = beta * g_dir
                 gl = 0
+            if o_on != 0:
+                beta = beta * (o_w * INV_PI)
             tint = tint_d
             refl = surface_albedo(scene, params, face, tint)
             if (scene.surfaces != 0 and is_glossy(scene, face)) if wp.static(surfaces) else False:
@@ -960,6 +1102,13 @@ def make_trace(surfaces: bool) -> Trace:
             cur_face = face
             prev_row = row
             img_prev = wp.where(mirror_now == 0, img_here, 0)  # past a mirror part: two reflections, not connected
+            if wp.static(surfaces):
+                o_prev = o_x
+                c_prev = c_here
+                ia_prev = wp.where(mirror_now == 0, ia_here, 0)
+                x_prev = p_x
+                nx_prev = ns_x
+                pa_prev = pdf_b
             depth += 1
         return total
 
@@ -1048,11 +1197,13 @@ def make_trace(surfaces: bool) -> Trace:
         if (scene.surfaces != 0 and is_glossy(scene, face)) if wp.static(surfaces) else False:  # L = ∫ f L cos dω: π·f
             n = wp.where(cos_view > 0.0, ng, -ng)
             prm = params
+            prm.optics = 0  # a meter's first surface is a surface: its cosine
             prm.tint = tint_r
             total += vertex_estimate(scene, o + t_hit * d, n, wr * INV_PI, prm, skip_next, rng, face, -d)
         elif refl.rho > 0.0:
             n = wp.where(cos_view > 0.0, ng, -ng)
             prm = params
+            prm.optics = 0  # a meter's first surface is a surface: its cosine
             prm.tint = refl.tint
             total += vertex_irradiance(scene, o + t_hit * d, n, (wr * refl.rho) * INV_PI, prm, skip_next, rng)
         return total
@@ -1162,6 +1313,8 @@ def make_trace(surfaces: bool) -> Trace:
         prm = params
         prm.thread = t
         prm.mask_row = wp.where(s.cull != 0, sid, -1)
+        prm.optics = s.optics
+        prm.optics_x = s.right
         n_resp = int(0)
         if params.spectral != 0:
             n_resp = scene.response_weights.shape[0]

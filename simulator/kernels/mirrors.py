@@ -30,6 +30,33 @@ only (light seen through two mirrors is not connected). A path that makes
 the same trip (x, a mirror face of a plane in the table, its mirror part,
 the sun) leaves the sun out where x ran this connection
 (``estimators.vertex_estimate``), so each path is counted by one strategy.
+
+Curved mirrors (``k`` past the flat planes: ``scene.n_curves`` pieces of
+shaded mirror faces) are solved by Newton's method instead of imaged
+(:func:`curve_image`, :mod:`.curved`).
+
+**Area lights in flat mirrors** (sphere, disk, rect and cylinder lights):
+a direction sample meets a small light's image only with the light's solid
+angle, so an irradiance sensor that sees a globe only in a mirror read it
+with the noise of a rare hit (at 256 samples a third of the runs read none
+of it, with a standard error of 0, and an adaptive run stopped on such an
+underestimated error). :func:`area_image` samples the light as seen from
+the receiver's mirror image x' = x − 2(n·x − d)n, with its own sampler and
+pdf (its normal mirrored likewise, so the cosine at x' is the one at x):
+the direction w' from x' to the light point y crosses the plane at m, and
+the real path is x → m → y, leaving x along w' mirrored; reflection keeps
+solid angle, so the sample's solid-angle pdf at x is the light's from x'.
+The segment x → m must meet a mirror face of the plane, which reflects
+c·F(cos θ_m), and m → y passes what lets light through at its share. A
+path that makes the same trip (x, a direction sample, a face of that plane
+taken as a mirror, the light hit) is the other strategy for the same
+light: both are weighed by the power heuristic (``estimators``, with
+:func:`image_light_pdf` at the mirror point), the path's density being its
+direction's pdf at x times the probability of the mirror event at m (the
+glossy vertex's mirror share, a pane's R/(R + T)), so nothing is counted
+twice. Only planes that hold a mirror face are sampled so (``scene.
+plane_mirror``): a pane reflects R ≈ 4–8%, and its paths find that share at
+the noise of any other reflection.
 """
 
 import warp as wp
@@ -38,8 +65,9 @@ from simulator.scene.model import LightKind
 
 from .bsdf import mirror_reflectance
 from .coverage import coverage_at
-from .glossy import face_bsdf
-from .lights import RAY_INF, LightRec, SceneRec
+from .curved import curve_solve
+from .glossy import face_bsdf, mirror_share, spawn_origin
+from .lights import RAY_INF, LightRec, SceneRec, pdf_light, sample_light, tri_vertex
 from .rays import first_hit, offset_length
 from .sampling import pdf_uniform_cone, sample_uniform_cone, to_world
 from .shaping import shaping_factor
@@ -47,6 +75,10 @@ from .surfaces import MAX_PASSES, pane_rt, pass_factor, transmittance_along
 
 _POINT_M = wp.constant(int(LightKind.POINT))
 _DISTANT_M = wp.constant(int(LightKind.DISTANT))
+_SPHERE_M = wp.constant(int(LightKind.SPHERE))
+_RECT_M = wp.constant(int(LightKind.RECT))
+_DISK_M = wp.constant(int(LightKind.DISK))
+_CYLINDER_M = wp.constant(int(LightKind.CYLINDER))
 
 
 @wp.struct
@@ -66,6 +98,8 @@ class ImageSample:
     t_m: float
     vis_in: float
     pane: int  # 1: the mirror face is a pane's (its reflectance is the slab's, grey)
+    pdf: float  # an area light's image sample: its solid-angle pdf at the receiver (0 for a delta light's image)
+    tri: int  # the emissive triangle the light sample ends on, −1 for UsdLux lights
 
 
 @wp.func
@@ -82,12 +116,26 @@ def is_cone_light(l: LightRec) -> bool:
 
 
 @wp.func
-def image_source(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp.vec3, u: wp.vec2) -> ImageSample:
-    """The light of light ``li`` (:func:`has_image`) reaching (p, n) off mirror plane ``k``; rays start at
-    o; ``u`` draws the direction in a distant light's cone."""
+def no_image(n: wp.vec3) -> ImageSample:
+    """A connection that found nothing."""
     out = ImageSample()
     out.value = wp.vec2(0.0, 0.0)
     out.wi = n
+    out.pdf = 0.0
+    out.tri = -1
+    return out
+
+
+@wp.func
+def image_source(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp.vec3, u: wp.vec2,
+                 shaded: int) -> ImageSample:
+    """The light of light ``li`` (:func:`has_image`) reaching (p, n) off mirror plane ``k``, or off curved
+    mirror ``k`` − ``scene.n_mirror_planes`` (:func:`curve_image`); rays start at o (past the face a
+    direction heads into, on a ``shaded`` glossy vertex: :func:`.glossy.spawn_origin`); ``u`` draws the
+    direction in a distant light's cone."""
+    if k >= scene.n_mirror_planes:
+        return curve_image(scene, li, k - scene.n_mirror_planes, p, n, o, u)
+    out = no_image(n)
     l = scene.lights[li]
     pl = scene.mirror_planes[k]
     pn = wp.vec3(pl[0], pl[1], pl[2])
@@ -121,6 +169,9 @@ def image_source(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp
     dn = wp.dot(wi, pn)
     if dn * side_x >= 0.0:
         return out  # heading away from the plane
+    o_w = o
+    if shaded != 0:
+        o_w = spawn_origin(p, o, wi)
     # to the plane, through what passes light on the way, to a mirror face of plane k
     vis_in = float(1.0)
     start = float(0.0)
@@ -128,7 +179,7 @@ def image_source(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp
     ng_m = pn
     for j in range(MAX_PASSES):
         if face < 0:
-            h = first_hit(scene, o + start * wi, wi, RAY_INF)
+            h = first_hit(scene, o_w + start * wi, wi, RAY_INF)
             if h.face < 0:
                 return out
             if scene.face_mirror[h.face] == k:
@@ -138,14 +189,14 @@ def image_source(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp
             else:
                 if scene.surf_id[h.face] < 0:
                     return out  # a matte face blocks it
-                q = o + (start + h.t) * wi
+                q = o_w + (start + h.t) * wi
                 vis_in = vis_in * pass_factor(scene, h.face, wi, h.ng, q)
                 if vis_in <= 0.0:
                     return out
                 start = start + h.t + offset_length(scene, q)
     if face < 0:
         return out
-    m = o + start * wi
+    m = o_w + start * wi
     srow = scene.surf[scene.surf_id[face]]
     cover = coverage_at(scene, srow, face, m)
     if srow.pane == 2:  # a translucent layer: its slab is the gap 1 − c, the share c its matte face (surfaces.pass_factor)
@@ -187,3 +238,227 @@ def image_source(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp
     out.vis_in = vis_in
     out.pane = srow.pane
     return out
+
+
+@wp.func
+def face_normal(scene: SceneRec, face: int) -> wp.vec3:
+    """The unit front normal of triangle ``face``."""
+    a = tri_vertex(scene, face, 0)
+    return wp.normalize(wp.cross(tri_vertex(scene, face, 1) - a, tri_vertex(scene, face, 2) - a))
+
+
+@wp.func
+def curve_image(scene: SceneRec, li: int, c: int, p: wp.vec3, n: wp.vec3, o: wp.vec3, u: wp.vec2) -> ImageSample:
+    """The light of light ``li`` (:func:`has_image`) reaching (p, n) off curved mirror ``c``
+    (:mod:`.curved`): E = F·I·cos θ_x/(|l − m|²·|det A|) for a point light, F·E⊥·cos θ_x/|det A| for
+    an angle-0 distant one, and for the sun one direction of its cone (pdf 1/Ω) as the latter; rays
+    from o."""
+    out = no_image(n)
+    l = scene.lights[li]
+    point = int(0)
+    tgt = l.ez
+    inv_pdf = float(1.0)
+    if l.kind == _POINT_M:
+        point = 1
+        tgt = l.position
+    elif l.kind == _DISTANT_M:
+        if l.one_minus_cos > 0.0:  # one direction of the cone, pdf 1/Ω
+            tgt = to_world(sample_uniform_cone(u, l.one_minus_cos), l.ez)
+            inv_pdf = 1.0 / pdf_uniform_cone(l.one_minus_cos)
+    else:
+        return out
+    sph = scene.curve_sphere[c]
+    if wp.dot(n, wp.vec3(sph[0], sph[1], sph[2]) - p) <= -sph[3]:
+        return out  # the mirror lies wholly behind the receiver's plane
+    cs = curve_solve(scene, c, o, tgt, point)
+    if cs.ok == 0:
+        return out
+    cos_x = wp.dot(cs.d, n)
+    if cos_x <= 0.0:
+        return out
+    face = cs.face
+    cover = coverage_at(scene, scene.surf[scene.surf_id[face]], face, cs.m)
+    if cover <= 0.0:
+        return out
+    ng = face_normal(scene, face)
+    side = wp.where(wp.dot(cs.q, ng) > 0.0, ng, -ng)  # the reflected ray leaves past the face it heads into
+    m_off = cs.m + offset_length(scene, cs.m) * side
+    dist_l = float(RAY_INF)
+    if point != 0:
+        dist_l = cs.dist
+    vis = transmittance_along(scene, m_off, cs.q, dist_l, -1)
+    if vis <= 0.0:
+        return out
+    cos_m = wp.abs(wp.dot(cs.d, cs.ns))
+    refl = mirror_reflectance(face_bsdf(scene, face), cos_m)
+    e = cs.vis_in * vis * cover * refl * cos_x / cs.det
+    if point != 0:
+        e = e * shaping_factor(l, -cs.q) / (cs.dist * cs.dist)
+    else:
+        e = e * inv_pdf
+    out.wi = cs.d
+    out.value = e * l.emission
+    out.face = face
+    out.cos_m = cos_m
+    out.refl = refl
+    out.m_off = m_off
+    out.to_l = cs.q
+    out.dist_l = dist_l
+    out.vis = vis
+    out.t_m = cs.t
+    out.vis_in = cs.vis_in
+    out.pane = 0
+    return out
+
+
+@wp.func
+def has_area_image(scene: SceneRec, l: LightRec) -> bool:
+    """Whether :func:`area_image` samples light ``l``: a sphere, disk, rect or cylinder light, on a stage
+    with a flat mirror plane."""
+    if scene.n_mirror_planes == 0:
+        return False
+    return l.kind == _SPHERE_M or l.kind == _RECT_M or l.kind == _DISK_M or l.kind == _CYLINDER_M
+
+
+@wp.func
+def mirror_image_point(pl: wp.vec4, p: wp.vec3) -> wp.vec3:
+    """p reflected in the plane n·x = d."""
+    pn = wp.vec3(pl[0], pl[1], pl[2])
+    return p - (2.0 * (wp.dot(pn, p) - pl[3])) * pn
+
+
+@wp.func
+def mirror_image_dir(pl: wp.vec4, v: wp.vec3) -> wp.vec3:
+    """Direction v reflected in the plane of normal n (pl's first three numbers)."""
+    pn = wp.vec3(pl[0], pl[1], pl[2])
+    return v - (2.0 * wp.dot(pn, v)) * pn
+
+
+@wp.func
+def mirror_event_prob(scene: SceneRec, face: int, d: wp.vec3, ng: wp.vec3, pm: float) -> float:
+    """The probability a path's ray along ``d`` takes face ``face`` as a mirror once it stops there: a pane's
+    slab reflects with R/(R + T) (:func:`.surfaces.surface_event`), a glossy face's mirror part with ``pm``
+    (:func:`.glossy.mirror_share`)."""
+    s = scene.surf[scene.surf_id[face]]
+    if s.pane != 0:
+        rt = pane_rt(scene, face, d, ng)
+        if rt[0] + rt[1] <= 0.0:
+            return 0.0
+        return rt[0] / (rt[0] + rt[1])
+    return pm
+
+
+@wp.func
+def area_image(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp.vec3, u: wp.vec3,
+               shaded: int) -> ImageSample:
+    """One sample of area light ``li`` (:func:`has_area_image`) seen from (p, n) in flat mirror plane ``k``
+    (module docstring): drawn by the light's sampler from p's image, its value L·cos θ·c·F·(visibility)/pdf
+    and its solid-angle pdf at p; rays start at o (:func:`image_source`)."""
+    out = no_image(n)
+    pl = scene.mirror_planes[k]
+    pn = wp.vec3(pl[0], pl[1], pl[2])
+    side_x = wp.dot(pn, p) - pl[3]
+    if side_x == 0.0:
+        return out
+    ls = sample_light(scene, li, mirror_image_point(pl, p), mirror_image_dir(pl, n), u)
+    if ls.pdf <= 0.0 or (ls.value[0] <= 0.0 and ls.value[1] <= 0.0):
+        return out
+    dn = wp.dot(ls.wi, pn)
+    if dn * side_x <= 0.0:
+        return out  # from the image away from the plane: the light is not seen in it
+    t_plane = side_x / dn  # from the image to the plane along w'
+    if t_plane >= ls.dist:
+        return out  # the light lies beyond the mirror
+    wi = mirror_image_dir(pl, ls.wi)
+    if wp.dot(wi, n) <= 0.0:
+        return out
+    o_w = o
+    if shaded != 0:
+        o_w = spawn_origin(p, o, wi)
+    vis_in = float(1.0)
+    start = float(0.0)
+    face = int(-1)
+    ng_m = pn
+    for j in range(MAX_PASSES):
+        if face < 0:
+            h = first_hit(scene, o_w + start * wi, wi, RAY_INF)
+            if h.face < 0:
+                return out
+            if scene.face_mirror[h.face] == k:
+                face = h.face
+                ng_m = h.ng
+                start = start + h.t
+            else:
+                if scene.surf_id[h.face] < 0:
+                    return out
+                q = o_w + (start + h.t) * wi
+                vis_in = vis_in * pass_factor(scene, h.face, wi, h.ng, q)
+                if vis_in <= 0.0:
+                    return out
+                start = start + h.t + offset_length(scene, q)
+    if face < 0:
+        return out
+    m = o_w + start * wi
+    srow = scene.surf[scene.surf_id[face]]
+    cover = coverage_at(scene, srow, face, m)
+    if srow.pane == 2:  # a translucent layer: its slab is the gap 1 − c
+        cover = 1.0 - cover
+    if cover <= 0.0:
+        return out
+    side_n = wp.where(side_x > 0.0, pn, -pn)
+    m_off = m + offset_length(scene, m) * side_n
+    dist_l = ls.dist - t_plane
+    vis = transmittance_along(scene, m_off, ls.wi, dist_l, ls.tri)
+    if vis <= 0.0:
+        return out
+    cos_m = wp.abs(dn)
+    refl = float(0.0)
+    if srow.pane != 0:
+        refl = pane_rt(scene, face, wi, ng_m)[0]
+    else:
+        refl = mirror_reflectance(face_bsdf(scene, face), cos_m)
+    l = scene.lights[li]
+    out.wi = wi
+    out.value = ls.value * (vis_in * vis * cover * refl * shaping_factor(l, -ls.wi))
+    out.pdf = ls.pdf
+    out.tri = ls.tri
+    out.face = face
+    out.cos_m = cos_m
+    out.refl = refl
+    out.m_off = m_off
+    out.to_l = ls.wi
+    out.dist_l = dist_l
+    out.vis = vis
+    out.t_m = start
+    out.vis_in = vis_in
+    out.pane = srow.pane
+    return out
+
+
+@wp.func
+def area_image_mirror_prob(scene: SceneRec, im: ImageSample) -> float:
+    """The probability a path along the sample's direction takes its mirror face as a mirror
+    (:func:`mirror_event_prob`: the path strategy's discrete share of the same trip)."""
+    if im.pane != 0:
+        return mirror_event_prob(scene, im.face, im.wi, face_normal(scene, im.face), 0.0)
+    return mirror_share(face_bsdf(scene, im.face), im.cos_m)
+
+
+@wp.func
+def image_light_pdf(scene: SceneRec, li: int, face: int, x: wp.vec3, nx: wp.vec3, o: wp.vec3, wi: wp.vec3,
+                    t: float) -> float:
+    """The solid-angle pdf with which :func:`area_image` at the vertex (x, nx) before a mirror point would
+    have drawn the path's light point: the light's pdf from x's image in the plane of mirror ``face``
+    toward the ray (o, wi) that left the mirror point and meets the light at distance t; 0 where
+    :func:`area_image` does not sample that light in that face."""
+    k = scene.face_mirror[face]
+    if k < 0:
+        return 0.0
+    if scene.plane_mirror[k] == 0 or not has_area_image(scene, scene.lights[li]):
+        return 0.0
+    pl = scene.mirror_planes[k]
+    pn = wp.vec3(pl[0], pl[1], pl[2])
+    if wp.dot(pn, x) - pl[3] == 0.0:
+        return 0.0
+    x_img = mirror_image_point(pl, x)
+    return pdf_light(scene, li, x_img, mirror_image_dir(pl, nx), wi, wp.length(o - x_img) + t, -1)

@@ -20,6 +20,7 @@ class SensorRec:
     height: float
     one_minus_cos: float  # radiance cone: 1 − cos(half-angle); 0 = one direction
     cull: int  # 1: the first vertex is the sensor, so the plan's light mask applies there
+    optics: int  # 0: an ideal head (cosine); k ≥ 1: its angular response is SceneRec.optics[k − 1] (kernels.optics)
 
 
 @wp.struct
@@ -57,3 +58,5 @@ class TraceParams:
     tally_pick: int  # 1: tally the light pick's pilot sums in scene.pick_tally (a pilot run)
     rr_threshold: float  # Russian roulette weight window (engine.methods.rr_threshold_rule)
     split_indirect: int  # K ≥ 2: an irradiance sample is one direct estimate + the mean of K indirect paths (kernels.estimators.split_irradiance)
+    optics: int  # set by the kernel: the sensor's SensorRec.optics, read at its own vertex (depth 0) only
+    optics_x: wp.vec3  # set by the kernel: the sensor's azimuth reference (SensorRec.right), for a head with azimuth columns

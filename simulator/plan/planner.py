@@ -50,7 +50,7 @@ from simulator.plan.bounds import FrontIndex
 from simulator.scene.model import LightKind, Scene, Sensor, SensorKind, patch_width_axis
 
 __all__ = ["MC_METHODS", "SensorPlan", "Plan", "SceneBounds", "make_plan", "probe_method", "analytic_refusal", "scene_bounds",
-           "lights_behind", "lights_behind_many", "cull_mask", "closed_form_refusal", "format_plan"]
+           "lights_behind", "lights_behind_many", "cull_mask", "closed_form_refusal", "format_plan", "with_optics"]
 
 #: a light subtending more than this solid angle (sr) from a direct-lit
 #: sensor makes `mis` the plan: its cosine-weighted direction then lands on
@@ -271,6 +271,19 @@ class Plan:
     light_sampling: dict[str, str] = field(default_factory=dict)
     #: one line per surface beyond Lambert: what it needs and why (:func:`surface_needs`); empty: all matte
     surfaces: list[str] = field(default_factory=list)
+    #: sensors from this index on are optics twins of modelled sensors (:func:`with_optics`), run after the
+    #: others; None: there are none
+    optics_from: int | None = None
+
+    def run_order(self) -> list[tuple[str, np.ndarray]]:
+        """``(method, sensor indices)`` in the order a run reads them: :meth:`groups`, the optics twins'
+        groups after every other sensor's (so naming a model changes no ideal reading)."""
+        groups = self.groups()
+        if self.optics_from is None:
+            return list(groups.items())
+        n = self.optics_from
+        return ([(m, ix[ix < n]) for m, ix in groups.items() if np.any(ix < n)]
+                + [(m, ix[ix >= n]) for m, ix in groups.items() if np.any(ix >= n)])
 
     def groups(self) -> dict[str, np.ndarray]:
         """Sensor indices per method, in first-use order."""
@@ -357,12 +370,20 @@ def surface_needs(scene: Scene) -> list[str]:
         if s.unmodelled:
             line += f"; read, not modelled: {', '.join(s.unmodelled)}"
         out.append(line)
-    from simulator.scene.surfaces import glint_pairs
+    from simulator.scene.surfaces import curved_mirrors, glint_pairs, shaded_faces
 
     for plane, alpha, li in glint_pairs(g, scene.lights):
         n, d = plane[:3], plane[3]
         out.append(f"glints: {scene.lights[li].name} reflected in the glossy plane n = ({n[0]:.3g}, {n[1]:.3g}, "
                    f"{n[2]:.3g}), n·x = {d:.4g} m (GGX α {alpha:.3g}), sampled at matte vertices that face it")
+    shaded = shaded_faces(g)
+    if shaded is not None:
+        prims = sorted({g.prim_names[i] for i in np.unique(g.prim[shaded])})
+        curves = curved_mirrors(g, shaded)
+        out.append(f"smooth normals: {int(shaded.sum())} glossy or mirror triangle(s) of {', '.join(prims[:3])}"
+                   f"{' ...' if len(prims) > 3 else ''} reflect about their interpolated normals"
+                   + (f"; {curves.n} curved mirror(s): point lights and the sun solved for their reflection point"
+                      if curves.n else ""))
     return out
 
 
@@ -539,7 +560,8 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
     # the hybrid: direct light computed for irradiance sensors that need paths (grey transport; auto)
     hyb = {}
     if hybrid and requested == "auto" and component == "total" and transport == "grey":
-        need = [i for i, (_, reflects) in enumerate(seen) if reflects and sensors[i].kind == SensorKind.IRRADIANCE]
+        need = [i for i, (_, reflects) in enumerate(seen)
+                if reflects and sensors[i].kind == SensorKind.IRRADIANCE and getattr(sensors[i], "optics", None) is None]
         names = [l.name for l in scene.lights] + [EMISSIVE]
         for i, (recs, why) in zip(need, hybrid_records(scene, [sensors[i] for i in need], [culled_of[i] for i in need])):
             if recs:
@@ -593,6 +615,34 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
                                 reason, lights, culled, geometry, hyb[i][0] if method in HYBRID_METHODS else []))  # fmt: skip
     return Plan(requested, component, channels, channel_reason, plans, transport, _light_sampling(scene, plans),
                 surface_needs(scene))
+
+
+def with_optics(plan: Plan, scene: Scene, twins: list[Sensor]) -> Plan:
+    """``plan`` with the optics twins of its modelled sensors appended (:mod:`simulator.sensor_models.readings`).
+
+    A twin is planned as its sensor is, except that a head's angular response has no closed form:
+    where the plan would read it by ``analytic`` or ``exact`` (light straight from emitters) it takes
+    ``mis`` when a light covers more than :data:`LARGE_SOURCE_SR` of its sky or a portal dome reaches
+    it (directions drawn by the response pay there), else ``light``; an explicit closed-form method
+    likewise. The plan given is not changed (a kept plan is shared)."""
+    requested = plan.requested if plan.requested not in ("analytic", "exact") else "auto"
+    twin_plan = make_plan(scene, twins, requested, plan.component, hybrid=False)  # a computed part reads the cosine
+    extra = []
+    for s, sp in zip(twins, twin_plan.sensors):
+        if sp.method in ("analytic", "exact"):
+            big = _largest_solid_angle(scene, s, sp.culled)
+            mis = big > LARGE_SOURCE_SR or _portal_dome(scene, sp.culled) is not None
+            sp = SensorPlan(sp.name, sp.kind, "mis" if mis else "light", False,
+                            "a sensor model's angular response has no closed form: " +
+                            ("light samples and directions drawn by the response, combined" if mis else "light sampling"),
+                            sp.lights, sp.culled, sp.geometry)  # fmt: skip
+        extra.append(sp)
+    sensors = plan.sensors + extra
+    light_sampling = dict(plan.light_sampling)
+    for m, how in _light_sampling(scene, extra).items():
+        light_sampling.setdefault(m, how)
+    return Plan(plan.requested, plan.component, plan.channels, plan.channel_reason, sensors, plan.transport,
+                light_sampling, list(plan.surfaces), optics_from=len(plan.sensors))
 
 
 def _light_sampling(scene: Scene, plans: list[SensorPlan]) -> dict[str, str]:

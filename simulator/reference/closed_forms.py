@@ -67,6 +67,9 @@ __all__ = [
     "semicylindrical_point_irradiance",
     "dome_cylindrical_irradiance",
     "lambertian_radiance",
+    "cos_power_dome_reading",
+    "half_power_exponent",
+    "cos_power_f2",
     "furnace_radiance",
     "furnace_irradiance",
     "integrating_sphere_irradiance",
@@ -775,6 +778,55 @@ def dome_irradiance(radiance, tilt):
     .. [1] docs/REFERENCES.md §Uniform environment.
     """
     return _out(np.asarray(radiance, float) * np.pi * 0.5 * (1.0 + np.cos(np.asarray(tilt, float))))
+
+
+def cos_power_dome_reading(radiance, n):
+    """What a head of angular response r = cosⁿ θ reads under a uniform sky filling its hemisphere.
+
+    Parameters
+    ----------
+    radiance : float or array_like
+        Sky radiance, W m⁻² sr⁻¹ (or cd/m²).
+    n : float or array_like
+        The exponent, > 0 (1: an ideal cosine head).
+
+    Returns
+    -------
+    ndarray or float
+        ∫ L cosⁿθ dω = 2π·L/(n + 1): L·π at n = 1, the irradiance.
+
+    References
+    ----------
+    .. [1] docs/REFERENCES.md §Sensor models.
+    """
+    return _out(2.0 * np.pi * np.asarray(radiance, float) / (np.asarray(n, float) + 1.0))
+
+
+def half_power_exponent(half_angle_deg):
+    """The n of cosⁿ θ whose response is ½ at ``half_angle_deg``: ln ½ / ln cos θ½ (60° → 1).
+
+    References
+    ----------
+    .. [1] docs/REFERENCES.md §Sensor models.
+    """
+    return _out(np.log(0.5) / np.log(np.cos(np.radians(np.asarray(half_angle_deg, float)))))
+
+
+def cos_power_f2(n, limit_deg: float = 85.0):
+    """ISO/CIE 19476's directional response index f2 of a head r = cosⁿ θ, in closed form.
+
+    f2 = ∫₀^{ε_max} |cos^{n−1} ε − 1| sin 2ε dε; with u = cos ε, sin 2ε dε = −2u du, so for n ≥ 1
+    f2 = ∫_c^1 2u (1 − u^{n−1}) du = 1 − c² − 2(1 − c^{n+1})/(n + 1), c = cos ε_max, and for n < 1
+    (a head reading high at a slant) its negative.
+
+    References
+    ----------
+    .. [1] docs/REFERENCES.md §Sensor models.
+    """
+    n = np.asarray(n, float)
+    c = np.cos(np.radians(limit_deg))
+    v = 1.0 - c * c - 2.0 * (1.0 - c ** (n + 1.0)) / (n + 1.0)
+    return _out(np.abs(v))
 
 
 def _across(source, p, axis):

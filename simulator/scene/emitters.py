@@ -156,6 +156,8 @@ def split_emitters(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> t
         reflectance_id=take(g.reflectance_id), emission_rgb=take(g.emission_rgb),
         surface_id=take(g.surface_id), solid_side=take(g.solid_side), texture_id=take(g.texture_id),
         texture_uv=None if g.texture_uv is None else _corner_uv(g.texture_uv[orig], np.concatenate(bary)),
+        shading_normals=None if g.shading_normals is None else  # linear over the triangle, as st (unit in the kernels)
+        _corner_uv(g.shading_normals[orig].astype(np.float64), np.concatenate(bary)).astype(np.float32),
     )  # fmt: skip
     return out, orig
 

@@ -25,7 +25,7 @@ import numpy as np
 
 __all__ = [
     "LightKind", "Light", "LightShaping", "Portal", "Geometry", "SensorKind", "ColumnGroup", "SensorKindSpec", "SENSOR_SPECS", "SENSOR_KINDS",
-    "DEFAULT_PROBE_RESOLUTION", "MAX_PROBE_PIXELS", "patch_width_axis", "Sensor", "Scene",
+    "DEFAULT_PROBE_RESOLUTION", "DEFAULT_GLARE_RESOLUTION", "MAX_PROBE_PIXELS", "patch_width_axis", "Sensor", "Scene",
 ]  # fmt: skip
 
 
@@ -329,6 +329,15 @@ class Geometry:
     texture_uv : ndarray, shape (T, 3, 2), float64, or None
         Per triangle corner: the texture's ``st`` (after its st transform),
         zero where ``texture_id`` is -1; None with ``texture_id``.
+    shading_normals : ndarray, shape (T, 3, 3), float32, or None
+        Per triangle corner: the unit normal of the curved surface the
+        triangle stands for (an authored ``normals`` primvar, a subdivision
+        cage's smooth normals, an implicit gprim's own;
+        :mod:`simulator.scene.usd.normals`), kept on glossy, mirror and pane
+        faces, zero on a flat face or a matte one (its face normal); None
+        where no such face has them. The kernels shade glossy and mirror
+        faces by it (:mod:`simulator.kernels.glossy`), matte faces and panes
+        by their face normal.
     """
 
     points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
@@ -350,6 +359,7 @@ class Geometry:
     coverage_textures: list = field(default_factory=list)
     texture_id: np.ndarray | None = None
     texture_uv: np.ndarray | None = None
+    shading_normals: np.ndarray | None = None
 
     @property
     def has_surfaces(self) -> bool:
@@ -377,10 +387,13 @@ class SensorKind(IntEnum):
     PROBE = 3  #: full-sphere light probe
     CYLINDRICAL = 4  #: mean irradiance on a small cylinder's curved surface about the axis ``up``
     SEMICYLINDRICAL = 5  #: the same over the half cylinder facing ``normal``
+    GLARE = 6  #: an eye looking along ``normal`` (up ``up``): E_v, DGP, DGPs, UGR and the glare sources
 
 
 #: lat-long map size ``(width, height)`` of a probe that does not say
 DEFAULT_PROBE_RESOLUTION = (64, 32)
+#: half-map size ``(width, height)`` of a glare view that does not say (1.4° pixels)
+DEFAULT_GLARE_RESOLUTION = (128, 128)
 #: most pixels in a probe map (1024 × 512): each pixel keeps float64 running
 #: sums of 22 integrands in 2 channels (about 700 B)
 MAX_PROBE_PIXELS = 1 << 19
@@ -414,6 +427,9 @@ _SEMICYLINDRICAL = ColumnGroup(
      "semicylindrical_illuminance_stderr_lx"), "1", "W/m²", "lx",
 )  # fmt: skip
 _DIRECTION = ColumnGroup(("mean_direction_x", "mean_direction_y", "mean_direction_z", "mean_direction_stderr_deg"))
+#: a glare view's indices: DGP and DGPs each with its standard error; UGR with its standard error, and its background
+_DGP = ColumnGroup(("dgp", "dgp_stderr", "dgps", "dgps_stderr"))
+_UGR = ColumnGroup(("ugr", "ugr_stderr", "background_luminance_cd_m2", "glare_sources"))
 
 
 @dataclass(frozen=True)
@@ -432,7 +448,8 @@ class SensorKindSpec:
         ``"estimate"``: read by :meth:`simulator.engine.driver.Engine.run`
         through the estimator kernel (its per-sample entry is registered in
         :mod:`simulator.kernels.estimators`); ``"probe"``: by
-        :meth:`~simulator.engine.driver.Engine.run_probes`.
+        :meth:`~simulator.engine.driver.Engine.run_probes`; ``"glare"``: by
+        :func:`simulator.engine.glare.run_glare`.
     columns : tuple of ColumnGroup
         CSV value columns it fills. A probe's are filled from its sphere
         integrals (``simulator.io.results.probe_readings``).
@@ -468,6 +485,8 @@ SENSOR_SPECS = (
     SensorKindSpec(SensorKind.PROBE, "probe", ("resolution",), "probe", (_SCALAR, _DIRECTION), culls_lights=False, directed=False),
     SensorKindSpec(SensorKind.CYLINDRICAL, "cylindrical", ("up",), "estimate", (_CYLINDRICAL,), culls_lights=False, extra_columns=True),
     SensorKindSpec(SensorKind.SEMICYLINDRICAL, "semicylindrical", ("up",), "estimate", (_SEMICYLINDRICAL,), culls_lights=False,
+                   extra_columns=True),
+    SensorKindSpec(SensorKind.GLARE, "glare", ("up", "resolution"), "glare", (_IRRADIANCE, _DGP, _UGR), culls_lights=False,
                    extra_columns=True),
 )  # fmt: skip
 assert [int(s.kind) for s in SENSOR_SPECS] == list(range(len(SensorKind)))
@@ -507,11 +526,28 @@ class Sensor:
     half_angle : float
         Radiance only: cone half-angle in radians (0 = one direction).
     resolution : tuple of int
-        Probe only: lat-long map ``(width, height)`` in pixels.
+        Probe: lat-long map ``(width, height)`` in pixels; glare: the half map in front of the eye.
+    glare : GlareSettings or None
+        Glare only: how it finds its sources and when it stops (:class:`simulator.glare.sources.GlareSettings`).
     grid : str or None
         Name of the ``[[grid]]`` this sensor was expanded from.
     source : str
         Where it was defined (config key or prim path), for messages.
+    model : SensorModel or None
+        The sensor model it names (:mod:`simulator.sensor_models`): the run reads it as today (the
+        ideal quantity) and also through the model (optics, device). None: an ideal sensor.
+    optics : AngularResponse or None
+        Set only on the engine's optics twin of a modelled sensor
+        (:func:`simulator.sensor_models.readings.optics_twins`): its first vertex weighs by this response
+        instead of the cosine. None: the cosine.
+    azimuth_ref : ndarray, shape (3,), or None
+        The in-plane direction of azimuth 0 of a model with azimuth columns (made orthogonal to
+        ``normal``); None: any (a symmetric head).
+    gain : float, "auto" or None
+        A modelled sensor's gain (one of its part's); None: the part's default (auto-ranging where it
+        ranges, else its reference gain).
+    integration_ms : float or None
+        A modelled sensor's integration time, ms (one of its part's); None: the part's choice.
     """
 
     name: str
@@ -524,6 +560,12 @@ class Sensor:
     resolution: tuple[int, int] = (0, 0)
     grid: str | None = None
     source: str = ""
+    model: object | None = None
+    optics: object | None = None
+    azimuth_ref: np.ndarray | None = None
+    gain: float | str | None = None
+    integration_ms: float | None = None
+    glare: object | None = None
 
     @property
     def spec(self) -> SensorKindSpec:

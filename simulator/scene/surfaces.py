@@ -62,7 +62,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 __all__ = ["Surface", "CoverageTexture", "WRAP_MODES", "OPACITY_MODES", "fresnel_sp", "slab_rt", "internal_transmittance", "clear_slab_transmittance",
-           "solid_sides", "mirror_planes", "mirror_limits", "glint_planes", "glint_pairs", "MAX_GLINTS"]
+           "solid_sides", "mirror_planes", "mirror_limits", "glint_planes", "glint_pairs", "MAX_GLINTS", "shaded_faces",
+           "curved_mirrors", "curved_notes", "CurvedMirrors", "MAX_CURVES"]
 
 #: UsdPreviewSurface ``opacityMode`` tokens
 OPACITY_MODES = ("transparent", "presence")
@@ -352,10 +353,11 @@ def _flat_planes(points: np.ndarray, triangles: np.ndarray, faces: np.ndarray, k
 
 
 def mirror_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarray | None,
-                  surfaces: list) -> tuple[np.ndarray, np.ndarray, int]:
+                  surfaces: list, shaded: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, int]:
     """The flat planes of the mirror faces (a delta specular lobe) and of panes: ``(planes (K, 4) as (n, d) with
     n·x = d, per triangle its plane or -1, planes left out beyond MAX_MIRROR_PLANES)``, grouped by
-    :func:`_flat_planes`, the largest (by area) kept first.
+    :func:`_flat_planes`, the largest (by area) kept first. Faces ``shaded`` by normals of their own
+    (:func:`shaded_faces`) are curved, not flat: :func:`curved_mirrors` holds them.
     """
     face_plane = np.full(len(triangles), -1, np.int32)
     if surface_id is None:
@@ -363,6 +365,8 @@ def mirror_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndar
     # a pane's slab reflects as a mirror does (its R(θ)): its faces are image-source planes too
     delta = np.array([getattr(s, "delta", False) or getattr(s, "pane", False) for s in surfaces] + [False],
                      bool)[surface_id]
+    if shaded is not None:
+        delta = delta & ~shaded
     faces = np.flatnonzero(delta)
     if not len(faces):
         return np.zeros((0, 4)), face_plane, 0
@@ -376,9 +380,10 @@ MAX_GLINTS = 4
 
 
 def glint_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarray | None,
-                 surfaces: list) -> tuple[np.ndarray, np.ndarray]:
+                 surfaces: list, shaded: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """The flat planes of glossy, non-mirror faces, for the glint strategy (:mod:`simulator.kernels.
-    glints`): ``(planes (K, 4) as (n, d), GGX α per plane)``, the :data:`MAX_GLINTS` largest first.
+    glints`): ``(planes (K, 4) as (n, d), GGX α per plane)``, the :data:`MAX_GLINTS` largest first; faces
+    ``shaded`` by normals of their own (a curved surface's facets) are not flat planes.
 
     A plane's α is roughness² of the material covering most of its area.
     """
@@ -387,7 +392,10 @@ def glint_planes(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarr
     rows = [k for k, s in enumerate(surfaces) if s.glossy and not s.delta_base and not s.pane]
     if not rows:
         return np.zeros((0, 4)), np.zeros(0)
-    faces = np.flatnonzero(np.isin(surface_id, rows))
+    mine = np.isin(surface_id, rows)
+    if shaded is not None:
+        mine = mine & ~shaded
+    faces = np.flatnonzero(mine)
     if not len(faces):
         return np.zeros((0, 4)), np.zeros(0)
     planes, group, _, _ = _flat_planes(points, triangles, faces, MAX_GLINTS)
@@ -410,13 +418,14 @@ def glint_pairs(geometry, lights: list) -> list[tuple[np.ndarray, float, int]]:
     g = geometry
     if not g.has_surfaces:
         return []
-    planes, alpha = glint_planes(g.points, g.triangles, g.surface_id, g.surfaces)
+    planes, alpha = glint_planes(g.points, g.triangles, g.surface_id, g.surfaces, shaded_faces(g))
     suns = [k for k, l in enumerate(lights) if l.kind == LightKind.DISTANT]
     return [(planes[k], float(alpha[k]), li) for k in range(len(planes)) for li in suns][:MAX_GLINTS]
 
 
 def mirror_limits(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndarray | None,
-                  surfaces: list, delta_lights: list[str]) -> list[str]:
+                  surfaces: list, delta_lights: list[str], shaded: np.ndarray | None = None,
+                  curves: int = 0) -> list[str]:
     """What the image-source connection of delta lights (:mod:`simulator.kernels.mirrors`) leaves out,
     one note each: empty without delta lights or without mirror faces.
 
@@ -427,17 +436,159 @@ def mirror_limits(points: np.ndarray, triangles: np.ndarray, surface_id: np.ndar
     sampled direction finds it) and mirror planes past the largest are not
     connected, so their share of a reading is missing: the summary says so.
     Area, sphere and dome lights are found through any number of mirrors
-    by the paths' own reflections.
+    by the paths' own reflections. ``curves`` curved mirrors
+    (:func:`curved_mirrors`) count as mirrors beside the planes.
     """
     if not delta_lights:
         return []
-    planes, _, left_out = mirror_planes(points, triangles, surface_id, surfaces)
+    planes, _, left_out = mirror_planes(points, triangles, surface_id, surfaces, shaded)
     notes = []
     lights = ", ".join(delta_lights[:3]) + (" ..." if len(delta_lights) > 3 else "")
-    if len(planes) + left_out >= 2:
+    mirrors = len(planes) + left_out + curves
+    if mirrors >= 2:
         notes.append(f"light of point or angle-0 distant light(s) {lights} reflected by two mirrors in turn "
-                     f"is not read ({len(planes) + left_out} mirror planes; one reflection is read)")
+                     f"is not read ({mirrors} mirror planes or curved mirrors; one reflection is read)")
     if left_out:
         notes.append(f"light of {lights} off the {left_out} mirror plane(s) past the {MAX_MIRROR_PLANES} "
+                     "largest is not read")
+    return notes
+
+
+def shaded_faces(geometry) -> np.ndarray | None:
+    """Per triangle: whether the kernels shade it by normals of its own (``Geometry.shading_normals``): a
+    glossy or mirror face (not a pane: panes keep their face normal) whose corners carry a normal; None
+    where no face is (the kernels then read no shading normal)."""
+    g = geometry
+    if g.shading_normals is None or g.surface_id is None or not g.surfaces:
+        return None
+    glossy = np.array([bool(s.glossy) and not s.pane for s in g.surfaces] + [False], bool)[g.surface_id]
+    has = np.any(g.shading_normals != 0, axis=(1, 2))
+    out = glossy & has
+    return out if out.any() else None
+
+
+#: most curved mirrors (pieces of shaded mirror faces) the kernels solve for a delta light's reflection
+MAX_CURVES = 16
+
+
+@dataclass(frozen=True)
+class CurvedMirrors:
+    """The curved mirrors of a stage (:func:`curved_mirrors`).
+
+    Attributes
+    ----------
+    face_curve : ndarray, shape (T,), int32
+        Per triangle: its curved mirror, -1 for none (or one past :data:`MAX_CURVES`).
+    spheres : ndarray, shape (K, 4)
+        Per curved mirror: the centre and radius of its vertices' bounding sphere (the kernels' seed).
+    left_out : int
+        Pieces past the :data:`MAX_CURVES` largest.
+    not_convex : list of str
+        The prims of pieces that are not closed and convex (a point light may show at several points of
+        them; the kernels read one).
+    """
+
+    face_curve: np.ndarray
+    spheres: np.ndarray
+    left_out: int = 0
+    not_convex: list = field(default_factory=list)
+
+    @property
+    def n(self) -> int:
+        return len(self.spheres)
+
+
+def _locally_convex(points: np.ndarray, tris: np.ndarray, welded: np.ndarray, normals: np.ndarray) -> bool:
+    """Whether every edge two triangles share bends away from their shading normals' side: the vertex of
+    each across the edge lies on the inner side of the other's plane (within 1e-9 of an edge's length)."""
+    edges = np.concatenate([welded[:, [0, 1]], welded[:, [1, 2]], welded[:, [2, 0]]])
+    opposite = np.concatenate([tris[:, 2], tris[:, 0], tris[:, 1]])
+    owner = np.tile(np.arange(len(tris)), 3)
+    key = np.sort(edges, axis=1).astype(np.int64)
+    key = key[:, 0] * (int(key.max()) + 1) + key[:, 1]
+    order = np.argsort(key, kind="stable")
+    shared = np.flatnonzero(key[order][1:] == key[order][:-1])
+    i, j = order[shared], order[shared + 1]  # two entries of one edge
+    p = points[tris]
+    fn = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    fn = fn * np.where(np.einsum("ij,ij->i", fn, normals.sum(axis=1)) < 0, -1.0, 1.0)[:, None]  # the normals' side
+    fn = fn / np.maximum(np.linalg.norm(fn, axis=1), 1e-300)[:, None]
+    tol = 1e-9 * np.linalg.norm(p[:, 1] - p[:, 0], axis=1)
+    for a, b in ((i, j), (j, i)):
+        t = owner[a]
+        if np.any(np.einsum("ij,ij->i", fn[t], points[opposite[b]] - p[t, 0]) > tol[t]):
+            return False
+    return True
+
+
+#: the last :func:`curved_mirrors` answer and the arrays it was found from (the reader's summary and the
+#: device upload ask for the same stage in turn; a million-triangle ball takes seconds)
+_LAST_CURVES: list = []
+
+
+def curved_mirrors(geometry, shaded: np.ndarray | None) -> CurvedMirrors:
+    """The curved mirrors of a stage: its ``shaded`` faces (:func:`shaded_faces`) whose surface has a mirror
+    part (:attr:`Surface.delta`), welded by position into connected pieces, the :data:`MAX_CURVES` largest
+    (by area) kept, each with its vertices' bounding sphere (centre of their box, mean distance from it)."""
+    g = geometry
+    if _LAST_CURVES:
+        arrays, last_shaded, found = _LAST_CURVES
+        if (all(a is b for a, b in zip(arrays, (g.points, g.triangles, g.surface_id, g.shading_normals)))
+                and (shaded is None) == (last_shaded is None)
+                and (shaded is None or np.array_equal(shaded, last_shaded))):
+            return found
+    found = _curved_mirrors(g, shaded)
+    _LAST_CURVES[:] = [(g.points, g.triangles, g.surface_id, g.shading_normals), shaded, found]
+    return found
+
+
+def _curved_mirrors(g, shaded: np.ndarray | None) -> CurvedMirrors:
+    """:func:`curved_mirrors`, found afresh."""
+    from simulator.scene.usd.enclosures import _closed_components, _components, _welded
+
+    face_curve = np.full(g.n_triangles, -1, np.int32)
+    if shaded is None:
+        return CurvedMirrors(face_curve, np.zeros((0, 4)))
+    delta = np.array([bool(s.delta) for s in g.surfaces] + [False], bool)[g.surface_id]
+    faces = np.flatnonzero(shaded & delta)
+    if not len(faces):
+        return CurvedMirrors(face_curve, np.zeros((0, 4)))
+    tris = g.triangles[faces].astype(np.int64)
+    welded = _welded(g.points, tris)
+    label = _components(welded)
+    closed = set(_closed_components(welded, label))
+    p = g.points[tris]
+    area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+    labels = np.unique(label)
+    size = np.array([area[label == c].sum() for c in labels])
+    order = labels[np.argsort(-size, kind="stable")]
+    spheres, not_convex = [], []
+    for k, c in enumerate(order[:MAX_CURVES]):
+        mine = label == c
+        face_curve[faces[mine]] = k
+        v = g.points[np.unique(tris[mine])]
+        centre = 0.5 * (v.min(axis=0) + v.max(axis=0))
+        spheres.append([*centre, float(np.mean(np.linalg.norm(v - centre, axis=1)))])
+        if int(c) not in closed or not _locally_convex(g.points, tris[mine], welded[mine],
+                                                       g.shading_normals[faces[mine]].astype(np.float64)):
+            names = sorted({g.prim_names[i] for i in np.unique(g.prim[faces[mine]])})
+            not_convex.extend(n for n in names if n not in not_convex)
+    return CurvedMirrors(face_curve, np.array(spheres, float).reshape(-1, 4), max(0, len(order) - MAX_CURVES),
+                         not_convex)
+
+
+def curved_notes(curves: CurvedMirrors, delta_lights: list[str]) -> list[str]:
+    """What the curved mirrors' connection of delta lights leaves out (:mod:`simulator.kernels.curved`), one
+    note each; empty without delta lights."""
+    if not delta_lights or curves.n + curves.left_out == 0:
+        return []
+    lights = ", ".join(delta_lights[:3]) + (" ..." if len(delta_lights) > 3 else "")
+    notes = []
+    if curves.not_convex:
+        shown = ", ".join(curves.not_convex[:3]) + (" ..." if len(curves.not_convex) > 3 else "")
+        notes.append(f"curved mirror(s) {shown} are not closed and convex: light of {lights} is read at one "
+                     "reflection point in each (Newton's solution); a concave side may show it at more")
+    if curves.left_out:
+        notes.append(f"light of {lights} off the {curves.left_out} curved mirror(s) past the {MAX_CURVES} "
                      "largest is not read")
     return notes

@@ -72,6 +72,13 @@ class SpectralTable:
         fill = (0.0, 0.0) if outside == "zero" else (self.values[0], self.values[-1])
         return np.interp(WAVELENGTHS_NM, self.wavelength_nm, self.values, left=fill[0], right=fill[1])
 
+    def on_wide_grid(self) -> np.ndarray:
+        """The values linearly interpolated onto the wide grid, 300–1100 nm (:mod:`simulator.spectra.wide`),
+        0 beyond the file's range; shape (801,)."""
+        from simulator.spectra.wide import WIDE_NM
+
+        return np.interp(WIDE_NM, self.wavelength_nm, self.values, left=0.0, right=0.0)
+
     def coverage_note(self) -> str | None:
         """A one-line note when the file does not cover 380–780 nm, else None."""
         lo, hi = float(self.wavelength_nm[0]), float(self.wavelength_nm[-1])
@@ -81,7 +88,8 @@ class SpectralTable:
 
 
 def read_spectral_csv(path, what: str, columns: Callable[[str], str | None],
-                      check: Callable[[float], str | None] | None = None) -> SpectralTable:
+                      check: Callable[[float], str | None] | None = None,
+                      within_nm: tuple[float, float] = (380.0, 780.0)) -> SpectralTable:
     """Read and validate a two-column spectral CSV.
 
     Parameters
@@ -94,6 +102,8 @@ def read_spectral_csv(path, what: str, columns: Callable[[str], str | None],
         else what was expected (one phrase, for the message).
     check : callable, optional
         Given one value, returns None if it is acceptable, else the reason.
+    within_nm : (float, float)
+        The range the file must overlap, nm: the visible grid, or a sensor model's wide grid.
 
     Returns
     -------
@@ -153,6 +163,6 @@ def read_spectral_csv(path, what: str, columns: Callable[[str], str | None],
         raise UserError(f"{path}: empty {what} file (expected a 'wavelength_nm,<column>' header and rows)")
     if len(wl) < 2:
         raise UserError(f"{path}: {what} file needs at least 2 rows, has {len(wl)}")
-    if wl[-1] <= WAVELENGTHS_NM[0] or wl[0] >= WAVELENGTHS_NM[-1]:
-        raise UserError(f"{path}: {what} covers {wl[0]:g}–{wl[-1]:g} nm, outside 380–780 nm")
+    if wl[-1] <= within_nm[0] or wl[0] >= within_nm[1]:
+        raise UserError(f"{path}: {what} covers {wl[0]:g}–{wl[-1]:g} nm, outside {within_nm[0]:g}–{within_nm[1]:g} nm")
     return SpectralTable(p, header, np.array(wl), np.array(vals))

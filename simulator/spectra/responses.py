@@ -280,6 +280,15 @@ def custom_response(path, name: str) -> Response:
     t = read_spectral_csv(path, "responsivity", _responsivity_column,
                           lambda y: None if y >= 0 else "is negative")
     r = t.on_grid("zero")
+    from simulator.spectra.wide import wide_weights
+
+    wide = t.on_wide_grid() @ wide_weights()
+    outside = 1.0 - float(t.on_wide_grid() @ wide_weights(380, 780)) / wide if wide > 0 else 0.0
+    cut = None
+    if outside > 1e-3:  # said, not silent: the columns integrate over the transport's grid
+        cut = (f"{t.path.name}: {100 * outside:.1f}% of its responsivity (integrated flat) lies outside 380–780 nm "
+               "and is left out of its response columns, which integrate over 380–780 nm; a sensor model "
+               "(docs/sensors.md) reads 300–1100 nm")
     peak = float(r.max())
     if peak <= 0:
         raise UserError(f"{path}: responsivity is zero everywhere in 380–780 nm")
@@ -293,7 +302,7 @@ def custom_response(path, name: str) -> Response:
         unit = m.group(1)
         s, u = _quantities((name, f"{unit}_m2"), (name, f"{unit}_m2_sr"), (name, unit))
         how = f"absolute responsivity from {t.path.name}, {unit}/W"
-    custom = Response(name, name, _frozen(r * full), s, u, how, tuple(n for n in (t.coverage_note(),) if n))
+    custom = Response(name, name, _frozen(r * full), s, u, how, tuple(n for n in (t.coverage_note(), cut) if n))
     taken = _registry_columns()
     for quantity in QUANTITIES + ("scalar_irradiance",):
         col = custom.columns(quantity)[0]

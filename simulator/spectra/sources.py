@@ -47,6 +47,7 @@ import numpy as np
 
 from simulator.errors import UserError
 from simulator.spectra.grid import WAVELENGTHS_NM, integrate
+from simulator.spectra.planck import C2_CIE_M_K, C_M_S, H_J_S, K_B_J_K, planck_W_m2_sr_nm
 from simulator.units import K_M as _K_M
 
 __all__ = [
@@ -67,16 +68,8 @@ __all__ = [
     "spectral_emission",
 ]
 
-#: Planck constant, J s (exact, SI 2019)
-H_J_S = 6.62607015e-34
-#: speed of light in vacuum, m/s (exact)
-C_M_S = 299792458.0
-#: Boltzmann constant, J/K (exact, SI 2019)
-K_B_J_K = 1.380649e-23
 #: Avogadro constant, 1/mol (exact, SI 2019)
 N_A_PER_MOL = 6.02214076e23
-#: second radiation constant for colour temperatures, m K (CIE 15:2004, ITS-90)
-C2_CIE_M_K = 1.4388e-2
 #: maximum luminous efficacy for photopic vision, lm/W: :data:`simulator.units.K_M` (683.002, CIE 018:2019)
 K_M_LM_W = _K_M
 
@@ -93,11 +86,26 @@ class Spectrum:
         Non-negative relative spectral density on :data:`~simulator.spectra.grid.WAVELENGTHS_NM`.
     notes : tuple of str
         One-line notes (e.g. a file that does not cover 380–780 nm).
+    wide : ndarray, shape (801,), or None
+        The same shape on the wide grid, 300–1100 nm (:mod:`simulator.spectra.wide`), equal to
+        ``values`` on 380–780 nm, 0 outside ``wide_range``; None: known on 380–780 nm only.
+    wide_range : tuple of float
+        Where ``wide`` is defined, nm (the rest of 300–1100 nm is 0 for want of data).
     """
 
     name: str
     values: np.ndarray
     notes: tuple[str, ...] = field(default=())
+    wide: np.ndarray | None = None
+    wide_range: tuple[float, float] = (380.0, 780.0)
+
+    def on_wide_grid(self) -> np.ndarray:
+        """The shape on the wide grid, shape (801,): :attr:`wide`, or the visible values with 0 outside."""
+        if self.wide is not None:
+            return self.wide
+        from simulator.spectra.wide import widen
+
+        return widen(self.values, None)
 
     @property
     def radiometric(self) -> float:
@@ -117,28 +125,10 @@ class Spectrum:
         return self.photometric / self.radiometric
 
 
-def _shape(name: str, values, notes=()) -> Spectrum:
+def _shape(name: str, values, notes=(), wide=None, wide_range=(380.0, 780.0)) -> Spectrum:
     v = np.asarray(values, dtype=np.float64).copy()
     v.setflags(write=False)
-    return Spectrum(name, v, tuple(n for n in notes if n))
-
-
-def planck_W_m2_sr_nm(temperature_K: float, wavelength_nm, c2_m_K: float | None = None) -> np.ndarray:
-    """Blackbody spectral radiance B_λ(T), W m⁻² sr⁻¹ nm⁻¹ (see module Notes).
-
-    Parameters
-    ----------
-    temperature_K : float
-        > 0.
-    wavelength_nm : array_like
-        Wavelengths in vacuum, nm.
-    c2_m_K : float, optional
-        Second radiation constant; default the exact h c / k.
-    """
-    lam = np.asarray(wavelength_nm, float) * 1e-9
-    c2 = H_J_S * C_M_S / K_B_J_K if c2_m_K is None else float(c2_m_K)
-    x = c2 / (lam * float(temperature_K))
-    return 2.0 * H_J_S * C_M_S**2 / lam**5 / np.expm1(x) * 1e-9
+    return Spectrum(name, v, tuple(n for n in notes if n), wide, tuple(map(float, wide_range)))
 
 
 def blackbody(temperature_K: float) -> Spectrum:
@@ -147,12 +137,19 @@ def blackbody(temperature_K: float) -> Spectrum:
     t = float(temperature_K)
     if not (math.isfinite(t) and t > 0):
         raise ValueError(f"blackbody temperature must be a positive number of kelvin, not {temperature_K!r}")
-    return _shape(f"blackbody {t:g} K", planck_W_m2_sr_nm(t, WAVELENGTHS_NM, C2_CIE_M_K))
+    from simulator.spectra.wide import WIDE_MAX_NM, WIDE_MIN_NM, WIDE_NM, widen
+
+    v = planck_W_m2_sr_nm(t, WAVELENGTHS_NM, C2_CIE_M_K)
+    return _shape(f"blackbody {t:g} K", v, wide=widen(v, planck_W_m2_sr_nm(t, WIDE_NM, C2_CIE_M_K)),
+                  wide_range=(WIDE_MIN_NM, WIDE_MAX_NM))
 
 
 def equal_energy() -> Spectrum:
     """CIE illuminant E: a flat spectrum (probesim's default radiometric spectrum)."""
-    return _shape("E", np.ones_like(WAVELENGTHS_NM))
+    from simulator.spectra.wide import WIDE_MAX_NM, WIDE_MIN_NM, WIDE_NM, widen
+
+    return _shape("E", np.ones_like(WAVELENGTHS_NM), wide=widen(np.ones_like(WAVELENGTHS_NM), np.ones_like(WIDE_NM)),
+                  wide_range=(WIDE_MIN_NM, WIDE_MAX_NM))
 
 
 def cie_illuminant(name: str) -> Spectrum:
@@ -173,7 +170,14 @@ def cie_illuminant(name: str) -> Spectrum:
         hint = difflib.get_close_matches(name, names, n=3)
         raise UserError(f"unknown illuminant {name!r}" + (f" (did you mean {', '.join(map(repr, hint))}?)" if hint else
                         " (expected a CIE illuminant such as 'D65', 'A', 'FL2', 'LED-B3')"))
-    return _shape(name, tables.illuminant(name))
+    from simulator.spectra import wide as W
+
+    v = tables.illuminant(name)
+    if name == "A":  # defined by Planck's law at 2848 K (c₂ = 1.435e-2 m K): all of the wide grid
+        return _shape(name, v, wide=W.widen(v, W.cie_a_relative(W.WIDE_NM)), wide_range=(W.WIDE_MIN_NM, W.WIDE_MAX_NM))
+    if name in W.DAYLIGHT_CCT_K:  # the D-series to 830 nm, the blackbody at its CCT beyond
+        return _shape(name, v, wide=W.widen(v, W.daylight_wide(name)), wide_range=(W.WIDE_MIN_NM, W.WIDE_MAX_NM))
+    return _shape(name, v)
 
 
 def colour_emission(rgb, base: Spectrum) -> Spectrum:
@@ -189,7 +193,14 @@ def colour_emission(rgb, base: Spectrum) -> Spectrum:
     c = np.asarray(rgb, float).reshape(3)
     if not np.all(np.isfinite(c)) or np.any(c < 0):
         raise UserError(f"light color {tuple(c)} must be three non-negative numbers")
-    return _shape(f"{base.name} × color ({c[0]:g}, {c[1]:g}, {c[2]:g})", base.values * (c @ mallett_basis()), base.notes)
+    tint = c @ mallett_basis()
+    wide = None
+    if base.wide is not None:  # the uplift is defined on 380–780 nm: held at its end values beyond
+        from simulator.spectra.wide import WIDE_NM, widen
+
+        wide = widen(base.values * tint, base.wide * np.interp(WIDE_NM, WAVELENGTHS_NM, tint))
+    return _shape(f"{base.name} × color ({c[0]:g}, {c[1]:g}, {c[2]:g})", base.values * tint, base.notes, wide,
+                  base.wide_range)
 
 
 def _spd_column(name: str) -> str | None:
@@ -211,7 +222,11 @@ def spd_csv(path) -> Spectrum:
     values = t.on_grid("zero")
     if not np.any(values > 0):
         raise UserError(f"{path}: SPD is zero everywhere in 380–780 nm")
-    return _shape(Path(path).name, values, (t.coverage_note(),))
+    from simulator.spectra.wide import WIDE_MAX_NM, WIDE_MIN_NM, WIDE_NM, widen
+
+    lo, hi = max(WIDE_MIN_NM, float(t.wavelength_nm[0])), min(WIDE_MAX_NM, float(t.wavelength_nm[-1]))
+    wide = widen(values, np.interp(WIDE_NM, t.wavelength_nm, t.values, left=0.0, right=0.0), lo, hi)
+    return _shape(Path(path).name, values, (t.coverage_note(),), wide, (lo, hi))
 
 
 def emitter_spectrum(spec, base_dir: str | os.PathLike | None = None) -> Spectrum:

@@ -33,16 +33,23 @@ def traced_warning(warning: str) -> str:
             "still read as luminance grey): " + warning[len(_COLOURED):])
 
 
-def run_hero_tables(cfg, scene):
-    """The hero tables of a run (:func:`simulator.spectra.hero.hero_tables`): the config's responses,
-    ``[spectra] lights`` if declared, the stage reader's default spectrum otherwise."""
+def run_hero_tables(cfg, scene, extra=()):
+    """The hero tables of a run (:func:`simulator.spectra.hero.hero_tables`): the config's responses (and
+    ``extra``: the sensor models' channels, which write no column of their own), ``[spectra] lights`` if
+    declared, the stage reader's default spectrum otherwise."""
     from simulator.spectra.hero import hero_tables
 
     settings = cfg.spectra
     default = "D65" if cfg.light_units == "photometric" else cfg.radiometric_spectrum
-    responses = () if settings is None else settings.responses
+    responses = (() if settings is None else tuple(settings.responses)) + tuple(extra)
     declared = None if settings is None else settings.lights
     return hero_tables(scene, cfg.light_units, default, responses, declared)
+
+
+def writes_columns(r) -> bool:
+    """Whether response ``r`` has columns of its own: not radiometric or photopic (the CSV's own), nor a
+    sensor model's channel (:func:`simulator.sensor_models.readings.channel_responses`)."""
+    return r.name not in ("radiometric", "photopic") and not r.name.startswith("model:")
 
 
 def closed_form_responses(tables, mean: np.ndarray) -> np.ndarray | None:
@@ -92,7 +99,7 @@ def add_traced_columns(rows, tables, mean: np.ndarray, stderr: np.ndarray) -> li
                 continue
             factor = row.sensor.size[0] * row.sensor.size[1] if group.factor == "area" else 1.0
             for j, r in enumerate(tables.responses):
-                if r.name in ("radiometric", "photopic"):
+                if not writes_columns(r):
                     continue
                 col, col_se = r.columns(quantity)
                 added[col] = added[col_se] = None

@@ -53,6 +53,8 @@ class StudyResult:
     warnings: list = field(default_factory=list)
     files: list = field(default_factory=list)
     areas: list = field(default_factory=list)  #: simulator.study.figures.areas.AreaRow, EN 12464-1 areas
+    ugr: list = field(default_factory=list)  #: simulator.study.figures.ugr.UgrRow, the areas' observers
+    glare: list = field(default_factory=list)  #: simulator.study.figures.glare_views.GlareViewRow, the stage's glare prims
     scene: object | None = None  #: the stage as read (geometry for the heat maps' plans); not in any output file
 
 
@@ -130,6 +132,52 @@ def _reference_scenario(first: list, specs: list, results: dict, adaptive: bool)
     return first[cands[int(np.argmax(need))]]
 
 
+def _ugr_plan(study: Study, scene, sets, groups: dict, tgs: list, stage: Path, label: str) -> dict | None:
+    """The observers of the areas with a UGR limit and the chunks of their indirect illuminance
+    (:mod:`simulator.study.figures.ugr`): each trace group's lamp groups, ``component = "indirect"``."""
+    from simulator.study.figures.ugr import lamp_groups, observer_sensors, observers_of
+
+    if not any(a.ugr_limit is not None for a in study.area):
+        return None
+    observers = observers_of(study, sets, label)
+    lamps = lamp_groups(scene, groups)
+    if not lamps:
+        raise UserError(f"{label}: area: a UGR check needs a [[group]] of lamps (no DomeLight or DistantLight in it)")
+    utgs = [replace(tg, key="ugr;" + tg.key, groups=[g for g in tg.groups if g in lamps]) for tg in tgs]
+    sim = {**_sim_dict(study), "component": "indirect"}
+    if sim["method"] in ("light", "bsdf", "mis"):  # direct-light estimators cannot read reflected light
+        sim["method"] = "path"
+    specs = make_chunks([t for t in utgs if t.groups], observer_sensors(observers), groups, stage, study.light_units, sim,
+                        study.seed, max(1, len(observers)))  # fmt: skip
+    return {"observers": observers, "lamps": lamps, "specs": specs}
+
+
+def _ugr(study: Study, scene, scenarios: list, groups: dict, plan: dict, results: dict, warnings: list) -> list:
+    """Every observer's UGR in every scenario (:func:`simulator.study.figures.ugr.ugr_rows`)."""
+    from simulator.study.figures.ugr import luminaire_terms, ugr_rows
+
+    observers, lamps = plan["observers"], plan["lamps"]
+    ch = 1 if study.light_units == "photometric" else 0
+    e = np.zeros((len(scenarios), len(observers)))
+    e_se = np.zeros_like(e)
+    for j, sc in enumerate(scenarios):
+        for s in plan["specs"]:
+            if s.trace_key == "ugr;" + sc.trace_key:
+                m, se = readings_of(results[s.id]).combine({g: v for g, v in sc.levels.items() if g in lamps})
+                ids = np.asarray(s.sensor_ids)
+                e[j, ids], e_se[j, ids] = m[:, ch], se[:, ch]
+    group_of = {n: g for g in lamps for n in groups[g]}
+    lights = [l for l in scene.lights if l.name in group_of]
+    terms, skipped = [], set()
+    for o in observers:
+        t, sk = luminaire_terms(scene, lights, o)
+        terms.append(t)
+        skipped |= set(sk)
+    if skipped:
+        warnings.append(f"UGR leaves out lamps with no size (point lights): {', '.join(sorted(skipped))}")
+    return ugr_rows(study, observers, scenarios, e, e_se, terms, lambda sc, name: float(sc.levels.get(group_of[name], 0.0)))
+
+
 def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None = None, log: Callable[[str], None] = print,
               on_chunk: Callable[[int, int, float], None] | None = None, stop_after: int | None = None,
               mode: str | None = None, workers: int | None = None, reference_run: bool = True) -> StudyResult:  # fmt: skip
@@ -186,6 +234,9 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
 
         block = auto_block(len(sensors), study.simulation.samples)
     specs = make_chunks(tgs, sensors, groups, stage, study.light_units, _sim_dict(study), study.seed, block, sky_split)
+    ugr_plan = _ugr_plan(study, base, sets, groups, tgs, stage, label)
+    if ugr_plan is not None:
+        specs = specs + ugr_plan["specs"]
     store = ChunkStore(out_dir)
     results: dict[str, dict] = {}
     for s in specs:
@@ -245,6 +296,11 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     from simulator.study.figures.areas import area_rows
 
     areas = area_rows(study, sets, candidates, scenarios, mean, stderr, label)
+    ugr = _ugr(study, base, scenarios, groups, ugr_plan, results, warnings) if ugr_plan is not None else []
+    from simulator.study.figures.glare_views import study_glare, views_of
+
+    views = views_of(base)
+    glare = study_glare(study, stage, views, tgs, groups, tuple(sky_split), log) if views and scenarios else []
     placement = None
     if study.placement is not None:
         pl = study.placement
@@ -287,7 +343,7 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
         chunks_computed=computed, chunks_loaded=loaded, mode=used_mode, workers=n_workers, sensor_block=int(block),
         timings_s={"setup": t_setup - t0, "chunks": t_traced - t_chunks, "trace_in_chunks": trace_s,
                    "analysis": t_analysis - t_traced, "reference_run": t_end - t_analysis, "total": t_end - t0},
-        chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings, scene=base, areas=areas,
+        chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings, scene=base, areas=areas, ugr=ugr, glare=glare,
         chunk_trace_s={(s.trace_key, s.block): float(np.sum(results[s.id]["trace_s"])) for s in specs},
         chunk_trace_cpu_s={(s.trace_key, s.block): float(results[s.id].get("trace_cpu_s", 0.0)) for s in specs},
     )  # fmt: skip

@@ -198,6 +198,9 @@ class CandidateSpec(_Model):
         )
     )
     half_angle_deg: float = Field(30.0, gt=0.0, lt=90.0, description="photosensor: half angle of its cone")
+    model: str | None = Field(
+        None, min_length=1, description="irradiance, photosensor: a sensor model (probesim sensor --list, or a .toml "
+        "beside the study): the set reads through its angular response instead of the cosine or the cone")
     facing: Vec3 | None = Field(None, description="semicylindrical: where the half cylinders face (across the axis)")
     on: list[str] | None = Field(None, description="flat prims (paths) to grid; the grid lies on their plane")
     height_m: float = Field(
@@ -230,6 +233,8 @@ class CandidateSpec(_Model):
             raise ValueError("a semicylindrical set needs 'facing' (the direction the half cylinders face)")
         if self.kind != "semicylindrical" and self.facing is not None:
             raise ValueError("facing is for kind = \"semicylindrical\"")
+        if self.model is not None and self.kind not in ("irradiance", "photosensor"):
+            raise ValueError(f"model is for kind = \"irradiance\" or \"photosensor\", not {self.kind!r}")
         if (self.on is None) == (self.points is None):
             raise ValueError("give either 'on' (prims to grid) or 'points' (an explicit list), not both or neither")
         if self.points is not None:
@@ -413,9 +418,15 @@ class AreaSpec(_Model):
     )
     maintenance_factor: float = Field(1.0, gt=0.0, le=1.0, description="every figure is maintained: × this factor")
     horizontal: str | None = Field(None, description="cylindrical: a horizontal set at the same points, for E_z/E_h")
+    ugr_limit: float | None = Field(None, gt=0.0, description="the task's UGR_L: UGR at the observers, of the lamps, is judged against it")
+    observers: list[tuple[float, float, float, float, float, float]] | None = Field(
+        None, description="with ugr_limit: [[x, y, z, dx, dy, dz], ...] eyes and view directions (default: the task's "
+                          "sides, 1.2 m above the floor, looking across)", json_schema_extra={"unit": "m"})
 
     @model_validator(mode="after")
     def _fields(self):
+        if self.observers is not None and self.ugr_limit is None:
+            raise ValueError("observers are for a UGR check: give ugr_limit (the standard's UGR_L for the task)")
         for key, v in (("task", self.task), ("region", self.region)):
             if v is not None and not (v[0] < v[2] and v[1] < v[3]):
                 raise ValueError(f"{key}: expected [x0, y0, x1, y1] with x0 < x1 and y0 < y1")
@@ -545,6 +556,7 @@ class Study(_Model):
         if not self.scenario and self.annual is None:
             raise _RefError("scenario", "give at least one [[scenario]] (or an [annual] table)")
         _check_annual(self, groups, split, zones, cands)
+        _check_patch_batches(self, split)
         for i, sc in enumerate(self.scenario):
             for g in sc.levels:
                 if g not in groups:
@@ -573,6 +585,30 @@ class Study(_Model):
             if not self.scenario:
                 raise _RefError("placement", "needs [[scenario]] entries to predict (an annual study chooses photosensors by [[control]])")
         return self
+
+
+#: Samples in one kernel block (``simulator.engine.driver.BLOCK``): a sky split into patches
+#: estimates its covariance from block means, so a sensor needs two blocks for any error at all.
+SAMPLES_PER_BLOCK = 32
+
+
+def _check_patch_batches(study: "Study", split: set) -> None:
+    """A sky traced as patches needs at least two batches per sensor, or its errors cannot be estimated.
+
+    The patches' covariance is the batch-means estimate over B − 1 degrees of
+    freedom (``simulator.engine.stats.GroupBatchStats``): at ``samples`` ≤ 32
+    every sensor has one batch, B − 1 = 0, and every hourly error, DF error and
+    control score error would be undefined (``nan``)."""
+    if not split:
+        return
+    sim = study.simulation
+    if sim.rel_error is None and sim.samples <= SAMPLES_PER_BLOCK:
+        raise _RefError("simulation.samples", f"a sky split into patches (group {sorted(split)[0]!r}) needs more than "
+                        f"{SAMPLES_PER_BLOCK} samples per sensor (two batches of {SAMPLES_PER_BLOCK}) to estimate its "
+                        f"errors; got {sim.samples}")  # fmt: skip
+    if sim.rel_error is not None and sim.max_samples is not None and sim.max_samples <= SAMPLES_PER_BLOCK:
+        raise _RefError("simulation.max_samples", f"a sky split into patches (group {sorted(split)[0]!r}) needs more "
+                        f"than {SAMPLES_PER_BLOCK} samples per sensor to estimate its errors; got {sim.max_samples}")
 
 
 def _check_annual(study: "Study", groups: set, split: set, zones: set, cands: set) -> None:

@@ -33,6 +33,7 @@ import warp as wp
 
 from simulator.scene.model import LightKind
 
+from ..optics import OpticsRec
 from ..surface_rec import GlintRec, SurfRec, TexRec
 
 #: length of a ray that leaves the scene, metres
@@ -133,6 +134,15 @@ class SceneRec:
     n_mirror_planes: int  # flat planes of mirror faces (kernels.mirrors), 0 for none
     mirror_planes: wp.array(dtype=wp.vec4)  # (n, d): n·x = d
     face_mirror: wp.array(dtype=wp.int32)  # per triangle: its mirror plane, −1 for none
+    plane_mirror: wp.array(dtype=wp.int32)  # per mirror plane: 1 when a face of it is a mirror, 0 for panes alone
+    # shading normals of glossy and mirror faces (kernels.glossy.shading_normal); unread while n_shaded is 0
+    n_shaded: int
+    shade_id: wp.array(dtype=wp.int32)  # per triangle: its corners are shade_n[3·id …], −1: its face normal
+    shade_n: wp.array(dtype=wp.vec3)  # unit corner normals, on the front face's side
+    # curved mirrors (kernels.curved): pieces of shaded mirror faces, each with its vertices' bounding sphere
+    n_curves: int
+    face_curve: wp.array(dtype=wp.int32)  # per triangle: its curved mirror, −1 for none
+    curve_sphere: wp.array(dtype=wp.vec4)  # per curved mirror: (centre, radius), the seed of its Newton solve
     emit_tris: wp.array(dtype=wp.int32)  # emissive triangle ids
     emit_cdf: wp.array(dtype=float)  # per piece, the inclusive CDF over its emit_tris (last = 1), concatenated
     emit_prob: wp.array(dtype=float)  # per triangle: its share of its piece's power (0 if not emissive)
@@ -172,6 +182,7 @@ class SceneRec:
     n_patch_pick: int
     patch_pick_factor: wp.array(dtype=float)  # (n_patches × n_lights), when n_patch_pick > 0
     patch_pick_tally: wp.array(dtype=wp.vec3)  # (n_patches × n_lights): a one-worker pilot's Σ(w·ê, w·value, 1), tally_pick 2
+    optics: wp.array(dtype=OpticsRec)  # sensor models' angular responses (SensorRec.optics − 1 indexes it; kernels.optics)
 
 
 @wp.struct

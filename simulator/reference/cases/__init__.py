@@ -93,6 +93,9 @@ class Case:
     rel_tol, k_sigma : float
         Verify's pass rule: within ``rel_tol`` of the expected value and
         within ``k_sigma`` standard errors (+ FLOAT32_SLACK relative).
+    optics : bool
+        The config's sensors name sensor models and verify reads their optics twins (the head's
+        ∫ L r dω; :mod:`simulator.sensor_models.readings`), not the ideal sensors.
     """
 
     name: str
@@ -112,6 +115,7 @@ class Case:
     chart: int | None = None
     rel_tol: float = REL_TOL
     k_sigma: float = K_SIGMA
+    optics: bool = False
 
 
 def _reflectance(rho: str) -> tuple[tuple[str, str], ...]:
@@ -145,6 +149,10 @@ _DIRECT: tuple[Case, ...] = (
     Case("distant_occluder", "distant_occluder.toml", "a delta sun and a black occluder: shadow and lit edges",
          D.distant_occluder, _VC, chart=5),
     Case("dome", "dome.toml", "a uniform sky over a black ground", D.dome, _VC, chart=6),
+    Case("sensor_heads", "sensor_heads.toml", "sensor heads under a uniform sky: 2πL/(n + 1) for cosⁿ θ, L·∫r dω for a "
+         "table", D.sensor_heads, method="mis", optics=True),
+    Case("sensor_heads_sun", "sensor_heads_sun.toml", "sensor heads tilted under a delta sun: E·r(θ)", D.sensor_heads,
+         optics=True),
     Case("cylindrical", "cylindrical.toml", "cylindrical and semi-cylindrical receivers under a point light: I·sinθ(1 + cos φ)/(πd²)",
          D.cylindrical),
     Case("cylindrical_sky", "cylindrical_sky.toml", "cylindrical and semi-cylindrical receivers under a uniform sky: πL/2",

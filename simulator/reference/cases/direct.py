@@ -196,6 +196,42 @@ def dome(ctx: CaseContext, s: Sensor, ch: int) -> float:
     raise no_closed_form(ctx, s, "radiance meter looking at the ground")
 
 
+def sensor_heads(ctx: CaseContext, s: Sensor, ch: int) -> float:
+    """A sensor head's reading ∫ L r dω (docs/REFERENCES.md §Sensor models): under a uniform sky over a
+    black ground, facing up, 2π·L/(n + 1) for r = cosⁿ θ and L·∫r dω for a table (its integral, exact
+    for r linear between rows); under a delta distant light of normal irradiance E arriving θ off the
+    normal, E·r(θ) where the ray toward it is clear (the shadow test of :func:`distant_occluder`), r
+    interpolated from the model's table by numpy."""
+    resp = getattr(s, "optics", None)
+    if resp is None:
+        raise no_closed_form(ctx, s, "not a sensor model's optics")
+    kinds = {l.kind for l in ctx.scene.lights}
+    if kinds == {LightKind.DOME}:
+        l = one_light(ctx.scene, LightKind.DOME)
+        if not _ground_is_black_plane(ctx.scene) or s.normal[2] < 1.0 - 1e-12:
+            raise no_closed_form(ctx, s, "needs a head facing up over a black ground")
+        if resp.kind == "power":
+            return float(cf.cos_power_dome_reading(l.emission[ch], resp.exponent))
+        return l.emission[ch] * resp.integral_sr()
+    l = one_light(ctx.scene, LightKind.DISTANT)
+    if l.half_angle != 0.0:
+        raise no_closed_form(ctx, s, "a delta distant light only")
+    g = ctx.scene.geometry
+    toward = l.frame[:, 2]
+    if ray_hits_triangles(s.position, toward, g.points[g.triangles]):
+        return 0.0
+    cos_t = float(np.clip(np.dot(s.normal, toward), -1.0, 1.0))
+    if cos_t <= 0.0:
+        return 0.0
+    theta = math.degrees(math.acos(cos_t))
+    if resp.kind == "power":
+        return l.emission[ch] * cos_t ** resp.exponent
+    if not resp.symmetric:
+        raise no_closed_form(ctx, s, "a symmetric head only")
+    r = float(np.interp(theta, resp.theta_deg, resp.values[0])) if theta <= resp.theta_deg[-1] else 0.0
+    return l.emission[ch] * r
+
+
 def cylindrical(ctx: CaseContext, s: Sensor, ch: int) -> float:
     """Cylindrical and semi-cylindrical receivers. Under an isotropic point source:
     E_z = I·sinθ/(π·d²), E_sc = I·sinθ·(1 + cos φ)/(π·d²); under a uniform sky over a

@@ -171,8 +171,8 @@ Any prim (usually an ``Xform``) that has the attribute
 ===============================  ===========  ===========================================
 attribute                        type         meaning
 ===============================  ===========  ===========================================
-``probesim:sensor:kind``         token/string ``irradiance``, ``radiance``, ``patch`` or
-                                              ``probe`` (required)
+``probesim:sensor:kind``         token/string ``irradiance``, ``radiance``, ``patch``,
+                                              ``probe``, ... or ``glare`` (required)
 ``probesim:sensor:name``         string       name in results (default: the prim path)
 ``probesim:sensor:halfAngleDeg`` float        radiance: cone half-angle, degrees, in
                                               [0, 90] (default 0: one direction)
@@ -180,7 +180,13 @@ attribute                        type         meaning
                                               the prim's local X and Y (required); the
                                               world transform's scale applies too
 ``probesim:sensor:resolution``   int2         probe: lat-long map (width, height) in
-                                              pixels (default (64, 32))
+                                              pixels (default (64, 32)); glare: its half
+                                              map in front of the eye (default (128, 128))
+``probesim:sensor:evalglare``    string       glare: source finding as evalglare options
+                                              (``-b``, ``-r``, ``-y``/``-x``/``-Y``, ``-C``)
+``probesim:sensor:dgpStderr``    float        glare: DGP's standard error to trace to (0.005)
+``probesim:sensor:model``        string       irradiance: a sensor model, bundled or a
+                                              .toml beside the stage (docs/sensors.md)
 ===============================  ===========  ===========================================
 
 The sensor sits at the prim's world origin and faces down its local -Z axis,
@@ -209,7 +215,7 @@ from pxr import Usd, UsdGeom, UsdLux
 
 from simulator.errors import UserError
 from simulator.scene.model import Geometry, Light, LightKind, Scene, Sensor
-from simulator.scene.surfaces import mirror_limits
+from simulator.scene.surfaces import curved_mirrors, curved_notes, mirror_limits, shaded_faces
 from simulator.scene.usd.facets import faceted_note, faceted_reflectors
 from simulator.scene.usd.collections import light_collections
 from simulator.scene.usd.context import _Context
@@ -364,10 +370,15 @@ def load_stage(
             closed = sorted({geometry.prim_names[i] for i in np.unique(geometry.prim[geometry.solid_side != 0])})
             ctx.ignored[f"refraction's bend in closed transparent mesh(es) {', '.join(closed[:3])}"
                         f"{' ...' if len(closed) > 3 else ''} (read as slabs entered once, no offset)"] += len(closed)
-        for note in mirror_limits(geometry.points, geometry.triangles, geometry.surface_id, geometry.surfaces,
-                                  [l.name for l in lights if l.is_delta]):
+        delta_lights = [l.name for l in lights if l.is_delta]
+        shaded = shaded_faces(geometry)
+        curves = curved_mirrors(geometry, shaded)
+        for note in (mirror_limits(geometry.points, geometry.triangles, geometry.surface_id, geometry.surfaces,
+                                   delta_lights, shaded, curves.n + curves.left_out)
+                     + curved_notes(curves, delta_lights + [l.name for l in lights if l.kind == LightKind.DISTANT
+                                                            and not l.is_delta])):
             ctx.warn(f"{os.path.basename(str(path))}: {note}")
-        faceted = faceted_reflectors(stage, geometry)
+        faceted = faceted_reflectors(geometry)
         if faceted:
             ctx.warn(f"{os.path.basename(str(path))}: {faceted_note(faceted)}")
         ctx.pxr_messages += pxr_said.collect()

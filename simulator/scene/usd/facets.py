@@ -1,92 +1,36 @@
-"""Curved reflectors read as flat facets: the warning that says so.
+"""Curved surfaces whose reflection is still read from flat facets: the warning that says so.
 
-Every gprim is traced as the triangles it is tessellated into, each shaded by
-its face normal. For a matte surface that is a small error in where light
-lands; for a mirror or a glossy lobe it is not: a mirror ball cut into
-facets shows a light's reflection only where a facet happens to face it
-(under the sun a radiance meter aimed at the ball's highlight reads 0, or
-the sun's full F·L where a facet is exactly aligned), and a glossy highlight
-is spread over the facet's fixed normal instead of the surface's turning
-one. Smooth shading normals (an authored ``normals`` primvar, an implicit
-Sphere's own normal) are not modelled, so such a surface is named in the
-summary rather than read silently.
-
-A prim is named when faces of it carry a glossy or mirror surface row and
-it is curved: an implicit round gprim (Sphere, Cylinder, Cone, Capsule), or
-a Mesh whose authored normals (vertex, varying or faceVarying) turn by more
-than :data:`TURN_DEG` from the face normals they sit on.
+Every gprim is traced as the triangles it is tessellated into. Glossy and
+mirror faces of a curved prim (an implicit Sphere, Cylinder, Cone or
+Capsule, a Mesh with authored normals, a subdivision cage) reflect about
+its shading normals (:mod:`.normals`, :mod:`simulator.kernels.glossy`), so
+a chrome ball shows a light's reflection where the ball would. Panes and
+translucent layers do not: their slab reflects and passes light about the
+facet's own normal (a thin slab, :mod:`simulator.kernels.surfaces`), so a
+curved glass prim's reflection of a small light or the sun is spread over
+its facets as on a faceted gem. Such a prim is named in the summary rather
+than read silently.
 """
 
 from __future__ import annotations
 
 import numpy as np
-from pxr import Usd, UsdGeom
-
-#: an authored normal this far (degrees) from its face's normal marks the mesh as smooth-shaded
-TURN_DEG = 1.0
-_ROUND = ("Sphere", "Cylinder", "Cone", "Capsule")
 
 
-def _smooth_mesh(prim: Usd.Prim) -> bool:
-    """Whether a Mesh's authored normals turn away from its faces' normals (a smooth-shaded mesh)."""
-    mesh = UsdGeom.Mesh(prim)
-    pv = UsdGeom.PrimvarsAPI(prim).GetPrimvar("normals")
-    if pv and pv.HasAuthoredValue():
-        normals, interp = pv.ComputeFlattened(), pv.GetInterpolation()
-    elif mesh.GetNormalsAttr().HasAuthoredValue():
-        normals, interp = mesh.GetNormalsAttr().Get(), mesh.GetNormalsInterpolation()
-    else:
-        return False
-    points = mesh.GetPointsAttr().Get()
-    counts = mesh.GetFaceVertexCountsAttr().Get()
-    indices = mesh.GetFaceVertexIndicesAttr().Get()
-    if normals is None or points is None or counts is None or indices is None:
-        return False
-    if interp not in (UsdGeom.Tokens.vertex, UsdGeom.Tokens.varying, UsdGeom.Tokens.faceVarying):
-        return False
-    normals, points, indices = np.asarray(normals, float), np.asarray(points, float), np.asarray(indices, int)
-    counts = np.asarray(counts, int)
-    per_corner = normals if interp == UsdGeom.Tokens.faceVarying else normals[np.minimum(indices, len(normals) - 1)]
-    if len(per_corner) < len(indices):
-        return False
-    cos_turn = np.cos(np.radians(TURN_DEG))
-    start = 0
-    for c in counts:
-        if c >= 3:
-            poly = points[indices[start:start + c]]
-            fn = np.cross(poly[1] - poly[0], poly[2] - poly[0])
-            ln = np.linalg.norm(fn)
-            if ln > 0:
-                nn = per_corner[start:start + c]
-                nn = nn / np.maximum(np.linalg.norm(nn, axis=1), 1e-300)[:, None]
-                if np.any(np.abs(nn @ (fn / ln)) < cos_turn):
-                    return True
-        start += c
-    return False
-
-
-def faceted_reflectors(stage: Usd.Stage, geometry) -> list[str]:
-    """The paths of curved prims whose faces reflect by a glossy or mirror lobe (module docstring)."""
-    if geometry.surface_id is None or not geometry.surfaces:
+def faceted_reflectors(geometry) -> list[str]:
+    """The paths of curved prims (faces with shading normals) whose faces are panes or translucent layers."""
+    g = geometry
+    if g.surface_id is None or not g.surfaces or g.shading_normals is None:
         return []
-    glossy = np.array([bool(getattr(s, "glossy", False)) for s in geometry.surfaces] + [False], bool)
-    prims = np.unique(geometry.prim[glossy[geometry.surface_id]])
-    out = []
-    for i in prims:
-        name = geometry.prim_names[int(i)]
-        prim = stage.GetPrimAtPath(name) if name.startswith("/") else Usd.Prim()
-        if not prim or not prim.IsValid():
-            continue
-        kind = prim.GetTypeName()
-        if kind in _ROUND or (kind == "Mesh" and _smooth_mesh(prim)):
-            out.append(name)
-    return out
+    pane = np.array([bool(getattr(s, "pane", False)) for s in g.surfaces] + [False], bool)[g.surface_id]
+    curved = np.any(g.shading_normals != 0, axis=(1, 2))
+    prims = np.unique(g.prim[pane & curved])
+    return [g.prim_names[int(i)] for i in prims]
 
 
 def faceted_note(names: list[str]) -> str:
     """The summary line for :func:`faceted_reflectors`' prims."""
     shown = ", ".join(names[:3]) + (" ..." if len(names) > 3 else "")
-    return (f"curved mirror or glossy surface(s) {shown} are traced as flat facets with face normals "
-            "(smooth normals are not modelled): their reflections of small lights and the sun are wrong, "
-            "a mirror facet shows a light only where it happens to face it; model such a reflector flat, "
-            "or raise probesim:tessellation on a Sphere")
+    return (f"curved glass or translucent surface(s) {shown} reflect and pass light about their flat facets' "
+            "normals (smooth normals shade glossy and mirror faces only): their reflections of small lights and "
+            "the sun are spread over the facets; model such glass flat where its reflection matters")

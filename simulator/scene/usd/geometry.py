@@ -19,6 +19,7 @@ from simulator.scene.model import Geometry
 from simulator.scene.usd.context import _Context, _get
 from simulator.scene.usd.lights import _geometry_light_emission, _geometry_light_surface, _is_geometry_light
 from simulator.scene.usd.materials import _surface
+from simulator.scene.usd.normals import implicit_corner_normals, mesh_corner_normals, smooth_vertex_normals
 from simulator.scene.usd.skinning import posed_points
 from simulator.scene.usd.tessellation import (
     _capsule_polygons,
@@ -56,16 +57,18 @@ class _GeometryBuilder:
         self._prim: list[np.ndarray] = []
         self._names: list[str] = []
         self._texture: list = []
+        self._normals: list = []
         self._n_points = 0
 
     def add(self, name: str, points: np.ndarray, tris: np.ndarray, albedo,
             emission, two_sided: bool, albedo_rgb=None, reflectance_id=None, emission_rgb=None,
-            surface_id=None, texture=None) -> None:
+            surface_id=None, texture=None, normals=None) -> None:
         """Add one prim's world triangles; ``albedo`` (T,) or scalar, ``emission`` (T, 2) or (2,),
         ``albedo_rgb`` (T, 3) or (3,), default grey ``(a, a, a)``; ``reflectance_id`` (T,) or scalar,
         default -1 (no measured reflectance); ``emission_rgb`` (T, 3) or (3,), default (1, 1, 1)
         (the emission's colour is the shared spectrum's); ``surface_id`` (T,) or scalar, default -1
-        (matte); ``texture`` ``(texture id (T,), st (T, 3, 2))`` of faces whose opacity is read per texel.
+        (matte); ``texture`` ``(texture id (T,), st (T, 3, 2))`` of faces whose opacity is read per texel;
+        ``normals`` (T, 3, 3) the unit shading normal at each triangle corner, None for flat faces.
         """
         t = len(tris)
         if t == 0:
@@ -87,6 +90,7 @@ class _GeometryBuilder:
         self._surface_id.append(np.broadcast_to(np.asarray(-1 if surface_id is None else surface_id, np.int32), (t,)))
         self._prim.append(np.full(t, index, np.int32))
         self._texture.append(texture)
+        self._normals.append(normals)
 
     def build(self, reflectances=(), emissive_spectra=(), surfaces=(), coverage_textures=()) -> Geometry:
         """The soup; ``reflectances`` the measured curves ``(name, ρ, grey)`` the ids index,
@@ -125,8 +129,21 @@ class _GeometryBuilder:
             surface_id=sid if (sid >= 0).any() else None,
             surfaces=list(surfaces),
             solid_side=side,
+            shading_normals=self._shading_normals(sid, surfaces),
             **self._textures(coverage_textures),
         )
+
+    def _shading_normals(self, sid: np.ndarray, surfaces) -> np.ndarray | None:
+        """``Geometry.shading_normals``: (T, 3, 3) float32, kept on faces whose surface row is glossy or a
+        pane (what the kernels shade by them, and what the summary names) and zero elsewhere; None when no
+        such face has them (a stage exported with normals on matte faces keeps no array)."""
+        if all(n is None for n in self._normals):
+            return None
+        out = np.concatenate([np.zeros((len(a), 3, 3), np.float32) if n is None else n.astype(np.float32)
+                              for n, a in zip(self._normals, self._albedo)])
+        keep = np.array([bool(s.glossy or s.pane) for s in surfaces] + [False], bool)[sid]
+        out[~keep] = 0.0
+        return out if np.any(out != 0) else None
 
     def _textures(self, coverage_textures) -> dict:
         """``Geometry`` fields of the faces whose opacity is read per texel (none: nothing)."""
@@ -162,6 +179,7 @@ class _Part:
     surface_id: np.ndarray | None = None
     texture_id: np.ndarray | None = None
     texture_uv: np.ndarray | None = None
+    normals: np.ndarray | None = None  # (T, 3, 3) shading normal at each triangle corner, local; None: flat faces
 
 
 def _read_gprim(ctx: _Context, prim: Usd.Prim, geo: _GeometryBuilder) -> None:
@@ -173,6 +191,10 @@ def _read_gprim(ctx: _Context, prim: Usd.Prim, geo: _GeometryBuilder) -> None:
     if posed is None:
         a, t = _world_affine(ctx, prim)
     else:
+        if part.normals is not None and not np.array_equal(posed[0], part.points):
+            # skinned point by point: its authored normals stay in the bind pose, so the posed mesh is shaded
+            # by its own area-weighted vertex normals
+            part.normals = smooth_vertex_normals(posed[0], np.full(len(part.tris), 3), part.tris.ravel())[part.tris]
         part.points, a, t = posed
     _add_placed(ctx, prim, part, a[None], t[None], geo, part.name)
 
@@ -201,16 +223,62 @@ def _gprim_part(ctx: _Context, prim: Usd.Prim) -> _Part | None:
     if not keep.all():
         tris, face_of = tris[keep[face_of]], face_of[keep[face_of]]
     texture = _texture_corners(ctx, prim, points, counts, indices, keep, surface_id[face_of], face_of)
+    normals = _triangle_normals(ctx, prim, points, counts, indices, keep)
     gprim = UsdGeom.Gprim(prim)
     if gprim.GetOrientationAttr().Get(ctx.time) == UsdGeom.Tokens.leftHanded:
         tris = tris[:, [0, 2, 1]]
         if texture is not None:
             texture = (texture[0], texture[1][:, [0, 2, 1]])
+        if normals is not None:
+            normals = normals[:, [0, 2, 1]]
     return _Part(name=str(prim.GetPath()), points=points, tris=tris, albedo=albedo[face_of],
                  emission=emission[face_of], two_sided=bool(gprim.GetDoubleSidedAttr().Get(ctx.time)),
                  is_light=is_light, albedo_rgb=albedo_rgb[face_of], reflectance_id=curve[face_of],
                  emission_rgb=emission_rgb[face_of], surface_id=surface_id[face_of],
-                 texture_id=None if texture is None else texture[0], texture_uv=None if texture is None else texture[1])
+                 texture_id=None if texture is None else texture[0], texture_uv=None if texture is None else texture[1],
+                 normals=normals)
+
+
+def _corner_triangles(points, counts, indices, keep, convex: bool) -> np.ndarray:
+    """The triangulation of :func:`_gprim_part` over face corners (T, 3): each triangle's corners as
+    indices into ``faceVertexIndices`` order (points[indices] triangulates as the points do)."""
+    corner_tris, _, corner_face = _triangulate_faces(points[indices], counts, np.arange(len(indices)), convex=convex)
+    return corner_tris[keep[corner_face]]
+
+
+def _triangle_normals(ctx: _Context, prim: Usd.Prim, points, counts, indices, keep) -> np.ndarray | None:
+    """The shading normal at each kept triangle's corners (T, 3, 3), in the prim's frame
+    (:mod:`.normals`), or None where its faces are flat."""
+    corner = _gprim_normals(ctx, prim, points, counts, indices)
+    if corner is None:
+        return None
+    return corner[_corner_triangles(points, counts, indices, keep, convex=not prim.IsA(UsdGeom.Mesh))]
+
+
+def _gprim_normals(ctx: _Context, prim: Usd.Prim, points, counts, indices) -> np.ndarray | None:
+    """A gprim's normal at each polygon corner (C, 3), or None for flat faces (:mod:`.normals`)."""
+    if prim.IsA(UsdGeom.Mesh):
+        return mesh_corner_normals(ctx, prim, points, counts, indices)
+    if prim.IsA(UsdGeom.Sphere):
+        return implicit_corner_normals("Sphere", points, counts, indices)
+    size = lambda attr: float(_get(ctx, attr))  # noqa: E731  (validated when the shape was tessellated)
+    for schema, kind in ((UsdGeom.Cylinder_1, "Cylinder"), (UsdGeom.Cylinder, "Cylinder"), (UsdGeom.Cone, "Cone"),
+                         (UsdGeom.Capsule_1, "Capsule"), (UsdGeom.Capsule, "Capsule")):
+        if not prim.IsA(schema):
+            continue
+        shape = schema(prim)
+        axis = str(shape.GetAxisAttr().Get(ctx.time))
+        if schema is UsdGeom.Cylinder_1:
+            dims = (size(shape.GetRadiusTopAttr()), size(shape.GetRadiusBottomAttr()), size(shape.GetHeightAttr()))
+        elif schema is UsdGeom.Cylinder:
+            r = size(shape.GetRadiusAttr())
+            dims = (r, r, size(shape.GetHeightAttr()))
+        elif schema is UsdGeom.Capsule_1:
+            dims = (size(shape.GetRadiusTopAttr()), size(shape.GetHeightAttr()))
+        else:
+            dims = (size(shape.GetRadiusAttr()), size(shape.GetHeightAttr()))
+        return implicit_corner_normals(kind, points, counts, indices, axis, dims)
+    return None  # Cube, Plane: flat faces
 
 
 def _texture_corners(ctx: _Context, prim: Usd.Prim, points, counts, indices, keep, tri_surface, face_of):
@@ -317,10 +385,19 @@ def _add_placed(ctx: _Context, prim: Usd.Prim, part: _Part, a: np.ndarray, t: np
     e_rgb = None if part.emission_rgb is None or part.is_light else part.emission_rgb[per_tri]
     sid = None if part.surface_id is None else part.surface_id[per_tri]
     texture = None if part.texture_id is None else (part.texture_id[per_tri], part.texture_uv[per_tri])
+    flip = mirrored[np.repeat(np.arange(n), len(part.tris))[keep]]
     if texture is not None:  # the corners follow a mirrored place's re-winding
-        flip = mirrored[np.repeat(np.arange(n), len(part.tris))[keep]]
         texture[1][flip] = texture[1][flip][:, [0, 2, 1]]
-    geo.add(name, world, tris, part.albedo[per_tri], emission, part.two_sided, rgb, rid, e_rgb, sid, texture)
+    normals = None
+    if part.normals is not None:  # normals map by the inverse transpose: n' = n @ inv(a) for row vectors
+        place = np.repeat(np.arange(n), len(part.tris))[keep]
+        inv = np.linalg.inv(a)
+        normals = np.einsum("tcj,tjk->tck", part.normals[per_tri], inv[place])
+        length = np.linalg.norm(normals, axis=2, keepdims=True)
+        normals = np.divide(normals, length, out=np.zeros_like(normals), where=length > 0)
+        normals[flip] = normals[flip][:, [0, 2, 1]]
+    geo.add(name, world, tris, part.albedo[per_tri], emission, part.two_sided, rgb, rid, e_rgb, sid, texture,
+            normals)
 
 
 def _gprim_polygons(ctx: _Context, prim: Usd.Prim):

@@ -375,7 +375,8 @@ def _finish_warnings(ctx: _Context) -> None:
                  "watertight (then the stage is refused) it is cut at max_depth (65536 bounces when unlimited)")
     if ctx.subdivided:
         meshes = ", ".join(f"{n} {scheme}" for scheme, n in sorted(ctx.subdivided.items()))
-        ctx.warn(f"subdivision surfaces read as their control cage (not refined): {meshes} mesh(es)")
+        ctx.warn(f"subdivision surfaces read as their control cage (not refined; glossy and mirror faces shaded by "
+                 f"the cage's smooth normals): {meshes} mesh(es)")
     parts = []
     if ctx.not_read:
         parts.append("not read: " + ", ".join(f"{n} {what}" for what, n in sorted(ctx.not_read.items())))

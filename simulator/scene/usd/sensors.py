@@ -14,7 +14,7 @@ import math
 import numpy as np
 from pxr import Usd
 
-from simulator.scene.model import DEFAULT_PROBE_RESOLUTION, SENSOR_KINDS, Sensor, SensorKind
+from simulator.scene.model import DEFAULT_GLARE_RESOLUTION, DEFAULT_PROBE_RESOLUTION, SENSOR_KINDS, Sensor, SensorKind
 from simulator.scene.usd.context import _Context, _get
 from simulator.scene.usd.transforms import _axis_scales, _unit, _world_affine
 
@@ -44,6 +44,19 @@ def _read_sensor(ctx: _Context, prim: Usd.Prim) -> Sensor:
         name=str(_sensor_attr(ctx, prim, "name", str(prim.GetPath()))),
         kind=kind, position=t, normal=normal, up=up, source=str(prim.GetPath()),
     )
+    model = str(_sensor_attr(ctx, prim, "model", "") or "").strip()
+    if model:  # a sensor model: a bundled name, or a .toml relative to the stage file
+        if kind != SensorKind.IRRADIANCE:
+            raise ctx.error(prim, f"{SENSOR_ATTR_PREFIX}model: only an irradiance sensor takes a model")
+        from pathlib import Path
+
+        from simulator.errors import UserError
+        from simulator.sensor_models.model import load_model
+
+        try:
+            sensor.model = load_model(model, Path(ctx.path).parent, f"{SENSOR_ATTR_PREFIX}model")
+        except UserError as e:
+            raise ctx.error(prim, str(e)) from None
     if kind == SensorKind.RADIANCE:
         half = float(_sensor_attr(ctx, prim, "halfAngleDeg", 0.0))
         if not (math.isfinite(half) and 0.0 <= half <= 90.0):
@@ -58,12 +71,30 @@ def _read_sensor(ctx: _Context, prim: Usd.Prim) -> Sensor:
         if not (math.isfinite(w) and math.isfinite(h) and w > 0 and h > 0):
             raise ctx.error(prim, f"{SENSOR_ATTR_PREFIX}size must be positive, not {tuple(size)}")
         sensor.size = (w, h)
-    elif kind == SensorKind.PROBE:
-        res = _sensor_attr(ctx, prim, "resolution", DEFAULT_PROBE_RESOLUTION)
+    elif kind in (SensorKind.PROBE, SensorKind.GLARE):
+        default = DEFAULT_PROBE_RESOLUTION if kind == SensorKind.PROBE else DEFAULT_GLARE_RESOLUTION
+        res = _sensor_attr(ctx, prim, "resolution", default)
         if len(res) != 2 or int(res[0]) < 1 or int(res[1]) < 1:
             raise ctx.error(prim, f"{SENSOR_ATTR_PREFIX}resolution must be two positive integers, not {tuple(res)}")
         sensor.resolution = (int(res[0]), int(res[1]))
+    if kind == SensorKind.GLARE:
+        sensor.glare = _glare_settings(ctx, prim)
     return sensor
+
+
+def _glare_settings(ctx: _Context, prim: Usd.Prim):
+    """A glare prim's settings: ``probesim:sensor:evalglare`` (evalglare's source options) and
+    ``probesim:sensor:dgpStderr`` (the standard error of DGP it traces to)."""
+    from simulator.glare.sources import GlareSettings, parse_evalglare_options
+
+    try:
+        opts = parse_evalglare_options(str(_sensor_attr(ctx, prim, "evalglare", "")))
+    except ValueError as e:
+        raise ctx.error(prim, f"{SENSOR_ATTR_PREFIX}evalglare: {e}") from None
+    target = float(_sensor_attr(ctx, prim, "dgpStderr", 0.005))
+    if not (math.isfinite(target) and 0.0 < target < 1.0):
+        raise ctx.error(prim, f"{SENSOR_ATTR_PREFIX}dgpStderr must be between 0 and 1, not {target:g}")
+    return GlareSettings(dgp_stderr=target, **opts)
 
 
 def _sensor_attr(ctx: _Context, prim: Usd.Prim, name: str, default):

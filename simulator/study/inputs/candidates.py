@@ -21,6 +21,8 @@ import fnmatch
 import math
 from dataclasses import dataclass, field
 
+from pathlib import Path
+
 import numpy as np
 
 from simulator.config.capacity import too_many_sensors
@@ -121,7 +123,11 @@ def _boxes(scene: Scene, patterns: list[str], label: str) -> list[tuple[np.ndarr
     return out
 
 
-def _sensor(spec: CandidateSpec, name: str, position: np.ndarray, normal: np.ndarray, source: str) -> Sensor:
+def _sensor(spec: CandidateSpec, name: str, position: np.ndarray, normal: np.ndarray, source: str,
+            model=None) -> Sensor:
+    if model is not None:  # a real head: its angular response in place of the cosine or the cone
+        return Sensor(name=name, kind=SensorKind.IRRADIANCE, position=position, normal=normal, source=source,
+                      optics=model.angular, model=model)
     if spec.kind in ("cylindrical", "semicylindrical"):  # the axis along the prim's normal (a floor: vertical)
         axis = normal / np.linalg.norm(normal)
         ref = np.asarray(spec.facing, float) if spec.facing is not None else np.array([1.0, 0.0, 0.0])
@@ -138,7 +144,7 @@ def _sensor(spec: CandidateSpec, name: str, position: np.ndarray, normal: np.nda
     return Sensor(name=name, kind=SensorKind.IRRADIANCE, position=position, normal=normal, source=source)
 
 
-def _grid_on_prim(scene: Scene, spec: CandidateSpec, pid: int, label: str, multi: bool):
+def _grid_on_prim(scene: Scene, spec: CandidateSpec, pid: int, label: str, multi: bool, model=None):
     g = scene.geometry
     prim = g.prim_names[pid]
     tri = g.points[g.triangles[g.prim == pid]]  # (T, 3, 3)
@@ -173,7 +179,7 @@ def _grid_on_prim(scene: Scene, spec: CandidateSpec, pid: int, label: str, multi
     leaf = prim.rsplit("/", 1)[-1]
     stem = f"{spec.name}/{leaf}" if multi else spec.name
     out = [
-        Candidate(_sensor(spec, f"{stem}[{i},{j}]", pos[k], n.copy(), f"{label} on {prim}"), spec.name, (i, j), prim)
+        Candidate(_sensor(spec, f"{stem}[{i},{j}]", pos[k], n.copy(), f"{label} on {prim}", model), spec.name, (i, j), prim)
         for k, (i, j) in enumerate(cells) if on_prim[k]
     ]  # fmt: skip
     return out, grid, int((~on_prim).sum())
@@ -194,6 +200,11 @@ def build_candidates(scene: Scene, specs: list[CandidateSpec], file_label: str) 
     for k, spec in enumerate(specs):
         label = f"{file_label}: candidates[{k}]"
         boxes = _boxes(scene, spec.drop_inside, label)
+        model = None
+        if spec.model is not None:  # a bundled name or a .toml beside the study file
+            from simulator.sensor_models.model import load_model
+
+            model = load_model(spec.model, Path(file_label).parent, f"{label}.model")
         cands: list[Candidate] = []
         grids: dict[str, Grid] = {}
         outside = 0
@@ -205,7 +216,7 @@ def build_candidates(scene: Scene, specs: list[CandidateSpec], file_label: str) 
                     raise UserError(f"{label}.on[{j}]: no geometry prim matches {pat!r}")
                 pids += [i for i in ids if i not in pids]
             for pid in pids:
-                c, grid, off = _grid_on_prim(scene, spec, pid, label, len(pids) > 1)
+                c, grid, off = _grid_on_prim(scene, spec, pid, label, len(pids) > 1, model)
                 cands += c
                 grids[scene.geometry.prim_names[pid]] = grid
                 outside += off
@@ -213,7 +224,8 @@ def build_candidates(scene: Scene, specs: list[CandidateSpec], file_label: str) 
             nrm = np.asarray(spec.normal, float)
             nrm /= np.linalg.norm(nrm)
             for j, p in enumerate(spec.points):
-                cands.append(Candidate(_sensor(spec, f"{spec.name}[{j}]", np.asarray(p, float), nrm.copy(), f"{label}.points[{j}]"),
+                cands.append(Candidate(_sensor(spec, f"{spec.name}[{j}]", np.asarray(p, float), nrm.copy(), f"{label}.points[{j}]",
+                                               model),
                                        spec.name, None, ""))  # fmt: skip
         keep = [c for c in cands if not any(np.all(c.position >= lo - 1e-9) and np.all(c.position <= hi + 1e-9) for lo, hi in boxes)]
         if not keep:

@@ -236,6 +236,8 @@ def cost(res) -> dict:
 def write_outputs(res, versions: dict) -> list[Path]:
     """Write the CSVs, heat maps, report page and record into ``res.out_dir``; returns the paths."""
     import simulator.study.annual.report  # noqa: F401  (registers the annual section; shown when res.annual is set)
+    from simulator.study.report.ugr_report import ugr_csv  # (registers the UGR section; shown when res.ugr is set)
+    from simulator.study.report.glare_report import glare_files  # (registers the glare section; shown when res.glare is set)
     from simulator.study.report.page import report_html
 
     d = res.out_dir
@@ -244,6 +246,10 @@ def write_outputs(res, versions: dict) -> list[Path]:
         files[d / "placement.csv"] = placement_csv(res).encode()
     if getattr(res, "areas", None):
         files[d / "areas.csv"] = areas_csv(res).encode()
+    if getattr(res, "ugr", None):
+        files[d / "ugr.csv"] = ugr_csv(res).encode()
+    if getattr(res, "glare", None):
+        files.update(glare_files(res))
     res.plan_cache = {}  # zone -> its plans (PNG), drawn once for the files and report.html
     for z in res.study.zone:
         pngs = zone_plan_pngs(res, z.name)

@@ -88,6 +88,8 @@ def _sensor_text(s: Sensor) -> str:
     text = f"{s.name}|{int(s.kind)}|{s.position.tolist()}|{s.normal.tolist()}|{s.half_angle!r}"
     if "up" in s.spec.attributes and s.spec.name != "patch":  # a cylinder's axis
         text += f"|{s.up.tolist()}"
+    if getattr(s, "optics", None) is not None:  # a sensor model's head: another head is another reading
+        text += f"|optics {s.optics.digest()}"
     return text
 
 
