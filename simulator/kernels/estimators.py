@@ -49,7 +49,8 @@ from simulator.scene.model import Sensor, SensorKind
 
 from .group_tally import clear_group_sample, fold_group_sample, tally_group, tregenza_patch
 from .guide import glossy_mixture_factor, guide_fraction, guide_row, make_guided_step, mixture_factor, pdf_guide, tally_patch
-from .light_pick import LightPick, is_delta, pick_light, pick_light_at, pick_scale, picks_at, tally_patch_pick, tally_pick
+from .light_pick import (LightPick, computed_at, is_delta, pick_light, pick_light_at, pick_scale, picks_at, tally_patch_pick,
+                         tally_pick)
 from .lights import (  # noqa: F401  (GuideRec, LightRec, SceneRec re-exported for the engine)
     RAY_INF,
     GuideRec,
@@ -628,9 +629,10 @@ def make_trace(surfaces: bool) -> Trace:
                     rng = pk.rng
                 for li in range(scene.n_lights):
                     u = wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng))
-                    # a light the plan proved wholly behind the sensor adds nothing there
+                    # a light the plan proved wholly behind the sensor adds nothing there (mask 0); one
+                    # whose direct light there is computed (mask 2) is not sampled there
                     if depth == 0 and params.mask_row >= 0:
-                        if scene.light_mask[params.mask_row * scene.n_lights + li] == 0:
+                        if scene.light_mask[params.mask_row * scene.n_lights + li] != 1:
                             continue
                     sel = float(1.0)
                     if picks_at(params, depth) and not is_delta(scene.lights[li]):
@@ -961,7 +963,7 @@ def make_trace(surfaces: bool) -> Trace:
             for li in range(scene.n_lights):
                 l = scene.lights[li]
                 t = hit_light_before(l, o, wi, t_hit)  # −1 for lights with no surface
-                if t > 0.0 and count:
+                if t > 0.0 and count and not computed_at(scene, params.mask_row, depth, li):
                     w = float(1.0)
                     if weigh:
                         pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, ns, wi, t, -1)
@@ -1000,7 +1002,7 @@ def make_trace(surfaces: bool) -> Trace:
                         if is_cone_light(scene.lights[li]) and (le[0] > 0.0 or le[1] > 0.0):
                             if curve_covers(scene, curve_k, o_prev, p, wi):
                                 le = wp.vec2(0.0, 0.0)
-                    if (le[0] > 0.0 or le[1] > 0.0) and count:
+                    if (le[0] > 0.0 or le[1] > 0.0) and count and not computed_at(scene, params.mask_row, depth, li):
                         w = float(1.0)
                         if weigh:
                             pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, ns, wi, RAY_INF, -1)
@@ -1049,7 +1051,8 @@ def make_trace(surfaces: bool) -> Trace:
                 continue
             delta = 0
             le = tri_emitted(scene, face, cos_view)
-            if (le[0] > 0.0 or le[1] > 0.0) and count:
+            if (le[0] > 0.0 or le[1] > 0.0) and count and not computed_at(scene, params.mask_row, depth,
+                                                                          params.emissive_light):
                 w = float(1.0)
                 if weigh and params.emissive_light >= 0:
                     w = power_heuristic(pdf_b, pick_scale(scene, params, pk, params.emissive_light, p, n, depth)
