@@ -238,27 +238,35 @@ def to_local(v: wp.vec3, n: wp.vec3) -> wp.vec3:
     return wp.vec3(wp.dot(v, frame_x(n)), wp.dot(v, frame_y(n)), wp.dot(v, n))
 
 
-@wp.func
-def lights_seen_along(scene: SceneRec, params: TraceParams, total_in: wp.vec2, o: wp.vec3, d: wp.vec3, t_stop: float,
-                      first: RayHit, rng0: wp.uint32, w: float, t_w: float, tint: wp.vec4, t_tint: float) -> wp.vec2:
-    """``total_in`` plus the radiance a meter's ray (o, d) receives from the UsdLux area lights it meets before ``t_stop``
-    (they do not block), each × ``w`` and the lanes ``tint`` its segment carried in, and × the weights
-    and lanes of the faces between o and the light when it lies past the first weighted face (``t_w``)
-    or coloured pane (``t_tint``) of the walk from ``first`` (:func:`.spectral_surfaces.walk_before`
-    replays it with the same uniforms), added light by light."""
-    total = total_in
-    for li in range(scene.n_lights):
-        l = scene.lights[li]
-        t_l = hit_light_before(l, o, d, t_stop)
-        if t_l > 0.0:
-            tint_l = tint
-            w_l = w
-            if t_l >= wp.min(t_tint, t_w):
-                wb = walk_before(scene, params, o, d, first, rng0, t_l)
-                tint_l = wp.cw_mul(tint, wb.tint)
-                w_l = w * wb.weight
-            total += light_contribution(scene, params, li, (w_l * shaping_factor(l, -d)) * l.emission, tint_l)
-    return total
+@functools.cache
+def make_lights_seen_along(surfaces: bool):
+    """:func:`lights_seen_along` of one trace variant (:func:`make_trace`): with ``surfaces`` False no
+    face weighs or colours a ray (``t_w`` and ``t_tint`` stay ``RAY_INF``), so the walk replayed past
+    one is left out of the generated code."""
+
+    @wp.func
+    def lights_seen_along(scene: SceneRec, params: TraceParams, total_in: wp.vec2, o: wp.vec3, d: wp.vec3, t_stop: float,
+                          first: RayHit, rng0: wp.uint32, w: float, t_w: float, tint: wp.vec4, t_tint: float) -> wp.vec2:
+        """``total_in`` plus the radiance a meter's ray (o, d) receives from the UsdLux area lights it meets before ``t_stop``
+        (they do not block), each × ``w`` and the lanes ``tint`` its segment carried in, and × the weights
+        and lanes of the faces between o and the light when it lies past the first weighted face (``t_w``)
+        or coloured pane (``t_tint``) of the walk from ``first`` (:func:`.spectral_surfaces.walk_before`
+        replays it with the same uniforms), added light by light."""
+        total = total_in
+        for li in range(scene.n_lights):
+            l = scene.lights[li]
+            t_l = hit_light_before(l, o, d, t_stop)
+            if t_l > 0.0:
+                tint_l = tint
+                w_l = w
+                if (t_l >= wp.min(t_tint, t_w)) if wp.static(surfaces) else False:
+                    wb = walk_before(scene, params, o, d, first, rng0, t_l)
+                    tint_l = wp.cw_mul(tint, wb.tint)
+                    w_l = w * wb.weight
+                total += light_contribution(scene, params, li, (w_l * shaping_factor(l, -d)) * l.emission, tint_l)
+        return total
+
+    return lights_seen_along
 
 
 @wp.func
@@ -473,6 +481,7 @@ def make_trace(surfaces: bool) -> Trace:
     and Warp's kernel cache serves each (docs/DESIGN.md §Trace variants,
     §Kernel modules)."""
     guided_step = make_guided_step(surfaces)
+    lights_seen_along = make_lights_seen_along(surfaces)
 
     @wp.func
     def vertex_estimate(
@@ -633,7 +642,7 @@ def make_trace(surfaces: bool) -> Trace:
             #    light). A path from here off a mirror face of the table straight to the sun leaves the sun
             #    out (img_prev at the next vertex): this connection counts it
             img_here = int(0)
-            if params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes > 0:
+            if (params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes > 0) if wp.static(surfaces) else False:
                 img_here = 1
                 for li in range(scene.n_lights):
                     if not has_image(scene.lights[li]):
@@ -825,7 +834,7 @@ def make_trace(surfaces: bool) -> Trace:
             if (scene.surfaces != 0) if wp.static(surfaces) else False:
                 if hit.face >= 0:
                     walks = scene.surf_id[hit.face] >= 0
-            if walks:
+            if (walks) if wp.static(surfaces) else False:
                 lp = pass_through_traced(scene, params, o, wi, hit, rng)  # coloured panes: the same draws, per lane
                 rng = lp.rng
                 hit = lp.hit
@@ -851,7 +860,7 @@ def make_trace(surfaces: bool) -> Trace:
                         w = power_heuristic(pdf_b, pdf_l)
                     tint_l = tint_before
                     w_l = float(1.0)
-                    if t >= wp.min(t_tint, t_pass):  # past a weighted or coloured pane: those in front of the light only
+                    if (t >= wp.min(t_tint, t_pass)) if wp.static(surfaces) else False:  # past a weighted or coloured pane: those in front of the light only
                         wb = walk_before(scene, params, o, wi, hit0, rng0, t)
                         tint_l = wp.cw_mul(tint_before, wb.tint)
                         w_l = wb.weight
