@@ -152,3 +152,91 @@ def test_a_warp_that_names_its_files_otherwise_still_loads_silently(fresh_cache,
     assert KM.load([TINY]) == () and reports == []
     assert _twice.module.execs  # loaded (compiled by Warp, unannounced)
     np.testing.assert_array_equal(_launch_twice(), [2.0, 6.0])
+
+
+def test_a_compile_begun_early_is_waited_for_and_reported_by_its_load(fresh_cache, reports):
+    """``start`` on a cold cache begins the compile on a thread of its own and reports nothing; the
+    ``load`` that needs the module waits for it and reports it as its own compile (the header, then
+    one completion), returns its label, and the kernel runs; a later ``start`` on the cached module
+    begins nothing."""
+    assert KM.start([TINY]) == ("tiny test kernel",)
+    assert reports == []  # nothing said before a load waits for it
+    assert KM.load([TINY]) == ("tiny test kernel",)
+    assert reports[0].done == 0 and reports[0].finished is None and reports[0].labels == ("tiny test kernel",)
+    assert [r.finished for r in reports if r.finished is not None] == ["tiny test kernel"]
+    assert reports[-1].done == 1 and reports[-1].elapsed_s > 0.0
+    assert KM.in_flight() == ()
+    np.testing.assert_array_equal(_launch_twice(), [2.0, 6.0])
+    _twice.module.unload()  # a later process: cached
+    n = len(reports)
+    assert KM.start([TINY]) == () and KM.load([TINY]) == () and len(reports) == n
+
+
+class _BlockedModule:
+    """A stand-in for a Warp module whose compile waits for ``release`` (then fails if ``error``)."""
+
+    def __init__(self, error: Exception | None = None):
+        import threading
+
+        self.release = threading.Event()
+        self.error = error
+        self.loads = 0
+
+    def load(self, device, block_dim=None):
+        self.loads += 1
+        assert self.release.wait(30.0)
+        if self.error is not None:
+            raise self.error
+
+
+def test_a_compile_still_running_is_named_and_its_failure_reaches_the_load(monkeypatch, reports):
+    """While a begun compile runs, ``in_flight`` names it (the command line says so when it stops
+    early, since the process finishes that compile before it exits); a compile that fails raises in
+    the ``load`` that waits for it, not silently on its thread."""
+    blocked = KM.KernelModule("blocked test module", _BlockedModule(RuntimeError("clang failed")))
+    monkeypatch.setattr(KM, "is_cached", lambda km, device="cpu": False)
+    assert KM.start([blocked]) == ("blocked test module",)
+    assert KM.start([blocked]) == ()  # begun already: not twice
+    assert KM.in_flight() == ("blocked test module",)
+    blocked.module.release.set()
+    with pytest.raises(RuntimeError, match="clang failed"):
+        KM.load([blocked])
+    assert KM.in_flight() == ()
+    assert blocked.module.loads == 1
+
+
+def test_the_command_line_names_a_compile_it_finishes_before_exiting(monkeypatch, capsys):
+    """A command stopped by a user error while a begun compile runs says, on one more stderr line,
+    which compile the process finishes (and caches) before it exits, so the wait is not silent."""
+    from simulator.commands import cli
+
+    blocked = KM.KernelModule("blocked test module", _BlockedModule())
+    monkeypatch.setattr(KM, "is_cached", lambda km, device="cpu": False)
+    KM.start([blocked])
+    try:
+        cli._say_compiles_left()
+        err = capsys.readouterr().err
+        assert err == ("probesim: finishing the kernel compile begun for this run (cached for the next): "
+                       "blocked test module\n")
+    finally:
+        blocked.module.release.set()
+        KM.load([blocked])
+    cli._say_compiles_left()
+    assert capsys.readouterr().err == ""
+
+
+def test_a_run_begins_the_compile_of_the_modules_its_plan_loads(monkeypatch):
+    """``start_kernels`` begins the stage's trace variant for any traced method or probe, adds the
+    closed forms for ``analytic``, and begins nothing for a run read wholly on the host (``exact``)."""
+    from simulator.engine import driver
+    from simulator.scene.usd import load_stage
+
+    begun = []
+    monkeypatch.setattr(KM, "start", lambda modules, device="cpu": begun.append([km.label for km in modules]) or ())
+    scene = load_stage(ROOT / "stages" / "quickstart.usda")
+    driver.start_kernels(scene, ["exact", "exact"], False)
+    assert begun == []
+    driver.start_kernels(scene, ["exact"], True)
+    driver.start_kernels(scene, ["guided", "exact"], False)
+    driver.start_kernels(scene, ["analytic"], False)
+    assert begun == [["trace (all-matte stages)"]] * 2 + [["trace (all-matte stages)", "closed forms"]]
