@@ -12,7 +12,7 @@ import numpy as np
 
 from simulator import __version__
 from simulator.config.loader import RunConfig
-from simulator.engine.driver import EngineResult, start_kernels
+from simulator.engine.driver import EngineResult
 from simulator.errors import UserError
 from simulator.interrupts import StopFlag, sigint_deferred
 from simulator.io.maps import grid_outputs, probe_outputs
@@ -222,6 +222,15 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True) -> RunOutp
 
     t0 = time.perf_counter()
     scene, token = cached_scene(cfg)
+    spectrum = None  # the emitters' spectrum, for response columns (grey scenes: exact post hoc)
+    hero = None  # spectral transport's tables (a colour can change a reading: hero wavelengths)
+    if choose_transport(scene)[0] == "grey":
+        if cfg.spectra is not None:
+            spectrum = _run_spectrum(cfg, scene)
+    else:
+        from simulator.spectra.traced import run_hero_tables
+
+        hero = run_hero_tables(cfg, scene)
     sensors = collect_sensors(cfg, scene)
     misplaced = sensor_warnings(scene, sensors)  # sensors a stage would read a plausible wrong number at
     # probes are read by their own kernel (simulator.engine.probes)
@@ -235,32 +244,14 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True) -> RunOutp
     if probes:  # no closed form for a probe: its method is chosen for the run
         probes_method, why = probe_method(scene, sim.method, sim.component)
         reason += f"; probes: {why}"
-    t_plan = time.perf_counter()
-    spectrum = None  # the emitters' spectrum, for response columns (grey scenes: exact post hoc)
-    hero = None  # spectral transport's tables (a colour can change a reading: hero wavelengths)
-    grey = choose_transport(scene)[0] == "grey"
-    if grey and cfg.spectra is not None:
-        spectrum = _run_spectrum(cfg, scene)
-    t_spectrum = time.perf_counter()
-    # a first run compiles its kernels: begun now, beside the spectral tables and the upload below
-    start_kernels(scene, [sp.method for sp in plan.sensors], bool(probes), sim.device)
-    t_started = time.perf_counter()
-    if not grey:
-        from simulator.spectra.traced import run_hero_tables
-
-        hero = run_hero_tables(cfg, scene)
-    t_tables = time.perf_counter()
+    t_load = time.perf_counter()
     engine = config_engine(cfg, scene, plain, hero=hero)
     for w in _scene_warnings(scene, engine) + ([] if hero is None else hero.notes) + misplaced:
         log(f"warning: {w}")
     t_setup = time.perf_counter()
-    # the record's load (stage, sensors, tables), plan and setup (the compile's start among it) seconds
-    load_s, plan_s = (t_read - t0) + (t_spectrum - t_plan) + (t_tables - t_started), t_plan - t_read
-    setup_s = (t_setup - t_tables) + (t_started - t_spectrum)
-    times = (t0, t0 + load_s, t0 + load_s + plan_s, t0 + load_s + plan_s + setup_s)
     with sigint_deferred() as stop:  # Ctrl-C from here on: stop after the batch, write what was measured
         return _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, reason, engine, stop, progress, log,
-                                times, spectrum, write, misplaced)  # fmt: skip
+                                (t0, t_read, t_load, t_setup), spectrum, write, misplaced)  # fmt: skip
 
 
 def _run_spectrum(cfg: RunConfig, scene: Scene):

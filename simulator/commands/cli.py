@@ -284,16 +284,6 @@ def _say_compiles() -> None:
     report_compiles_to(CompileDisplay())
 
 
-def _say_compiles_left() -> None:
-    """On a command that stops early: name the kernel compile a run began in the background, which
-    the process finishes (and caches) before it exits, so the wait is not silent."""
-    km = sys.modules.get("simulator.engine.kernel_modules")
-    left = km.in_flight() if km is not None else ()
-    if left:
-        print(f"probesim: finishing the kernel compile begun for this run (cached for the next): {', '.join(left)}",
-              file=sys.stderr)
-
-
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     # a short command given on the process's own command line (argv None): start it lean
@@ -328,11 +318,9 @@ def main(argv: list[str] | None = None) -> int:
                               samples=args.samples, seed=args.seed, rel_error=args.rel_error)
     except UserError as e:
         print(f"probesim: error: {e}", file=sys.stderr)
-        _say_compiles_left()
         return e.exit_code
     except KeyboardInterrupt:
         print("probesim: interrupted; nothing written", file=sys.stderr)
-        _say_compiles_left()
         return 130
     except BrokenPipeError:
         # the reader of our output went away (`probesim verify | head`): stop

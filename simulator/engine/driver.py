@@ -41,7 +41,7 @@ from simulator.scene.model import MAX_PROBE_PIXELS, Scene, Sensor, SensorKind
 
 __all__ = [
     "COMPONENTS", "METHOD_FLAGS", "cuda_available", "warp_version", "Engine", "EngineResult", "LightGroups", "Progress",
-    "resolve_device", "load_kernels", "start_kernels",
+    "resolve_device", "load_kernels",
 ]  # fmt: skip
 
 #: samples one kernel thread draws for one sensor (a block)
@@ -97,25 +97,6 @@ def load_kernels(device: str = "cpu", scene: Scene | None = None) -> None:
     closed forms. A one-time cost of the process that timings of a trace can then leave out."""
     variants = [False, True] if scene is None else [models_surfaces(scene.geometry)]
     KM.load([KM.trace_module(v) for v in variants] + [KM.analytic_module()], device)
-
-
-def start_kernels(scene: Scene, methods, probes: bool, device: str = "cpu") -> tuple[str, ...]:
-    """Begin compiling, in the background (:func:`.kernel_modules.start`), the modules a run of
-    ``methods`` (its plan's, one per sensor) and, with ``probes``, its probes will load on
-    ``scene``'s stage, where the kernel cache lacks them; returns their labels. Every method but
-    ``exact`` uploads the scene, which loads the stage's trace variant; ``analytic`` also loads the
-    closed forms. The engine's loads then wait for these compiles instead of starting them, so the
-    host work in between (spectral tables, the upload) runs beside clang on another core. Only on
-    the CPU, where a compile takes seconds to tens of seconds; elsewhere nothing is started."""
-    methods = set(methods)
-    if not probes and methods <= {"exact"}:
-        return ()
-    if resolve_device(device) != "cpu":
-        return ()
-    modules = [KM.trace_module(models_surfaces(scene.geometry))]
-    if "analytic" in methods:
-        modules.append(KM.analytic_module())
-    return KM.start(modules, "cpu")
 
 
 @dataclass

@@ -8,9 +8,6 @@ first compile is most of a first run's time on a CPU (tens of seconds);
 :func:`load` therefore tells beforehand which modules the cache lacks and
 reports the compile (:class:`CompileProgress`, to the reporter of
 :func:`report_compiles_to`), and compiles the missing ones in parallel.
-:func:`start` begins a compile early, on a thread of its own, so that it
-runs beside the host's work (a run's spectral tables, the scene's upload)
-on the other core; the :func:`load` that needs the module then waits for it.
 
 The modules (docs/DESIGN.md §Kernel modules):
 
@@ -27,14 +24,14 @@ from __future__ import annotations
 import os
 import threading
 import time
-from concurrent.futures import Future, ThreadPoolExecutor, as_completed
+from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import dataclass
 from typing import Callable
 
 from .device import resolve_device, warp
 
 __all__ = ["KernelModule", "CompileProgress", "trace_module", "analytic_module", "every_module", "is_cached",
-           "load", "start", "in_flight", "report_compiles_to"]
+           "load", "report_compiles_to"]
 
 
 @dataclass(frozen=True)
@@ -164,97 +161,26 @@ def _cache_files(m, dev, dim: int) -> tuple[str, str]:
 TICK_S = 1.0
 
 
-@dataclass(frozen=True)
-class _Started:
-    """A compile :func:`start` began: the module, when, and its outcome (set by the compiling thread)."""
-
-    km: KernelModule
-    t0: float
-    done: Future
-
-
-#: compiles begun by :func:`start` and not yet taken up by a :func:`load`, by (module, device name)
-_started: dict[tuple[int, str], _Started] = {}
-#: every compile :func:`start` began in this process (:func:`in_flight`)
-_begun: list[_Started] = []
-_started_lock = threading.Lock()
-
-
-def start(modules: list[KernelModule], device: str = "cpu") -> tuple[str, ...]:
-    """Begin compiling, on one thread of its own, those of ``modules`` the kernel cache lacks on
-    ``device``; returns their labels (empty when all are cached: nothing is started).
-
-    Nothing is reported here: the :func:`load` of a started module waits for its compile and
-    reports it as its own (the seconds counted from this start), so a run's display and log are
-    those of a compile :func:`load` ran itself, only shorter by what overlapped. The thread is not
-    a daemon: a process that stops early (a user error, Ctrl-C) finishes the compile, and caches
-    it, before it exits, rather than tear clang's libraries down under it or leave Warp's build
-    folder behind (:func:`in_flight` names it meanwhile). Called with every module cached, or with
-    modules already started, it does nothing for them.
-    """
-    dev = _device(device)
-    name = str(dev)
-    with _started_lock:
-        missing = [km for km in modules if (id(km.module), name) not in _started and not is_cached(km, name)]
-        if not missing:
-            return ()
-        t0 = time.perf_counter()
-        jobs = [_Started(km, t0, Future()) for km in missing]
-        for job in jobs:
-            _started[(id(job.km.module), name)] = job
-        _begun.extend(jobs)
-
-    def compile_all() -> None:
-        for job in jobs:
-            if not job.done.set_running_or_notify_cancel():
-                continue
-            try:
-                job.km.module.load(dev, _variant(job.km.module, dev))
-            except BaseException as e:  # noqa: BLE001  (handed to the load that waits for it)
-                job.done.set_exception(e)
-            else:
-                job.done.set_result(None)
-
-    threading.Thread(target=compile_all, name="probesim-compile", daemon=False).start()
-    return tuple(km.label for km in missing)
-
-
-def in_flight() -> tuple[str, ...]:
-    """The modules whose compile :func:`start` began and that are still compiling (the process
-    waits for them before it exits)."""
-    with _started_lock:
-        return tuple(job.km.label for job in _begun if not job.done.done())
-
-
-def _take_started(km: KernelModule, name: str) -> _Started | None:
-    """The compile :func:`start` began for ``km`` on device ``name``, handed to one :func:`load` only."""
-    with _started_lock:
-        return _started.pop((id(km.module), name), None)
-
-
 def load(modules: list[KernelModule], device: str = "cpu", workers: int | None = None) -> tuple[str, ...]:
     """Load ``modules`` on ``device``, compiling those the kernel cache lacks; returns their labels.
 
     The missing ones are compiled ``workers`` at a time (default: one per CPU core, at most
     their number): Warp generates each module's C++ under a lock and runs clang outside it, so
-    two modules compile in about the wall time of the larger on two cores. A module whose
-    compile :func:`start` began is waited for, and counts as compiled here. While they compile,
+    two modules compile in about the wall time of the larger on two cores. While they compile,
     the reporter (:func:`report_compiles_to`) is told at the start, each second, and as each
     module finishes. Nothing is reported when every module is cached.
     """
     dev = _device(device)
     name = str(dev)
-    started = {id(km.module): job for km in modules if (job := _take_started(km, name)) is not None}
-    missing = [km for km in modules if id(km.module) not in started and not is_cached(km, name)]
+    missing = [km for km in modules if not is_cached(km, name)]
     for km in modules:
-        if km not in missing and id(km.module) not in started:
+        if km not in missing:
             km.module.load(dev, _variant(km.module, dev))
-    waited = list(started.values())
-    if not missing and not waited:
+    if not missing:
         return ()
-    labels = tuple(job.km.label for job in waited) + tuple(km.label for km in missing)
+    labels = tuple(km.label for km in missing)
     reporter = _reporter
-    t0 = min([job.t0 for job in waited] + [time.perf_counter()])
+    t0 = time.perf_counter()
     state = {"done": 0}
     lock = threading.Lock()
     stop = threading.Event()
@@ -279,16 +205,12 @@ def load(modules: list[KernelModule], device: str = "cpu", workers: int | None =
     ticker = threading.Thread(target=tick, daemon=True)
     ticker.start()
     try:
-        for job in waited:  # begun by start(): its thread compiles them one after the other
-            job.done.result()
-            job.km.module.load(dev, _variant(job.km.module, dev))  # loaded there already: a lookup
-            report(job.km.label)
         n_workers = workers or min(len(missing), os.cpu_count() or 1)
         if n_workers <= 1:
             for km in missing:
                 km.module.load(dev, _variant(km.module, dev))
                 report(km.label)
-        elif missing:
+        else:
             with ThreadPoolExecutor(max_workers=n_workers) as pool:
                 futures = {pool.submit(km.module.load, dev, _variant(km.module, dev)): km for km in missing}
                 for f in as_completed(futures):
