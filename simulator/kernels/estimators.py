@@ -99,8 +99,8 @@ wp.set_module_options({"enable_backward": False})
 #: the compile, a shared 2-core machine): O2 (Warp's CPU default) 64.8 s, O1 49.3 s; the trace's CPU
 #: time the same within the noise (furnace, 4,096 samples: 5.7-6.5 s both) and every reading the same
 #: bytes (quickstart, furnace, office_bench CSVs and maps): without fast-math clang keeps each float
-#: operation as written at any level, FMAs are formed per expression by the front end, and Warp's
-#: inlining thresholds (``wp.config.cpu_compiler_flags``) apply at O1 too (docs/DESIGN.md §Kernel modules).
+#: operation as written at any level, FMAs are formed per expression by the front end, and the raised
+#: inlining thresholds (``engine.device.INLINE_THRESHOLDS``) apply at O1 too (docs/DESIGN.md §Kernel modules).
 TRACE_OPTIMIZATION_LEVEL = 1
 
 
