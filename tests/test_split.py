@@ -41,8 +41,10 @@ def _setup(config: str, variant: str | None = None, grids=None):
     cfg = load_config(CONFIGS / config)
     if variant is not None:
         cfg = dataclasses.replace(cfg, variants={"reflectance": variant})
-    if grids is not None:
-        cfg = dataclasses.replace(cfg, grids=[g for g in cfg.grids if g.name in grids])
+    if grids is not None:  # the grids and their cells (the loader has made each cell a sensor, ``grid[i,j]``)
+        keep = [g for g in cfg.grids if g.name in grids]
+        cells = tuple(f"{g.name}[" for g in keep)
+        cfg = dataclasses.replace(cfg, grids=keep, sensors=[s for s in cfg.sensors if s.name.startswith(cells)])
     scene = load_scene(cfg)
     sensors = [s for s in collect_sensors(cfg, scene) if s.kind != SensorKind.PROBE]
     return scene, sensors

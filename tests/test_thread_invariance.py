@@ -34,9 +34,13 @@ SKIP_CLUSTER = pytest.mark.skipif(os.environ.get("PROBESIM_SKIP_CLUSTER") == "1"
 
 def _office(grids=("middle", "north_wall")):
     """configs/office_bench.toml cut to two of its grids (96 sensors): the plan reads them
-    with ``guided`` and the pilot finds the light concentrated (the guide is used)."""
+    with ``guided`` and the pilot finds the light concentrated (the guide is used). The
+    loader has already made each grid's cells sensors (named ``grid[i,j]``), so the cut
+    takes both the grids and their cells."""
     cfg = load_config(CONFIGS / "office_bench.toml")
-    return dataclasses.replace(cfg, grids=[g for g in cfg.grids if g.name in grids])
+    keep = [g for g in cfg.grids if g.name in grids]
+    cells = tuple(f"{g.name}[" for g in keep)
+    return dataclasses.replace(cfg, grids=keep, sensors=[s for s in cfg.sensors if s.name.startswith(cells)])
 
 
 def test_pilot_blocks_depend_on_its_size_alone():
