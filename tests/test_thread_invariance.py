@@ -34,9 +34,13 @@ SKIP_CLUSTER = pytest.mark.skipif(os.environ.get("PROBESIM_SKIP_CLUSTER") == "1"
 
 def _office(grids=("middle", "north_wall")):
     """configs/office_bench.toml cut to two of its grids (96 sensors): the plan reads them
-    with ``guided`` and the pilot finds the light concentrated (the guide is used)."""
+    with ``guided`` and the pilot finds the light concentrated (the guide is used). The
+    loader has already made each grid's cells sensors (named ``grid[i,j]``), so the cut
+    takes both the grids and their cells."""
     cfg = load_config(CONFIGS / "office_bench.toml")
-    return dataclasses.replace(cfg, grids=[g for g in cfg.grids if g.name in grids])
+    keep = [g for g in cfg.grids if g.name in grids]
+    cells = tuple(f"{g.name}[" for g in keep)
+    return dataclasses.replace(cfg, grids=keep, sensors=[s for s in cfg.sensors if s.name.startswith(cells)])
 
 
 def test_pilot_blocks_depend_on_its_size_alone():
@@ -105,13 +109,15 @@ def _reduced_study(name: str):
 
 
 def _study_csvs(name: str, out: Path, **kw):
-    from simulator.study.report.outputs import write_outputs
+    """The study's readings.csv and summary.csv as ``write_outputs`` writes them (the same functions,
+    kept in memory: the heat maps and report.html that it also draws are pictures of these numbers,
+    and drawing them took two thirds of this test's time)."""
+    from simulator.study.report.outputs import long_csv, summary_csv
     from simulator.study.runner import run_study
 
     study, path = _reduced_study(name)
     res = run_study(study, path, out, reference_run=False, **kw)
-    write_outputs(res, {})
-    return res, (out / "readings.csv").read_bytes(), (out / "summary.csv").read_bytes()
+    return res, long_csv(res).encode(), summary_csv(res).encode()
 
 
 @pytest.fixture(scope="module")
