@@ -155,15 +155,19 @@ def run_mitsuba(scene, sensors, spp: int, proxy_m: float, seed: int, bsdf_of=Non
     return scale * img[: len(sensors)].astype(np.float64), wall
 
 
-def run_probesim(cfg, scene, sensors, samples: int, seed: int, engine) -> tuple[np.ndarray, float]:
-    """(readings in lx, wall seconds) of the config's plan at ``samples`` per sensor, warm."""
+def run_probesim(cfg, scene, sensors, samples: int, seed: int, engine, plan=None) -> tuple[np.ndarray, float]:
+    """(readings in lx, wall seconds) of the config's plan at ``samples`` per sensor, warm (kernels
+    loaded, guide and pilots kept), its computed direct light computed afresh each time (as a fresh
+    process computes it: the exact factors kept by the process are dropped first)."""
     from dataclasses import replace
 
+    from simulator.engine import exact_memo
     from simulator.pipeline import run_plan
     from simulator.plan.planner import make_plan
 
     sim = replace(cfg.simulation, samples=samples, seed=seed, rel_error=None)
-    plan = make_plan(scene, sensors, sim.method, sim.component)
+    plan = plan or make_plan(scene, sensors, sim.method, sim.component)
+    exact_memo.clear()
     t0 = time.perf_counter()
     res = run_plan(engine, plan, sim)
     return res.mean[:, 1], time.perf_counter() - t0
@@ -201,37 +205,52 @@ def replica_errors(runs: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray, floa
 
 
 def replica_comparison(a, cfg, scene, sensors) -> None:
-    """Both renderers at each budget, R seeds each: time to each target from one render's spread."""
+    """Both renderers at each budget, R seeds each, their renders alternating (one probesim render,
+    one Mitsuba render, ...) so that both meet the same load: time to each target from one render's
+    spread, warm and whole process (each renderer's start-up added: probesim's stage reading, plan,
+    engine, kernel load from the cache, pilots and guide; Mitsuba's scene load and kernel compile)."""
     if a.replicas < 2:
         raise SystemExit("--replicas: at least 2 independent renders are needed for a spread")
-    from simulator.engine.driver import Engine, load_kernels
+    from simulator.config import load_config
+    from simulator.engine.driver import load_kernels
+    from simulator.pipeline import config_engine, load_scene
+    from simulator.plan.planner import make_plan
 
     print(f"{platform.processor() or platform.machine()}, {os.cpu_count()} CPUs, load {os.getloadavg()[0]:.2f} at start; "
           f"{len(sensors)} sensors, {scene.geometry.n_triangles} triangles on {Path(cfg.stage).name}; "
           f"{a.replicas} renders per budget, no reference")  # fmt: skip
+    # probesim's start-up, as a run has it (its kernels already compiled, cached by Warp)
+    t0 = time.perf_counter()
+    scene_p = load_scene(cfg)
+    plan = make_plan(scene_p, sensors, cfg.simulation.method, cfg.simulation.component)
     load_kernels(cfg.simulation.device)
-    engine = Engine(scene, sensors, device=cfg.simulation.device)
+    engine = config_engine(cfg, scene_p, sensors)
+    run_probesim(cfg, scene_p, sensors, 8, 7, engine, plan)  # pilots and guide, once per engine
+    setup_p = time.perf_counter() - t0
+    print(f"probesim start-up (stage, plan, kernels from the cache, pilots, guide): {setup_p:.2f} s; plan "
+          + ", ".join(f"{m} {len(ix)}" for m, ix in plan.groups().items()))
     t0 = time.perf_counter()
-    run_probesim(cfg, scene, sensors, 8, 7, engine)  # pilots and guide, once per engine
-    print(f"probesim setup (pilots, guide): {time.perf_counter() - t0:.2f} s, kept out of the times")
-    t0 = time.perf_counter()
-    run_mitsuba(scene, sensors[:2], 4, a.proxy_m, 1)
-    print(f"mitsuba setup (kernel compile): {time.perf_counter() - t0:.2f} s, kept out of the times")
+    run_mitsuba(scene, sensors, 4, a.proxy_m, 1)
+    setup_m = time.perf_counter() - t0
+    print(f"mitsuba start-up (scene, kernel compile at 4 spp): {setup_m:.2f} s")
     rows, pooled = {"probesim": [], "mitsuba": []}, {}
-    ladders = {"probesim": a.probesim_samples, "mitsuba": a.mitsuba_spp}
-    for who, ladder in ladders.items():
-        for n in ladder:
-            runs, walls = [], []
-            for r in range(a.replicas):
-                v, t = (run_probesim(cfg, scene, sensors, n, 101 + r, engine) if who == "probesim"
-                        else run_mitsuba(scene, sensors, n, a.proxy_m, 101 + r))
-                runs.append(v)
-                walls.append(t)
-            mean, se, one = replica_errors(runs)
-            t = float(np.median(walls))
+    for n, spp in zip(a.probesim_samples, a.mitsuba_spp):
+        runs = {"probesim": [], "mitsuba": []}
+        walls = {"probesim": [], "mitsuba": []}
+        for r in range(a.replicas):
+            v, t = run_probesim(cfg, scene_p, sensors, n, 101 + r, engine, plan)
+            runs["probesim"].append(v)
+            walls["probesim"].append(t)
+            v, t = run_mitsuba(scene, sensors, spp, a.proxy_m, 101 + r)
+            runs["mitsuba"].append(v)
+            walls["mitsuba"].append(t)
+        for who, k in (("probesim", n), ("mitsuba", spp)):
+            mean, se, one = replica_errors(runs[who])
+            t = float(np.median(walls[who]))
             rows[who].append((t, one))
             pooled[who] = (mean, se)
-            print(f"{who:8s} {n:6d} per sensor: {t:8.2f} s a render, one render's RMS {one:.3%}", flush=True)
+            print(f"{who:8s} {k:6d} per sensor: {t:8.2f} s a render, one render's RMS {one:.3%}; load "
+                  f"{os.getloadavg()[0]:.2f}", flush=True)
     (mp, sp), (mm, sm) = pooled["probesim"], pooled["mitsuba"]
     z = (mp - mm) / np.sqrt(sp**2 + sm**2)
     print(f"pooled means at the top budgets: Mitsuba/probesim - 1 = {np.mean(mm) / np.mean(mp) - 1:+.3%} (mean over "
@@ -239,8 +258,9 @@ def replica_comparison(a, cfg, scene, sensors) -> None:
     for target in a.rms:
         (t_p, e_p), (t_m, e_m) = rows["probesim"][-1], rows["mitsuba"][-1]  # the largest budgets
         tp, tm = t_p * (e_p / target) ** 2, t_m * (e_m / target) ** 2
-        print(f"to {target:.2%} RMS: probesim {tp:.1f} s, mitsuba {tm:.1f} s, probesim/mitsuba {tp / tm:.2f}x; "
-              f"load {os.getloadavg()[0]:.2f} at end")
+        print(f"to {target:.2%} RMS: warm probesim {tp:.1f} s, mitsuba {tm:.1f} s ({tp / tm:.2f}x); whole process "
+              f"probesim {tp + setup_p:.1f} s, mitsuba {tm + setup_m:.1f} s ({(tp + setup_p) / (tm + setup_m):.2f}x); "
+              f"load {os.getloadavg()[0]:.2f} at end")  # fmt: skip
 
 
 def main() -> None:
@@ -268,7 +288,9 @@ def main() -> None:
 
         cfg = replace(cfg, stage=Path(a.stage).resolve())
     scene = load_scene(cfg)
-    sensors = list(cfg.sensors)
+    from simulator.pipeline import collect_sensors
+
+    sensors = [x for x in collect_sensors(cfg, scene) if x.kind.name != "PROBE"]
     if a.replicas:
         return replica_comparison(a, cfg, scene, sensors)
     ref_rows = {r["sensor"]: r for r in csv.DictReader((ROOT / "configs" / "references" / f"{Path(a.config).stem}.csv").open())}

@@ -89,7 +89,9 @@ def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = Non
         non_finite=np.zeros(n, np.int64), wall_s=0.0, methods=[sp.method for sp in plan.sensors],
         unfinished=np.ones(n, bool),
     )  # fmt: skip
-    engine.set_light_mask(plan.light_mask([l.name for l in engine.scene.lights]))
+    names = [l.name for l in engine.scene.lights]
+    engine.set_light_mask(plan.light_mask(names))
+    engine.set_computed(plan.computed_mask(names))
     hero = getattr(engine, "hero_tables", None)
     if hero is not None:  # spectral transport: every response per sensor (NaN: not available)
         out.responses = [r.name for r in hero.responses]
@@ -104,6 +106,9 @@ def run_plan(engine, plan: Plan, sim, progress=None, stop: StopFlag | None = Non
             component=sim.component, progress=progress, sensor_ids=ids, confidence=sim.confidence, stop=stop,
             choose_first_batch=sim.choose_first_batch,
         )  # fmt: skip
+        if r.method != method:  # a hybrid whose pilot found sampling it all cheaper (Engine._hybrid_choice)
+            for i in ids.tolist():
+                out.methods[i] = r.method
         out.unfinished[ids] = False if r.unfinished is None else r.unfinished[ids]
         out.mean[ids], out.stderr[ids], out.samples[ids] = r.mean[ids], r.stderr[ids], r.samples[ids]
         out.seconds[ids], out.non_finite[ids] = r.seconds[ids], r.non_finite[ids]
@@ -500,6 +505,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
         **({} if engine.rr_pilot is None else {"roulette": _roulette_record(engine.rr_pilot)}),
         **({} if engine.split_pilot is None else {"split": dict(engine.split_pilot)}),
         **({} if engine.pieces_pilot is None else {"emitter_pieces": dict(engine.pieces_pilot)}),
+        **({} if getattr(engine, "hybrid_pilot", None) is None else {"hybrid": dict(engine.hybrid_pilot)}),
         "lights": lights_record(scene.lights),
         "sensors": len(sensors),
         "triangles": scene.geometry.n_triangles,

@@ -118,7 +118,7 @@ def test_sensor_declarations_drive_the_kernel_and_the_csv():
     assert sorted(k.kind for k in SENSOR_KERNELS) == [s.kind for s in SENSOR_SPECS if s.reader == "estimate"]
     assert SENSOR_KINDS == {"irradiance": SensorKind.IRRADIANCE, "radiance": SensorKind.RADIANCE,
                             "patch": SensorKind.PATCH, "probe": SensorKind.PROBE, "cylindrical": SensorKind.CYLINDRICAL,
-                            "semicylindrical": SensorKind.SEMICYLINDRICAL}  # fmt: skip
+                            "semicylindrical": SensorKind.SEMICYLINDRICAL, "glare": SensorKind.GLARE}  # fmt: skip
     assert COLUMNS[:8] == ("sensor", "kind", "x", "y", "z", "dx", "dy", "dz")
     assert COLUMNS[-4:] == ("samples", "seconds", "method", "target_met")
     assert len(set(COLUMNS)) == len(COLUMNS) == 32

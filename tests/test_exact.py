@@ -10,7 +10,8 @@ import numpy as np
 import pytest
 
 from simulator.reference.closed_forms import polygon_irradiance, rect_irradiance_parallel, rect_light_vertices
-from simulator.engine.exact import clip_polygons, lambert_rings, visible_polygon_irradiance
+from simulator.engine.exact import visible_polygon_irradiance
+from simulator.engine.visible import clip_halfplane, lambert_pieces, signed_area
 
 L = 1000.0  # cd/m²
 H = 2.0  # light height, m
@@ -131,33 +132,37 @@ def test_straddling_the_horizon_and_a_straddling_wall():
     assert e == pytest.approx(float(polygon_irradiance(L, vis, p, n)), rel=1e-10)
 
 
-def test_lambert_rings_matches_closed_form():
-    """The vectorised contour sum equals the one-receiver closed form, including
-    rings that cross a receiver's horizon."""
+def test_lambert_pieces_matches_closed_form():
+    """The vectorised contour sum of convex pieces above the horizon equals the one-receiver
+    closed form (``polygon_irradiance``, docs/REFERENCES.md §Lambert's polygon formula) of the same polygon."""
     rng = np.random.default_rng(3)
-    P = rng.normal(size=(40, 3)) * 0.5
-    N = rng.normal(size=(40, 3))
+    P = np.c_[rng.uniform(-2, 2, (40, 2)), rng.uniform(0.0, 1.5, 40)]
+    N = np.c_[rng.normal(size=(40, 2)) * 0.3, np.ones(40)]
     N /= np.linalg.norm(N, axis=1, keepdims=True)
-    ring = LIGHT
-    got = lambert_rings([ring] * 40, np.arange(40), P, N)
-    ref = np.array([float(polygon_irradiance(1.0, ring, P[i], N[i])) for i in range(40)])
+    keep = np.all((LIGHT[None] - P[:, None]) @ N[:, :, None] > 0, axis=(1, 2))  # wholly above each horizon
+    P, N = P[keep], N[keep]
+    got, scale = lambert_pieces(LIGHT[None] - P[:, None], N)
+    ref = np.array([float(polygon_irradiance(1.0, LIGHT, P[i], N[i])) for i in range(len(P))])
+    assert len(P) > 10
     np.testing.assert_allclose(got, ref, rtol=1e-12, atol=1e-15)
+    assert np.all(scale >= got)
 
 
-def test_clip_polygons_matches_halfplane_area():
-    """Vectorised Sutherland–Hodgman: random triangles in the plane z = 0 cut by
-    x < c keep exactly the area GEOS gives for their intersection with that
-    half-plane (an independent 2-D clipper), and nothing on the far side."""
+def test_clip_halfplane_matches_halfplane_area():
+    """Vectorised Sutherland–Hodgman: random triangles cut by x < c keep exactly the area GEOS gives
+    for their intersection with that half-plane (an independent 2-D clipper), and nothing on the far
+    side; the two sides of one cut add up to the triangle."""
     import shapely
 
     rng = np.random.default_rng(7)
     T = rng.uniform(-1, 1, (300, 3, 2))
-    V = np.concatenate([T, np.zeros((300, 3, 1))], axis=2)
+    T = np.where((signed_area(T) < 0)[:, None, None], T[:, ::-1], T)
     cut = rng.uniform(-0.5, 0.5, 300)
-    W, n = clip_polygons(V, np.full(300, 3), cut[:, None] - V[:, :, 0])
+    W, n = clip_halfplane(T, np.full(300, 3), cut[:, None] - T[:, :, 0])
+    Wo, no = clip_halfplane(T, np.full(300, 3), T[:, :, 0] - cut[:, None])
     valid = np.arange(4)[None, :] < n[:, None]
     assert np.all(W[:, :, 0][valid] <= np.broadcast_to(cut[:, None], (300, 4))[valid] + 1e-12)
+    np.testing.assert_allclose(signed_area(W) + signed_area(Wo), signed_area(T), rtol=1e-12, atol=1e-15)
     for i in range(300):
         ref = shapely.Polygon(T[i]).intersection(shapely.box(-5, -5, cut[i], 5)).area
-        got = shapely.Polygon(W[i, : n[i], :2]).area if n[i] >= 3 else 0.0
-        assert got == pytest.approx(ref, rel=1e-9, abs=1e-14)
+        assert signed_area(W[i : i + 1])[0] == pytest.approx(ref, rel=1e-9, abs=1e-14)

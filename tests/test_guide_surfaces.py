@@ -292,12 +292,13 @@ def test_guided_glossy_room_agrees_with_path(tmp_path, forced_guide):
 
 
 def test_plan_guides_a_glazed_room_and_says_why():
-    """``auto`` reads the glazed office's path sensors with ``guided`` and the reason says the
-    guide's segments cross panes."""
+    """``auto`` reads the glazed office's path sensors with ``guided`` (the room's RectLights offered
+    to the computed direct part, ``exact+guided``, which the engine's pilot may decline) and the
+    reason says the guide's segments cross panes."""
     cfg = load_config(CONFIGS / "office_bench.toml")
     cfg = dataclasses.replace(cfg, variants={**cfg.variants, "window": "glazed"})
     scene = load_scene(cfg)
     sensors = [s for s in collect_sensors(cfg, scene) if s.kind != SensorKind.PROBE]
     plan = make_plan(scene, sensors, "auto")
-    assert set(plan.groups()) == {"guided"}
+    assert set(plan.groups()) <= {"guided", "exact+guided"} and plan.groups()
     assert "cross panes" in plan.sensors[0].reason

@@ -33,13 +33,15 @@ from simulator.interrupts import StopFlag
 from simulator.pipeline import run
 
 ROOT = Path(__file__).resolve().parents[1]
-#: dome.toml plus a probe: planned as analytic (horizontal), mis (tilted_60,
-#: vertical), light (sky_meter), then the probe
+#: dome.toml over a grey ground, plus a probe: planned as analytic (horizontal: it sees no ground),
+#: sampled paths (tilted_60, vertical: they see the ground reflect), light (sky_meter), then the probe
 PROBE = '\n[[sensor]]\nname = "probe"\nkind = "probe"\nposition = [0, 0, 1]\nresolution = [16, 8]\n'
 
 
 def _config(tmp_path: Path, name: str = "dome.toml") -> Path:
-    text = (ROOT / "configs" / name).read_text().replace('"../stages/', f'"{ROOT / "stages"}/')
+    stage = (ROOT / "stages" / "dome.usda").read_text().replace("diffuseColor = (0, 0, 0)", "diffuseColor = (0.3, 0.3, 0.3)")
+    (tmp_path / "grey_ground.usda").write_text(stage)
+    text = (ROOT / "configs" / name).read_text().replace('"../stages/dome.usda"', f'"{tmp_path / "grey_ground.usda"}"')
     p = tmp_path / name
     p.write_text(text.replace("[output]", PROBE + "\n[output]"))
     return p
@@ -133,8 +135,8 @@ def test_second_interrupt_during_the_write_is_deferred(tmp_path, monkeypatch):
 
 @pytest.mark.parametrize("adaptive", [False, True], ids=["fixed", "adaptive"])
 def test_interrupted_run_keeps_whole_batches_bit_identical(tmp_path, adaptive):
-    """Cut after the first mis batch: the closed-form sensor is complete, the
-    mis sensors hold their first batch (equal to an uninterrupted run of that
+    """Cut after the first batch of paths: the closed-form sensor is complete, the
+    sampled sensors hold their first batch (equal to an uninterrupted run of that
     many samples), the light-sampled meter and the probe were never reached."""
     cfg_path = _config(tmp_path)
     # fixed: a budget of several batches; adaptive: the first batch, and a target far out of its reach

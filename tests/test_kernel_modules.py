@@ -152,3 +152,23 @@ def test_a_warp_that_names_its_files_otherwise_still_loads_silently(fresh_cache,
     assert KM.load([TINY]) == () and reports == []
     assert _twice.module.execs  # loaded (compiled by Warp, unannounced)
     np.testing.assert_array_equal(_launch_twice(), [2.0, 6.0])
+
+
+def test_every_module_compiles_with_warps_flags_at_the_measured_inlining_thresholds():
+    """Warp's CPU flags with only the two inlining thresholds replaced by ``INLINE_THRESHOLDS``
+    (5000 and 1700: docs/DESIGN.md §Kernel modules), set once for the process so that modules
+    compiled on two threads at once never ask LLVM's process-wide options for different values; a
+    flag string without thresholds (or none) is left as it is."""
+    from simulator.engine import device
+
+    warp_default = ("-march=native -mllvm=-inline-threshold=9000 -mllvm=-inline-cold-callsite-threshold=3000"
+                    " -mllvm=-slp-recursion-max-depth=4")
+    assert device.INLINE_THRESHOLDS == (5000, 1700)
+    assert device.cpu_compiler_flags(warp_default) == (
+        "-march=native -mllvm=-inline-threshold=5000 -mllvm=-inline-cold-callsite-threshold=1700"
+        " -mllvm=-slp-recursion-max-depth=4")
+    assert device.cpu_compiler_flags("-march=native") == "-march=native"
+    assert device.cpu_compiler_flags(None) is None
+    flags = wp.config.cpu_compiler_flags
+    assert "-inline-threshold=5000" in flags and "-inline-cold-callsite-threshold=1700" in flags
+    assert _twice.module.options["cpu_compiler_flags"] is None  # no module asks for flags of its own

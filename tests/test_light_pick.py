@@ -486,13 +486,13 @@ def test_paths_with_the_pick_agree_with_every_light(tmp_path, mode):
 
 def test_plan_says_how_lights_are_sampled():
     """probesim plan names the light sampling of each method it uses and
-    why: the office's paths (``guided``, the plan's choice there: eight
-    lights with area) sample every light at the sensor and one picked light
-    after it, with the roulette threshold of its albedo; the point stage's
-    direct-light reads sample every light."""
+    why: the office's paths (``exact+guided``, the plan's choice there: eight
+    lights with area, the lamps' direct light computed) sample every light at the
+    sensor and one picked light after it, with the roulette threshold of its
+    albedo; the point stage's direct-light reads sample every light."""
     from simulator.plan.planner import format_plan, make_plan
 
-    for name, method, words in (("office_bench", "guided", "one light at each later vertex"),
+    for name, method, words in (("office_bench", "exact+guided", "one light at each later vertex"),
                                 ("hdr", "light", "every light at each vertex")):  # fmt: skip
         cfg = load_config(CONFIGS / ("stability/hdr.toml" if name == "hdr" else f"{name}.toml"))
         scene = load_scene(cfg)
@@ -500,5 +500,6 @@ def test_plan_says_how_lights_are_sampled():
         plan = make_plan(scene, sensors, method if name == "hdr" else "auto")
         assert words in plan.light_sampling[method]
         assert words in format_plan(plan) and plan.to_record()["light_sampling"] == plan.light_sampling
-        if method == "guided":  # ρ̄ = 0.23: min(0.1, 0.2·0.77)
-            assert "Russian roulette below throughput 0.1:" in plan.light_sampling["guided"]
+        if method == "exact+guided":  # ρ̄ = 0.23: min(0.1, 0.2·0.77)
+            assert "Russian roulette below throughput 0.1:" in plan.light_sampling["exact+guided"]
+            assert "the lights whose direct light is computed are left out" in plan.light_sampling["exact+guided"]

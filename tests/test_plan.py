@@ -130,7 +130,7 @@ lamp being a RectLight). A
     assert make_plan(scene, sensors).sensors[0].method == "analytic"
     _, scene, sensors = _setup(tmp_path, _light() + _quad("Blocker", 1.0, 0.2, 0.5))
     sp = make_plan(scene, sensors).sensors[0]
-    assert sp.method == "guided" and sp.bounces and sp.geometry == "reflecting surfaces"
+    assert sp.method == "exact+guided" and sp.bounces and sp.geometry == "reflecting surfaces"
     assert "surface guide" in sp.reason
 
 
@@ -166,7 +166,7 @@ def test_auto_never_picks_a_blind_or_biased_method():
         scene = load_scene(cfg)
         sensors = [s for s in collect_sensors(cfg, scene) if s.kind.name != "PROBE"]
         for sp in make_plan(scene, sensors, "auto", cfg.simulation.component).sensors:
-            assert sp.method in ("analytic", "exact", "light", "mis", "path", "guided"), (path.name, sp)
+            assert sp.method in ("analytic", "exact", "light", "mis", "path", "guided", "exact+path", "exact+guided"), (path.name, sp)
             if not sp.bounces and cfg.simulation.component != "direct":
                 assert sp.geometry != "reflecting surfaces", (path.name, sp)
 
@@ -179,15 +179,19 @@ def test_one_spectral_channel_for_grey_scenes():
 
 
 def test_mis_for_a_large_source_light_for_a_small_one(tmp_path):
-    """Direct light from a sky covering the whole hemisphere (2π sr) behind a
-    black blocker: the plan adds cosine-weighted directions (`mis`). The twin
-    under a 1 m² sphere light 2 m away (0.25 sr) keeps plain light sampling,
-    whose single shadow ray per sample is the cheaper way there (a RectLight
-    there would be read ``exact``)."""
+    """Direct light from a sphere light of radius 1.5 m, 2 m away (2π(1 − √(1 − 1.5²/2²)) = 2.1 sr of
+    the sensor's sky), behind a black blocker: the plan adds cosine-weighted directions (`mis`). The
+    twin under a 1 m² sphere light 2 m away (0.25 sr) keeps plain light sampling, whose single
+    shadow ray per sample is the cheaper way there. (A uniform sky or a RectLight there is read
+    ``exact``: their visible parts are computed.)"""
+    big = ('def SphereLight "Big"\n{\n    float inputs:intensity = 1\n    float inputs:radius = 1.5\n'
+           '    double3 xformOp:translate = (0, 0, 2)\n    uniform token[] xformOpOrder = ["xformOp:translate"]\n}\n')
+    _, scene, sensors = _setup(tmp_path, big + _quad("Blocker", 1.0, 0.2, 0.0))
+    sp = make_plan(scene, sensors).sensors[0]
+    assert sp.method == "mis" and "2.1 sr" in sp.reason
     dome = 'def DomeLight "Sky"\n{\n    float inputs:intensity = 1\n}\n'
     _, scene, sensors = _setup(tmp_path, dome + _quad("Blocker", 1.0, 0.2, 0.0))
-    sp = make_plan(scene, sensors).sensors[0]
-    assert sp.method == "mis" and "6.3 sr" in sp.reason
+    assert make_plan(scene, sensors).sensors[0].method == "exact"
     bulb = 'def SphereLight "Bulb"\n{\n    float inputs:intensity = 1000\n    float inputs:radius = 0.564\n    double3 xformOp:translate = (0, 0, 2)\n    uniform token[] xformOpOrder = ["xformOp:translate"]\n}\n'
     _, scene, sensors = _setup(tmp_path, bulb + _quad("Blocker", 1.0, 0.2, 0.0))
     assert make_plan(scene, sensors).sensors[0].method == "light"

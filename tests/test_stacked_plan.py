@@ -1,9 +1,8 @@
 """The per-sensor work stacked over sensors gives the one-sensor answers, exactly.
 
 The plan's tests (lights behind a sensor, the first triangle in front of its
-plane, the ``exact`` rule's occluder count), the exact estimator's union of
-shadows per receiver, the run record's spliced JSON and the map's PNG
-encoder each have a one-at-a-time definition; these tests hold the stacked
+plane, the ``exact`` rule's refusals), the run record's spliced JSON and the
+map's PNG encoder each have a one-at-a-time definition; these tests hold the stacked
 forms to it, bit for bit (no tolerance: the same products in the same order
 give the same doubles), on the bundled stages and random sensors, including
 sensors whose plane passes through a light's corner or a triangle's vertex.
@@ -18,7 +17,6 @@ import numpy as np
 import pytest
 
 import simulator
-from simulator.engine import exact as X
 from simulator.io.map_png import png_bytes
 from simulator.io.results import record_text
 from simulator.pipeline import collect_sensors, load_scene
@@ -80,18 +78,6 @@ def test_first_in_front_many_on_vertices_and_a_coarse_grid():
         assert dict(zip(index.names, row)) == index.first_in_front(o, n)
 
 
-def test_shadows_united_per_receiver_in_one_call_equal_a_call_each():
-    import shapely
-
-    rng = np.random.default_rng(2)
-    sizes = rng.integers(1, 6, 200)
-    shadows = np.array([shapely.Polygon(rng.uniform(-1, 1, (3, 2))) for _ in range(int(sizes.sum()))], dtype=object)
-    starts = np.r_[0, np.cumsum(sizes)[:-1]]
-    one = X._union_per_receiver(shadows, starts)
-    each = [g[0] if len(g) == 1 else shapely.union_all(g) for g in np.split(shadows, starts[1:])]
-    assert all(shapely.equals_exact(a, b, tolerance=0.0) and a.wkb == b.wkb for a, b in zip(one, each))
-
-
 def test_spliced_record_is_json_dumps_byte_for_byte():
     plan = {"sensors": [{"name": f"s[{i},0]", "lights": ["Lamp"], "reason": "a \"quoted\"\nline"} for i in range(3)],
             "methods": {"exact": 3}, "empty": [], "nested": {"e": {}}}
@@ -108,33 +94,3 @@ def test_png_encoder_round_trips():
     img = Image.open(io.BytesIO(png_bytes(rgb)))
     assert img.mode == "RGB" and img.size == (53, 37)
     assert np.array_equal(np.asarray(img), rgb)
-
-
-def test_rings_clipped_to_the_horizon_together_equal_one_at_a_time():
-    """Star-shaped (non-convex) rings around receivers of random facing, some with vertices on the
-    horizon plane or at the receiver: the stacked clip and contour sum give the loop's bits."""
-    rng = np.random.default_rng(9)
-    rings = []
-    for i in range(600):
-        k = int(rng.integers(3, 30))
-        ang, rad = np.sort(rng.uniform(0, 2 * np.pi, k)), rng.uniform(0.3, 1.5, k)
-        e1 = rng.normal(size=3)
-        e1 /= np.linalg.norm(e1)
-        e2 = np.cross(e1, rng.normal(size=3))
-        e2 /= np.linalg.norm(e2)
-        pts = rng.normal(size=3) * 0.5 + (rad * np.cos(ang))[:, None] * e1 + (rad * np.sin(ang))[:, None] * e2
-        if i % 10 == 0:
-            pts[0] = 0.0
-        if i % 7 == 0:
-            pts = np.round(pts * 2) / 2
-        rings.append(pts)
-    P = np.zeros((20, 3))
-    N = rng.normal(size=(20, 3))
-    N[:5] = np.eye(3)[rng.integers(0, 3, 5)]
-    N /= np.linalg.norm(N, axis=1)[:, None]
-    rec = rng.integers(0, 20, len(rings))
-    counts = np.array([len(r) for r in rings])
-    loop = [X._lambert_one(X._clip_convex_or_not(r - P[k], (r - P[k]) @ N[k]), N[k]) for r, k in zip(rings, rec)]
-    many = X._lambert_clipped(np.concatenate(rings), np.r_[0, np.cumsum(counts)[:-1]], counts, rec,
-                              np.arange(len(rings)), P, N)  # fmt: skip
-    assert np.array_equal(np.array(loop), many)

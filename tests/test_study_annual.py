@@ -273,11 +273,14 @@ def office(tmp_path_factory):
     return study, p, run_annual(study, p, tmp / "out", log=lambda m: None)
 
 
+_TEXEL_PATCH: dict = {}
+
+
 def _instant(res, base, k, sensors, samples, seed):
     """One ordinary run of hour k: the hour's patch sky as a textured dome (texels take their patch's
     luminance) and its sun as a delta DistantLight, all in one trace."""
     from simulator.config.loader import SimulationConfig
-    from simulator.engine.driver import Engine, load_kernels
+    from simulator.engine.driver import Engine
     from simulator.io import latlong
     from simulator.pipeline import run_plan
     from simulator.plan.planner import make_plan
@@ -288,14 +291,16 @@ def _instant(res, base, k, sensors, samples, seed):
     dome = next(l for l in base.lights if l.kind == LightKind.DOME)
     d = sky_levels_of(res.skies, dome.emission[1], 0.2)[k]
     w, h = 1024, 512
-    pid = SP.patch_index(latlong.texel_centre_directions(w, h, dome.frame).reshape(-1, 3))
+    key = (w, h, np.asarray(dome.frame).tobytes())
+    if key not in _TEXEL_PATCH:  # the same for every hour: each texel's patch, computed once
+        _TEXEL_PATCH[key] = SP.patch_index(latlong.texel_centre_directions(w, h, dome.frame).reshape(-1, 3))
+    pid = _TEXEL_PATCH[key]
     lights = [replace(dome, texture_map=d[pid].reshape(h, w), texture="patch-sky")]
     if res.skies.dni_lx[k] > 0:
         en = float(res.skies.dni_lx[k])
         lights.append(Light("/Sun", LightKind.DISTANT, np.zeros(3), sun_frame(res.skies.sun_dir[k]), (en / 683.0, en)))
     sc = replace(group_scene(base, []), lights=lights)
     sim = SimulationConfig(samples=samples, seed=seed)
-    load_kernels("cpu")
     r = run_plan(Engine(sc, sensors), make_plan(sc, sensors, sim.method, sim.component), sim)
     return r.mean[:, 1], r.stderr[:, 1]
 

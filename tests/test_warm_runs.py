@@ -374,12 +374,13 @@ def test_an_edited_texture_is_read(tmp_path):
 
 
 def test_a_changed_planner_bound_is_planned_afresh(tmp_path, monkeypatch):
-    """The plan is kept under the planner's bounds too: with the exact rule's occluder bound set below
-    the shade's 2 triangles, the same stage and sensors are read by shadow rays, not from a kept plan."""
+    """The plan is kept under the planner's bounds too: with the exact rule's cost bound set below
+    what the lamp and its shade cost, the same stage and sensors are read by shadow rays, not from a
+    kept plan."""
     from simulator.plan import exact_rule
 
     cfg = simulator.load_config(_write(tmp_path))
     _check(_run(cfg, write=False), 1000.0)
-    monkeypatch.setattr(exact_rule, "EXACT_MAX_OCCLUDERS", 1)
+    monkeypatch.setattr(exact_rule, "EXACT_MAX_S", 1e-9)
     out = _run(cfg, write=False)
     assert {r.method for r in out.rows} == {"light"}

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import sys
 from dataclasses import replace as dc_replace
 
@@ -53,6 +54,28 @@ def _stderr_silenced():
         os.close(saved)
 
 
+#: LLVM's inlining thresholds for every CPU module: (call site, cold call site). Warp's CPU flags raise
+#: them to 9000 and 3000 (LLVM's own: 225 and 45); these lower them to 5000 and 1700 and keep the rest of
+#: Warp's flags. Measured on the shared 2-core machine under load (``python benchmarks/compile_flags.py``,
+#: docs/DESIGN.md §Kernel modules): the all-matte trace module's object code 275 → 221 kB and clang's CPU
+#: time on it 8-16% less, the surface model's 884 → 592 kB and 4-31% less; a run's CPU time on the
+#: quickstart, office and glazed office within ±2% of Warp's thresholds (their noise there), the furnace's
+#: 16% less. At 3000 the quickstart and glazed office ran 2-4% slower in nearly every alternated pair, at
+#: 1000 and below the office 1.4-1.7× slower. Readings are the same bytes at any threshold (no fast-math:
+#: each float operation is kept as written, and FMAs are formed per expression by the front end).
+INLINE_THRESHOLDS = (5000, 1700)
+
+
+def cpu_compiler_flags(default: str | None) -> str | None:
+    """Warp's CPU compiler flags ``default`` with its inlining thresholds set to :data:`INLINE_THRESHOLDS`
+    (a flag string without them, or None, is returned as it is)."""
+    if not default:
+        return default
+    site, cold = INLINE_THRESHOLDS
+    flags = re.sub(r"(-mllvm[= ]-inline-threshold=)\d+", rf"\g<1>{site}", default)
+    return re.sub(r"(-mllvm[= ]-inline-cold-callsite-threshold=)\d+", rf"\g<1>{cold}", flags)
+
+
 def warp():
     """The ``warp`` module, imported and initialised once, quietly."""
     global _wp
@@ -65,6 +88,9 @@ def warp():
         # reused), which pays only when one thread compiles several modules; here each compiles one
         # (kernel_modules.load): building it cost 2.7 s of CPU more than parsing the headers (a tiny module)
         wp.config.use_precompiled_headers = False
+        # every module with the same flags: LLVM's options are process-wide, so modules compiled at once on
+        # two threads (kernel_modules.load) must not ask for different ones
+        wp.config.cpu_compiler_flags = cpu_compiler_flags(wp.config.cpu_compiler_flags)
         with _stderr_silenced():
             wp.init()
         _wp = wp

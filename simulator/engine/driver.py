@@ -28,7 +28,8 @@ from simulator.engine.adaptive import PILOT_MIN_BATCH, StoppingRule, first_batch
 from simulator.engine.device import DeviceScene, cuda_available, models_surfaces, resolve_device, warp, warp_version
 from simulator.engine.fanout import fan_out
 from simulator.engine.methods import (
-    COMPONENTS, GUIDED_METHODS, LIGHT_PICK_MODES, METHOD_FLAGS, light_pick_rule, rr_pilot_choice, rr_threshold_rule,
+    COMPONENTS, GUIDED_METHODS, HYBRID_METHODS, LIGHT_PICK_MODES, METHOD_FLAGS, light_pick_rule, rr_pilot_choice,
+    rr_threshold_rule,
 )
 from simulator.engine.stats import GroupBatchStats, GroupStats, RunningStats, z_for_confidence
 from simulator.engine.scenario_split import (
@@ -67,6 +68,8 @@ PATCH_PICK_SAMPLES = 32
 PATCH_PICK_TOTAL = 1 << 16
 #: a patch's factors are shrunk toward row 0's by this many visits' worth of estimate
 PATCH_PICK_PRIOR_VISITS = 8
+#: the sensors the hybrid's pilot draws (Engine._hybrid_choice), at most
+HYBRID_PILOT_SENSORS = 256
 #: the split pilot's direct and indirect samples per irradiance sensor (Engine._split_rule) ...
 SPLIT_PILOT_SAMPLES = 16
 #: ... the most indirect paths a sample may read ...
@@ -261,7 +264,18 @@ class Engine:
         self._piece_pilot: tuple | None = None  # the latest pick pilot's readings and per-sensor moments
         self._pick_learnt: tuple | None = None  # (factors, per-row gains) of the latest pick pilot
         self._pick_scaled = False  # the device's pick factors are steered by a group pass's scenarios
-        self._mask_version = 0
+        self._mask_version = b""  # which light mask the device holds: a digest of which lights are culled ...
+        self._mask_full = b""  # ... and of all of it
+        #: per sensor (S, 2): the direct light computed on the host that a hybrid run adds to its samples
+        #: (``exact+path``, ``exact+guided``); the pilots' relative variances and the stopping rule read
+        #: the whole reading, samples plus this. None outside such a run.
+        self._offset: np.ndarray | None = None
+        self.exact_seconds = 0.0  #: the host's time on the latest hybrid run's computed direct light
+        self.hybrid_pilot: dict | None = None  #: what the latest hybrid run's pilot measured and chose (_hybrid_choice)
+        #: hybrid runs: "auto" (the pilot decides whether computing the direct light pays), True (always
+        #: computed) or False (always sampled)
+        self.hybrid: str | bool = "auto"
+        self._computed: np.ndarray | None = None  # the plan's computed direct light (set_computed)
         #: paths: learn the light pick's factors per surface patch too, for the vertices past the first
         #: (kernels.light_pick; docs/DESIGN.md §Next-event estimation); False: one row serves them all
         self.patch_pick = True
@@ -347,10 +361,26 @@ class Engine:
         the scene's lights, 0 = wholly behind the sensor (see plan.lights_behind)."""
         mask = np.asarray(mask)
         if self._light_mask is None or not np.array_equal(self._light_mask, mask):
-            self._mask_version += 1  # the light pick learns again (a plan run again keeps what it learnt)
+            import hashlib
+
+            def digest(m):
+                return hashlib.blake2b(repr(m.shape).encode() + np.ascontiguousarray(m, np.int32).tobytes(),
+                                       digest_size=16).digest()  # fmt: skip
+
+            # the light pick learns again for other culled lights (a plan run again keeps what it learnt; a
+            # hybrid's computed lights, mask 2, change only the first vertex, where paths do not pick);
+            # the split and roulette pilots, which measure the samples themselves, for any change
+            self._mask_version = digest(mask != 0)
+            self._mask_full = digest(mask)
         self._light_mask = mask
         if self._device_scene is not None:
             self._device_scene.set_light_mask(mask)
+
+    def set_computed(self, computed: np.ndarray | None) -> None:
+        """The plan's choice for hybrid runs: (S, R) bool, per sensor and light record (the scene's
+        lights, then the emissive triangles), the direct light to compute on the host
+        (:meth:`_run_hybrid`); None: every light that can be."""
+        self._computed = None if computed is None else np.asarray(computed, bool)
 
     def trace_params(self, method: str, seed: int, max_depth: int = -1, component: str = "total"):
         """The kernels' ``TraceParams`` for ``method`` (light, bsdf, mis, path or guided)."""
@@ -567,7 +597,7 @@ class Engine:
         if not len(ids) or params.spectral:
             return 1  # spectral transport: the pilot reads the grey channels only, not the responses
         key = (params.nee, params.bsdf, params.bounces, params.guide_c, params.pick_light, params.rr_threshold,
-               params.seed, ids.tobytes())  # fmt: skip
+               params.seed, ids.tobytes(), self._mask_full)  # fmt: skip
         pilot = self._split_pilot_groups(groups)
         if pilot is not None:
             key += (pilot[0].tobytes(), pilot[1].tobytes())
@@ -595,6 +625,8 @@ class Engine:
             self.rays_traced = rays_kept
         (m_d, v_d, c_d, *g_d), (m_i, v_i, c_i, *g_i) = parts
         m = m_d + m_i
+        if self._offset is not None:  # a hybrid run: relative to the whole reading
+            m = m + self._offset[ids, 1]
         ok = m > 0
         rv_d = float((v_d[ok] / m[ok] ** 2).sum())
         rv_i = float((v_i[ok] / m[ok] ** 2).sum())
@@ -689,7 +721,7 @@ class Engine:
         per (method, depth, component, sensors, target); with
         ``rr_threshold`` set the pilot does not run."""
         t_rule = self._rr_rule()
-        key = (method, max_depth, component, ids.tobytes(), first_batch, rel_error)
+        key = (method, max_depth, component, ids.tobytes(), first_batch, rel_error, self._mask_full)
         if key not in self._rr_found:
             tb = time.perf_counter()
             pick, count = self._pilot_pick(ids)
@@ -716,7 +748,9 @@ class Engine:
         """Each of ``pick``'s relative variance per sample (m2/(n − 1)/mean²,
         the largest over the channels that read anything; NaN where none
         did) from ``count`` samples drawn with ``params``; and the samples drawn."""
-        _, cnt, mean, m2 = self._launch(params, pick, np.zeros(len(pick), np.int64), count)[:4]
+        sens, cnt, mean, m2 = self._launch(params, pick, np.zeros(len(pick), np.int64), count)[:4]
+        if self._offset is not None:  # a hybrid run: relative to the whole reading
+            mean = mean + self._offset[sens]
         n = cnt[:, None].astype(np.float64)
         with np.errstate(divide="ignore", invalid="ignore"):
             rv = np.where(np.abs(mean) > 0, m2 / np.maximum(n - 1, 1) / mean**2, np.nan)
@@ -845,22 +879,20 @@ class Engine:
 
     def _run_analytic(self, sensor_ids: np.ndarray) -> EngineResult:
         """Closed-form readings (the caller has checked they apply): exact up
-        to float32 rounding, so the standard error is 0 and no samples are drawn."""
-        wp = warp()
+        to float32 rounding, so the standard error is 0 and no samples are drawn.
+        Where every sensor and light has a host closed form (:mod:`.analytic`)
+        they are read on the host in float64, and Warp is not imported."""
+        from simulator.engine.analytic import host_analytic
+
         n_s = len(self.sensors)
         t0 = time.perf_counter()
-        mean = np.zeros((n_s, 2))
-        with wp.ScopedDevice(self.device):
-            ids = wp.array(sensor_ids.astype(np.int32), dtype=wp.int32)
-            out = wp.empty(len(sensor_ids), dtype=wp.vec2d)
-            if len(sensor_ids):
-                KM.load([KM.analytic_module()], self.device)
-                wp.launch(self._K.analytic_kernel, dim=len(sensor_ids), inputs=[self._dev.rec, self._dev.sensors, ids], outputs=[out])
-                mean[sensor_ids] = out.numpy().astype(np.float64)
+        mean = host_analytic(self.scene, self.sensors, sensor_ids, self._light_mask)
+        if mean is None:
+            mean = self._kernel_analytic(sensor_ids)
         wall = time.perf_counter() - t0
         return EngineResult(
             method="analytic",
-            device=self.device,
+            device=self.device if self._device_scene is not None else "cpu",
             mean=mean,
             stderr=np.zeros((n_s, 2)),
             samples=np.zeros(n_s, np.int64),
@@ -871,21 +903,181 @@ class Engine:
             warnings=list(self.warnings),
         )
 
+    def _kernel_analytic(self, sensor_ids: np.ndarray) -> np.ndarray:
+        """The closed forms by the analytic kernel, (S, 2)."""
+        wp = warp()
+        n_s = len(self.sensors)
+        mean = np.zeros((n_s, 2))
+        with wp.ScopedDevice(self.device):
+            ids = wp.array(sensor_ids.astype(np.int32), dtype=wp.int32)
+            out = wp.empty(len(sensor_ids), dtype=wp.vec2d)
+            if len(sensor_ids):
+                KM.load([KM.analytic_module()], self.device)
+                wp.launch(self._K.analytic_kernel, dim=len(sensor_ids), inputs=[self._dev.rec, self._dev.sensors, ids], outputs=[out])
+                mean[sensor_ids] = out.numpy().astype(np.float64)
+        return mean
+
+    def _run_hybrid(self, method: str, ids: np.ndarray, kw: dict) -> EngineResult:
+        """``exact+path`` / ``exact+guided``: each irradiance sensor's direct light from the emitters
+        :mod:`.exact` reads computed on the host, the rest sampled by the paths in one pass.
+
+        The computed (sensor, light) pairs take 2 in the device's light mask: at the sensor's own
+        vertex those lights are neither light-sampled nor counted where a direction meets them
+        (``kernels.light_pick.computed_at``), so a sample holds the reflected light and the direct
+        light of the lights not computed (point, shaped, distant, sphere lights, a textured dome,
+        emitters a pane may stand before), each once. Reading = sampled + computed; standard error
+        = the samples' + the computed part's float error bound. The pilots and the stopping rule
+        judge the whole reading (``_offset``). Sensors other than irradiance ones, and a spectral
+        run, are read by the paths alone."""
+        from simulator.engine.exact import exact_direct
+
+        base = HYBRID_METHODS[method]
+        n_s = len(self.sensors)
+        irr = np.array([i for i in ids if self.sensors[i].kind == SensorKind.IRRADIANCE
+                        and getattr(self.sensors[i], "optics", None) is None], np.int64)  # the computed part reads the cosine
+        if self._hero is not None or kw["component"] != "total" or not len(irr):
+            r = self.run(base, sensor_ids=ids, **kw)
+            r.method = method
+            return r
+        from simulator.engine.exact import covered_records
+
+        n_rec = int(self._dev.rec.n_lights)  # the device scene (uploaded here if not yet) counts the records
+        kept = self._light_mask
+        full = np.ones((n_s, n_rec), np.int32)
+        if kept is not None:
+            full[:, : kept.shape[1]] = kept
+        # the plan's choice (set_computed) where it made one for these sensors, else every light that can be
+        if self._computed is not None and self._computed[irr].any():
+            want = np.zeros((n_s, n_rec), bool)
+            want[:, : min(n_rec, self._computed.shape[1])] = self._computed[:, :n_rec]
+        else:
+            want = np.zeros((n_s, n_rec), bool)
+            for r_, why in covered_records(self.scene):
+                want[irr, r_] = why is None and r_ < n_rec
+        want &= full != 0
+        t_exact = 0.0
+        try:
+            if self.hybrid == "auto":  # decided before computing anything: the pilot reads the mask it would run
+                mask = full.copy()
+                mask[want] = 2
+                choice = self._hybrid_choice(base, irr, kw, full, mask, want)
+            else:
+                self.hybrid_pilot = choice = {"computed": bool(self.hybrid), "chosen_by": "Engine.hybrid"}
+            if not choice["computed"]:  # the pilot finds that sampling it all is cheaper: nothing is computed
+                r = self.run(base, sensor_ids=ids, **kw)
+                return r
+            t0 = time.perf_counter()
+            ex = exact_direct(self.scene, self.sensors, irr, full, want)
+            t_exact = self.exact_seconds = time.perf_counter() - t0
+            mask = full.copy()
+            mask[:, : ex.covered.shape[1]][ex.covered[:, :n_rec]] = 2  # what a pane keeps from the host stays sampled
+            self.set_light_mask(mask)
+            self._offset = ex.mean
+            r = self.run(base, sensor_ids=ids, **kw)
+        finally:
+            self._offset = None
+            if kept is None:
+                self._light_mask = None
+                self._dev.set_light_mask(np.ones((n_s, n_rec), np.int32))
+                self._mask_version = self._mask_full = b""
+            else:
+                self.set_light_mask(kept)
+        r.method = method
+        r.mean = r.mean + ex.mean
+        r.stderr = r.stderr + ex.bound
+        r.wall_s += t_exact
+        r.seconds = r.seconds + np.where(np.isin(np.arange(n_s), irr), t_exact / max(len(irr), 1), 0.0)
+        return r
+
+    def _hybrid_choice(self, base: str, ids: np.ndarray, kw: dict, plain: np.ndarray, hybrid: np.ndarray,
+                       covered: np.ndarray) -> dict:  # fmt: skip
+        """Whether computing the direct light pays for this run, from a pilot (``hybrid_pilot`` keeps it).
+
+        On up to :data:`HYBRID_PILOT_SENSORS` of the sensors (evenly spread), :data:`SPLIT_PILOT_SAMPLES`
+        samples each, counting rays, on a seed stream of their own: the direct light with every light
+        sampled (V_d, c_d: relative variance per sample over the whole reading's square, summed over the
+        sensors, and rays per sample), the direct light with the computed lights left out (V_d', c_d'),
+        and the reflected light (V_i, c_i), as the split pilot draws them. With the split's Neyman
+        allocation K (kernels.estimators.split_irradiance) each way, the cost of a given error is
+
+            sampled:   (V_d + V_i/K)·(c_d + K·c_i)
+            computed:  (V_d' + V_i/K')·(c_d' + K'·c_i + x/n),
+
+        x the computed part's time in rays per sensor (the planner's cost model of it,
+        ``plan.exact_rule.exact_costs``, over ``RAY_S``: counts, not seconds, so the choice is the same
+        at any thread count or load) and n the samples per sensor the run will draw (its
+        ``samples``, or in an adaptive run the pilot's need z²·V/rel² where larger). The exact part
+        is kept where it costs less."""
+        from simulator.engine.scenario_split import neyman_split
+        from simulator.plan.exact_rule import RAY_S, exact_costs
+
+        tb = time.perf_counter()
+        seed, depth = int(kw["seed"]), int(kw["max_depth"])
+        # the preparations run() makes first (each done once per engine or kept): pieces, guide, pick
+        if METHOD_FLAGS[base][0] and self.emitter_pieces == "auto" and self.pieces_pilot is None:
+            self._choose_pieces(base, seed, depth, "total", ids)
+        if base in GUIDED_METHODS:
+            self.ensure_guide(seed, ids, depth)
+        self.set_light_mask(plain)
+        params = self.trace_params(base, (seed + 0x2545F491) & 0x7FFFFFFF, depth, "total")
+        params.pick_light = LIGHT_PICK_MODES[self.light_pick_mode(base)]
+        if params.pick_light or (params.nee and int(self._dev.rec.n_pieces) > 1):
+            self._prepare_pick(base, seed, depth, "total", ids)
+        spread = np.linspace(0, len(ids) - 1, min(len(ids), HYBRID_PILOT_SENSORS)).round().astype(np.int64)
+        pick = ids[np.unique(spread)]
+        count = np.full(len(pick), SPLIT_PILOT_SAMPLES, np.int64)
+        parts = []
+        rays_kept = self.rays_traced
+        try:
+            params.count_rays = 1
+            for mask, bounces, skip in ((plain, 0, 0), (hybrid, 0, 0), (plain, depth, 1)):
+                self.set_light_mask(mask)
+                params.bounces, params.skip_direct = bounces, skip
+                self.rays_traced = 0
+                _, cnt, mean, m2 = self._launch(params, pick, np.zeros(len(pick), np.int64), count)[:4]
+                parts.append((mean[:, 1], m2[:, 1] / np.maximum(cnt - 1, 1), max(self.rays_traced / max(1, int(cnt.sum())), 1.0)))
+        finally:
+            self.rays_traced = rays_kept
+            self.set_light_mask(plain)
+        (m_d, v_d, c_d), (_, v_h, c_h), (m_i, v_i, c_i) = parts
+        m = m_d + m_i
+        ok = m > 0
+        rv = [float((v[ok] / m[ok] ** 2).sum()) for v in (v_d, v_h, v_i)]
+        k_p, _ = neyman_split(rv[0], rv[2], c_d, c_i, SPLIT_MAX, SPLIT_MIN_GAIN)
+        k_h, _ = neyman_split(rv[1], rv[2], c_h, c_i, SPLIT_MAX, SPLIT_MIN_GAIN)
+        var_p, ray_p = rv[0] + rv[2] / k_p, c_d + k_p * c_i
+        var_h, ray_h = rv[1] + rv[2] / k_h, c_h + k_h * c_i
+        n = float(kw["samples"])
+        if kw["rel_error"] is not None:  # adaptive: the samples the mean pilot sensor needs
+            z = z_for_confidence(kw["confidence"])
+            n = max(n, z * z * var_h / max(int(ok.sum()), 1) / kw["rel_error"] ** 2)
+        recs = [np.flatnonzero(covered[i]).tolist() for i in ids]
+        x = float(exact_costs(self.scene, [self.sensors[i] for i in ids], recs)[0].sum()) / max(len(ids), 1) / RAY_S
+        cost_p, cost_h = var_p * ray_p, var_h * (ray_h + x / max(n, 1.0))
+        self.hybrid_pilot = {"computed": bool(cost_h < cost_p), "relvar_direct_sampled": rv[0] / max(int(ok.sum()), 1),
+                             "relvar_direct_left": rv[1] / max(int(ok.sum()), 1),
+                             "relvar_indirect": rv[2] / max(int(ok.sum()), 1), "rays_direct_sampled": c_d,
+                             "rays_direct_left": c_h, "rays_indirect": c_i, "k_sampled": k_p, "k_computed": k_h,
+                             "exact_rays_per_sensor": x, "samples_per_sensor": n, "cost_sampled": cost_p,
+                             "cost_computed": cost_h, "seconds": time.perf_counter() - tb}  # fmt: skip
+        return self.hybrid_pilot
+
     def _run_exact(self, sensor_ids: np.ndarray) -> EngineResult:
-        """Direct light from RectLights by Lambert's formula on their visible
-        parts (:mod:`.exact`; the planner has checked it applies): no samples,
-        standard error 0, on the host in float64."""
+        """Direct light by Lambert's formula on the visible parts of the emitters :mod:`.exact` reads
+        (the planner has checked that they are all a sensor's lights): no samples, on the host in
+        float64; the standard error is 0 (as for analytic: rounding only), or with a DiskLight its polygons' bound."""
         from simulator.engine.exact import exact_direct
 
         n_s = len(self.sensors)
         t0 = time.perf_counter()
-        mean = exact_direct(self.scene, self.sensors, sensor_ids, self._light_mask)
+        ex = exact_direct(self.scene, self.sensors, sensor_ids, self._light_mask)
+        mean = ex.mean
         wall = time.perf_counter() - t0
         return EngineResult(
             method="exact",
             device="cpu",
             mean=mean,
-            stderr=np.zeros((n_s, 2)),
+            stderr=ex.disk_bound,  # float rounding (~1e-13 of a reading) is not reported, as for analytic
             samples=np.zeros(n_s, np.int64),
             seconds=np.full(n_s, wall / max(len(sensor_ids), 1)),
             target_met=None,
@@ -966,6 +1158,14 @@ class Engine:
             return self._run_analytic(ids_all)
         if method == "exact":
             return self._run_exact(ids_all)
+        if method in HYBRID_METHODS:
+            if groups is not None:  # a light-group pass tallies every light on its paths: all sampled
+                method = HYBRID_METHODS[method]
+            else:
+                return self._run_hybrid(method, ids_all, dict(
+                    samples=samples, seed=seed, rel_error=rel_error, abs_error=abs_error, max_samples=max_samples,
+                    time_limit_s=time_limit_s, max_depth=max_depth, component=component, progress=progress,
+                    count_rays=count_rays, confidence=confidence, stop=stop, choose_first_batch=choose_first_batch))
         if method not in METHOD_FLAGS:
             raise UserError(f"method {method!r} has no Monte Carlo kernel (expected one of {sorted(METHOD_FLAGS)})")
         n_s = len(self.sensors)
@@ -1042,6 +1242,8 @@ class Engine:
         def measure():
             if gstats is None or groups.levels is None:
                 value, se = stats.mean, stats.stderr()
+                if self._offset is not None:  # a hybrid run: the target is the whole reading's
+                    value = value + self._offset
             else:
                 value, se = _recombined(gstats.mean, gstats.cov(), groups.levels)
             if rstats is None:

@@ -14,8 +14,8 @@ per sensor.
 
 from __future__ import annotations
 
-__all__ = ["METHOD_FLAGS", "GUIDED_METHODS", "MC_METHODS", "READ_METHODS", "METHODS", "COMPONENTS", "LIGHT_PICK_MODES",
-           "light_pick_rule", "rr_threshold_rule", "rr_pilot_choice"]
+__all__ = ["METHOD_FLAGS", "GUIDED_METHODS", "MC_METHODS", "HYBRID_METHODS", "READ_METHODS", "METHODS", "COMPONENTS",
+           "LIGHT_PICK_MODES", "light_pick_rule", "rr_threshold_rule", "rr_pilot_choice", "sampled_method"]
 
 #: Monte Carlo method → (next-event estimation, cosine directions, MIS, interreflection)
 METHOD_FLAGS = {
@@ -29,12 +29,21 @@ METHOD_FLAGS = {
 GUIDED_METHODS = ("guided",)
 #: methods with a Monte Carlo kernel
 MC_METHODS = tuple(METHOD_FLAGS)
+#: the hybrids the planner picks for irradiance sensors that need paths: the direct light of the
+#: emitters ``exact`` can read computed on the host, the rest (the reflected light, and the direct
+#: light of the other lights) sampled by the paths named after the ``+`` (engine.driver.Engine.run)
+HYBRID_METHODS = {"exact+path": "path", "exact+guided": "guided"}
 #: methods that read a sensor: the closed form and the Monte Carlo ones
 READ_METHODS = ("analytic", "exact", *MC_METHODS)
 #: what ``simulation.method`` may ask for
 METHODS = ("auto", *READ_METHODS)
 #: which light a reading counts
 COMPONENTS = ("total", "direct", "indirect")
+
+
+def sampled_method(method: str) -> str:
+    """The Monte Carlo method a method's samples are drawn with (a hybrid's paths; else itself)."""
+    return HYBRID_METHODS.get(method, method)
 
 
 def area_light_count(scene) -> int:

@@ -49,7 +49,8 @@ from simulator.scene.model import Sensor, SensorKind
 
 from .group_tally import clear_group_sample, fold_group_sample, tally_group, tregenza_patch
 from .guide import glossy_mixture_factor, guide_fraction, guide_row, make_guided_step, mixture_factor, pdf_guide, tally_patch
-from .light_pick import LightPick, is_delta, pick_light, pick_light_at, pick_scale, picks_at, tally_patch_pick, tally_pick
+from .light_pick import (LightPick, computed_at, is_delta, pick_light, pick_light_at, pick_scale, picks_at, tally_patch_pick,
+                         tally_pick)
 from .lights import (  # noqa: F401  (GuideRec, LightRec, SceneRec re-exported for the engine)
     RAY_INF,
     GuideRec,
@@ -104,8 +105,8 @@ wp.set_module_options({"enable_backward": False})
 #: the compile, a shared 2-core machine): O2 (Warp's CPU default) 64.8 s, O1 49.3 s; the trace's CPU
 #: time the same within the noise (furnace, 4,096 samples: 5.7-6.5 s both) and every reading the same
 #: bytes (quickstart, furnace, office_bench CSVs and maps): without fast-math clang keeps each float
-#: operation as written at any level, FMAs are formed per expression by the front end, and Warp's
-#: inlining thresholds (``wp.config.cpu_compiler_flags``) apply at O1 too (docs/DESIGN.md §Kernel modules).
+#: operation as written at any level, FMAs are formed per expression by the front end, and the raised
+#: inlining thresholds (``engine.device.INLINE_THRESHOLDS``) apply at O1 too (docs/DESIGN.md §Kernel modules).
 TRACE_OPTIMIZATION_LEVEL = 1
 
 
@@ -260,27 +261,35 @@ def to_local(v: wp.vec3, n: wp.vec3) -> wp.vec3:
     return wp.vec3(wp.dot(v, frame_x(n)), wp.dot(v, frame_y(n)), wp.dot(v, n))
 
 
-@wp.func
-def lights_seen_along(scene: SceneRec, params: TraceParams, total_in: wp.vec2, o: wp.vec3, d: wp.vec3, t_stop: float,
-                      first: RayHit, rng0: wp.uint32, w: float, t_w: float, tint: wp.vec4, t_tint: float) -> wp.vec2:
-    """``total_in`` plus the radiance a meter's ray (o, d) receives from the UsdLux area lights it meets before ``t_stop``
-    (they do not block), each × ``w`` and the lanes ``tint`` its segment carried in, and × the weights
-    and lanes of the faces between o and the light when it lies past the first weighted face (``t_w``)
-    or coloured pane (``t_tint``) of the walk from ``first`` (:func:`.spectral_surfaces.walk_before`
-    replays it with the same uniforms), added light by light."""
-    total = total_in
-    for li in range(scene.n_lights):
-        l = scene.lights[li]
-        t_l = hit_light_before(l, o, d, t_stop)
-        if t_l > 0.0:
-            tint_l = tint
-            w_l = w
-            if t_l >= wp.min(t_tint, t_w):
-                wb = walk_before(scene, params, o, d, first, rng0, t_l)
-                tint_l = wp.cw_mul(tint, wb.tint)
-                w_l = w * wb.weight
-            total += light_contribution(scene, params, li, (w_l * shaping_factor(l, -d)) * l.emission, tint_l)
-    return total
+@functools.cache
+def make_lights_seen_along(surfaces: bool):
+    """:func:`lights_seen_along` of one trace variant (:func:`make_trace`): with ``surfaces`` False no
+    face weighs or colours a ray (``t_w`` and ``t_tint`` stay ``RAY_INF``), so the walk replayed past
+    one is left out of the generated code."""
+
+    @wp.func
+    def lights_seen_along(scene: SceneRec, params: TraceParams, total_in: wp.vec2, o: wp.vec3, d: wp.vec3, t_stop: float,
+                          first: RayHit, rng0: wp.uint32, w: float, t_w: float, tint: wp.vec4, t_tint: float) -> wp.vec2:
+        """``total_in`` plus the radiance a meter's ray (o, d) receives from the UsdLux area lights it meets before ``t_stop``
+        (they do not block), each × ``w`` and the lanes ``tint`` its segment carried in, and × the weights
+        and lanes of the faces between o and the light when it lies past the first weighted face (``t_w``)
+        or coloured pane (``t_tint``) of the walk from ``first`` (:func:`.spectral_surfaces.walk_before`
+        replays it with the same uniforms), added light by light."""
+        total = total_in
+        for li in range(scene.n_lights):
+            l = scene.lights[li]
+            t_l = hit_light_before(l, o, d, t_stop)
+            if t_l > 0.0:
+                tint_l = tint
+                w_l = w
+                if (t_l >= wp.min(t_tint, t_w)) if wp.static(surfaces) else False:
+                    wb = walk_before(scene, params, o, d, first, rng0, t_l)
+                    tint_l = wp.cw_mul(tint, wb.tint)
+                    w_l = w * wb.weight
+                total += light_contribution(scene, params, li, (w_l * shaping_factor(l, -d)) * l.emission, tint_l)
+        return total
+
+    return lights_seen_along
 
 
 @wp.func
@@ -499,6 +508,7 @@ def make_trace(surfaces: bool) -> Trace:
     and Warp's kernel cache serves each (docs/DESIGN.md §Trace variants,
     §Kernel modules)."""
     guided_step = make_guided_step(surfaces)
+    lights_seen_along = make_lights_seen_along(surfaces)
 
     @wp.func
     def vertex_estimate(
@@ -628,9 +638,10 @@ def make_trace(surfaces: bool) -> Trace:
                     rng = pk.rng
                 for li in range(scene.n_lights):
                     u = wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng))
-                    # a light the plan proved wholly behind the sensor adds nothing there
+                    # a light the plan proved wholly behind the sensor adds nothing there (mask 0); one
+                    # whose direct light there is computed (mask 2) is not sampled there
                     if depth == 0 and params.mask_row >= 0:
-                        if scene.light_mask[params.mask_row * scene.n_lights + li] == 0:
+                        if scene.light_mask[params.mask_row * scene.n_lights + li] != 1:
                             continue
                     sel = float(1.0)
                     if picks_at(params, depth) and not is_delta(scene.lights[li]):
@@ -702,7 +713,7 @@ def make_trace(surfaces: bool) -> Trace:
                 own = wp.where(gl != 0, g_face, cur_face)
                 if own >= 0:
                     c_here = scene.face_curve[own]
-            if params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes + scene.n_curves > 0:
+            if (params.nee != 0 and delta == 0 and params.bounces != 0 and scene.n_mirror_planes + scene.n_curves > 0) if wp.static(surfaces) else False:
                 img_here = 1
                 for li in range(scene.n_lights):
                     if not has_image(scene.lights[li]):
@@ -942,7 +953,7 @@ def make_trace(surfaces: bool) -> Trace:
             if (scene.surfaces != 0) if wp.static(surfaces) else False:
                 if hit.face >= 0:
                     walks = scene.surf_id[hit.face] >= 0
-            if walks:
+            if (walks) if wp.static(surfaces) else False:
                 lp = pass_through_traced(scene, params, o, wi, hit, rng)  # coloured panes: the same draws, per lane
                 rng = lp.rng
                 hit = lp.hit
@@ -961,7 +972,7 @@ def make_trace(surfaces: bool) -> Trace:
             for li in range(scene.n_lights):
                 l = scene.lights[li]
                 t = hit_light_before(l, o, wi, t_hit)  # −1 for lights with no surface
-                if t > 0.0 and count:
+                if t > 0.0 and count and not computed_at(scene, params.mask_row, depth, li):
                     w = float(1.0)
                     if weigh:
                         pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, ns, wi, t, -1)
@@ -972,7 +983,7 @@ def make_trace(surfaces: bool) -> Trace:
                         w = power_heuristic(pa_prev * wp.where(mirror_now != 0, pm, 1.0), pb)
                     tint_l = tint_before
                     w_l = float(1.0)
-                    if t >= wp.min(t_tint, t_pass):  # past a weighted or coloured pane: those in front of the light only
+                    if (t >= wp.min(t_tint, t_pass)) if wp.static(surfaces) else False:  # past a weighted or coloured pane: those in front of the light only
                         wb = walk_before(scene, params, o, wi, hit0, rng0, t)
                         tint_l = wp.cw_mul(tint_before, wb.tint)
                         w_l = wb.weight
@@ -1000,7 +1011,7 @@ def make_trace(surfaces: bool) -> Trace:
                         if is_cone_light(scene.lights[li]) and (le[0] > 0.0 or le[1] > 0.0):
                             if curve_covers(scene, curve_k, o_prev, p, wi):
                                 le = wp.vec2(0.0, 0.0)
-                    if (le[0] > 0.0 or le[1] > 0.0) and count:
+                    if (le[0] > 0.0 or le[1] > 0.0) and count and not computed_at(scene, params.mask_row, depth, li):
                         w = float(1.0)
                         if weigh:
                             pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, ns, wi, RAY_INF, -1)
@@ -1049,7 +1060,8 @@ def make_trace(surfaces: bool) -> Trace:
                 continue
             delta = 0
             le = tri_emitted(scene, face, cos_view)
-            if (le[0] > 0.0 or le[1] > 0.0) and count:
+            if (le[0] > 0.0 or le[1] > 0.0) and count and not computed_at(scene, params.mask_row, depth,
+                                                                          params.emissive_light):
                 w = float(1.0)
                 if weigh and params.emissive_light >= 0:
                     w = power_heuristic(pdf_b, pick_scale(scene, params, pk, params.emissive_light, p, n, depth)

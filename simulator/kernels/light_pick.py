@@ -218,9 +218,22 @@ def pick_weights(scene: SceneRec, li: int, p: wp.vec3, n: wp.vec3, row: int, pat
 
 @wp.func
 def light_masked(scene: SceneRec, mask_row: int, depth: int, li: int) -> bool:
-    """Whether the plan proved light ``li`` wholly behind the sensor (first vertex only)."""
+    """Whether light ``li`` is not sampled at the sensor (first vertex only): the plan proved it
+    wholly behind the sensor (mask 0), or its direct light there is computed on the host (mask 2,
+    :func:`computed_at`)."""
     if depth == 0 and mask_row >= 0:
-        return scene.light_mask[mask_row * scene.n_lights + li] == 0
+        return scene.light_mask[mask_row * scene.n_lights + li] != 1
+    return False
+
+
+@wp.func
+def computed_at(scene: SceneRec, mask_row: int, depth: int, li: int) -> bool:
+    """Whether light ``li``'s direct light at the sensor is computed on the host, not sampled (mask
+    2: exact direct light, docs/DESIGN.md §Direct light computed in reflecting rooms): at the
+    sensor's own vertex neither its light sample nor a direction that meets it counts; paths go on
+    from there, and every later vertex counts it as before."""
+    if depth == 0 and mask_row >= 0 and li >= 0:
+        return scene.light_mask[mask_row * scene.n_lights + li] == 2
     return False
 
 

@@ -178,39 +178,46 @@ def probe_weight(q: int, w: wp.vec3) -> float:
     return y + z
 
 
-@wp.func
-def delta_responses(scene: SceneRec, li: int, p: wp.vec3, w: wp.vec3, panes: int) -> wp.vec2:
-    """A spectral run's (radiometric, photopic) responses to delta light ``li`` at p (toward ω = w) per
-    unit of its radiometric value, as the hero lanes take them (:func:`.spectral.spectral_contribution`)
-    but exactly: the expectation over a lane's node, drawn with probability q_i/400,
+@functools.cache
+def make_delta_responses(surfaces: bool):
+    """:func:`delta_responses` of one trace variant (:func:`make_probe_kernel`): with ``surfaces`` False
+    a stage has no pane (``panes`` is 0), so the per-lane walk is left out of the generated code."""
 
-        Σ_i (q_i/400) · W_c(λ_i) · S(λ_i) · T(λ_i),
+    @wp.func
+    def delta_responses(scene: SceneRec, li: int, p: wp.vec3, w: wp.vec3, panes: int) -> wp.vec2:
+        """A spectral run's (radiometric, photopic) responses to delta light ``li`` at p (toward ω = w) per
+        unit of its radiometric value, as the hero lanes take them (:func:`.spectral.spectral_contribution`)
+        but exactly: the expectation over a lane's node, drawn with probability q_i/400,
 
-    S the light's row of ``scene.spectral_emission``, W_c the response's lane weights
-    (``scene.response_weights``, 400·q_c/q, so the sum is the response's own quadrature of S·T), q
-    the trapezoid weights (½ at 380 and 780 nm). T(λ) is 1 unless ``panes`` is 1: then the product of
-    every face's pass factor on the segment at λ, each coloured pane's at its T0(λ)
-    (:func:`.spectral_surfaces.transmittance_lanes`, four grid nodes per call)."""
-    l = scene.lights[li]
-    dist = float(1.0e30)
-    if l.kind == _POINT:
-        dist = wp.length(l.position - p)
-    out = wp.vec2(0.0, 0.0)
-    for g in range(101):  # nodes 4g … 4g + 3 of the 401
-        h = wp.vec4i(wp.min(4 * g, 400), wp.min(4 * g + 1, 400), wp.min(4 * g + 2, 400), wp.min(4 * g + 3, 400))
-        t4 = wp.vec4(1.0, 1.0, 1.0, 1.0)
-        if panes != 0:
-            t4 = transmittance_lanes(scene, h, p, w, dist, -1)
-        s4 = spectral_row(scene.spectral_emission, li, h)
-        for k in range(4):
-            node = 4 * g + k
-            if node <= 400:
-                q = float(1.0 / 400.0)
-                if node == 0 or node == 400:
-                    q = 0.5 / 400.0
-                for c in range(2):
-                    out[c] = out[c] + q * scene.response_weights[c, node] * s4[k] * t4[k]
-    return out
+            Σ_i (q_i/400) · W_c(λ_i) · S(λ_i) · T(λ_i),
+
+        S the light's row of ``scene.spectral_emission``, W_c the response's lane weights
+        (``scene.response_weights``, 400·q_c/q, so the sum is the response's own quadrature of S·T), q
+        the trapezoid weights (½ at 380 and 780 nm). T(λ) is 1 unless ``panes`` is 1: then the product of
+        every face's pass factor on the segment at λ, each coloured pane's at its T0(λ)
+        (:func:`.spectral_surfaces.transmittance_lanes`, four grid nodes per call)."""
+        l = scene.lights[li]
+        dist = float(1.0e30)
+        if l.kind == _POINT:
+            dist = wp.length(l.position - p)
+        out = wp.vec2(0.0, 0.0)
+        for g in range(101):  # nodes 4g … 4g + 3 of the 401
+            h = wp.vec4i(wp.min(4 * g, 400), wp.min(4 * g + 1, 400), wp.min(4 * g + 2, 400), wp.min(4 * g + 3, 400))
+            t4 = wp.vec4(1.0, 1.0, 1.0, 1.0)
+            if (panes != 0) if wp.static(surfaces) else False:
+                t4 = transmittance_lanes(scene, h, p, w, dist, -1)
+            s4 = spectral_row(scene.spectral_emission, li, h)
+            for k in range(4):
+                node = 4 * g + k
+                if node <= 400:
+                    q = float(1.0 / 400.0)
+                    if node == 0 or node == 400:
+                        q = 0.5 / 400.0
+                    for c in range(2):
+                        out[c] = out[c] + q * scene.response_weights[c, node] * s4[k] * t4[k]
+        return out
+
+    return delta_responses
 
 
 @wp.func
@@ -248,6 +255,7 @@ def make_probe_kernel(surfaces: bool):
     samples are that variant's ``sample_radiance``, and with ``surfaces`` False the panes and
     cut-outs on a delta light's segment are left out of the generated code."""
     sample_radiance = make_trace(surfaces).sample_radiance
+    delta_responses = make_delta_responses(surfaces)
 
     @wp.func
     def delta_visibility(scene: SceneRec, p: wp.vec3, w: wp.vec3, dist: float) -> float:

@@ -55,9 +55,9 @@ def _rules() -> tuple:
     from simulator.plan import exact_rule, planner
     from simulator.scene import emitters  # the plan's note on emitter pieces
 
-    return (planner.AUTO_GUIDED, planner.LARGE_SOURCE_SR, exact_rule.EXACT_MAX_OCCLUDERS,
-            exact_rule.EXACT_MAX_SCENE_TRIANGLES, emitters.PIECE_M, emitters.SPLIT_M, emitters.MAX_PIECES,
-            emitters.MAX_SPLIT, emitters.PIECES_MIN_GAIN)
+    return (planner.AUTO_GUIDED, planner.LARGE_SOURCE_SR, exact_rule.EXACT_JOB_S, exact_rule.EXACT_OCCLUDER_S,
+            exact_rule.EXACT_MAX_S, exact_rule.PATH_SAMPLE_S, exact_rule.HYBRID_MAX_S, emitters.PIECE_M,
+            emitters.SPLIT_M, emitters.MAX_PIECES, emitters.MAX_SPLIT, emitters.PIECES_MIN_GAIN)
 
 
 def cached_plan(make, token: int | None, sensors, requested: str, component: str):

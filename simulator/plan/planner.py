@@ -44,8 +44,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from simulator.errors import UserError
-from simulator.plan.exact_rule import exact_plan_refusal, exact_plan_refusals
-from simulator.engine.methods import METHOD_FLAGS, MC_METHODS, light_pick_rule, rr_threshold_rule
+from simulator.plan.exact_rule import EMISSIVE, exact_plan_refusal, exact_plan_refusals, hybrid_records
+from simulator.engine.methods import HYBRID_METHODS, METHOD_FLAGS, MC_METHODS, light_pick_rule, rr_threshold_rule, sampled_method
 from simulator.plan.bounds import FrontIndex
 from simulator.scene.model import LightKind, Scene, Sensor, SensorKind, patch_width_axis
 
@@ -235,6 +235,9 @@ class SensorPlan:
     geometry : str
         What of the scene matters: ``none``, ``black occluders`` or
         ``reflecting surfaces`` in front of the sensor.
+    computed : list of str
+        A hybrid's lights whose direct light is computed on the host (``emissive surfaces``: the
+        emissive triangles); empty for every other method.
     """
 
     name: str
@@ -245,13 +248,14 @@ class SensorPlan:
     lights: list[str] = field(default_factory=list)
     culled: list[str] = field(default_factory=list)
     geometry: str = "none"
+    computed: list[str] = field(default_factory=list)
 
     def to_record(self) -> dict:
         """``dataclasses.asdict`` of the plan, written out (asdict's deep copy took ~0.1 s of a
         warm 1,024-sensor run)."""
         return {"name": self.name, "kind": self.kind, "method": self.method, "bounces": self.bounces,
                 "reason": self.reason, "lights": list(self.lights), "culled": list(self.culled),
-                "geometry": self.geometry}  # fmt: skip
+                "geometry": self.geometry} | ({"computed": list(self.computed)} if self.computed else {})  # fmt: skip
 
 
 @dataclass
@@ -296,6 +300,19 @@ class Plan:
             for n in sp.culled:
                 mask[i, col[n]] = 0
         return mask
+
+    def computed_mask(self, light_names: list[str]) -> np.ndarray | None:
+        """(S, L + 1) bool: the hybrids' computed direct light per sensor and light record (the lights
+        named, then the emissive triangles); None where no sensor has any."""
+        if not any(sp.computed for sp in self.sensors):
+            return None
+        col = {n: j for j, n in enumerate(light_names)}
+        col[EMISSIVE] = len(light_names)
+        out = np.zeros((len(self.sensors), len(light_names) + 1), bool)
+        for i, sp in enumerate(self.sensors):
+            for n in sp.computed:
+                out[i, col[n]] = True
+        return out
 
     def record_json(self) -> str:
         """:meth:`to_record` as the run record's JSON writes it (``indent=2``, sorted keys), made once per
@@ -517,11 +534,13 @@ def _reflecting_in_front(scene: Scene, sensor: Sensor, bounds: SceneBounds) -> t
     return ("reflecting surfaces" if reflects else "black occluders"), reflects
 
 
-def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", component: str = "total") -> Plan:
+def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", component: str = "total",
+              hybrid: bool = True) -> Plan:
     """Plan how each sensor is read (see the module docstring for the rules).
 
     An explicit ``requested`` method applies to every sensor (``analytic``
-    raises :class:`UserError` naming a sensor it cannot read).
+    raises :class:`UserError` naming a sensor it cannot read). ``hybrid``
+    False: no hybrid (a light-group pass tallies every light on its paths).
     """
     transport, channels, channel_reason = _transport(scene)
     bounds = scene_bounds(scene)
@@ -538,6 +557,15 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
                                            and not (r is None and d)) for r, d in zip(refusals, direct_only)]  # fmt: skip
     ask = [i for i, a in enumerate(asks_exact) if a]
     exact_why = dict(zip(ask, exact_plan_refusals(scene, [sensors[i] for i in ask], [culled_of[i] for i in ask])))
+    # the hybrid: direct light computed for irradiance sensors that need paths (grey transport; auto)
+    hyb = {}
+    if hybrid and requested == "auto" and component == "total" and transport == "grey":
+        need = [i for i, (_, reflects) in enumerate(seen)
+                if reflects and sensors[i].kind == SensorKind.IRRADIANCE and getattr(sensors[i], "optics", None) is None]
+        names = [l.name for l in scene.lights] + [EMISSIVE]
+        for i, (recs, why) in zip(need, hybrid_records(scene, [sensors[i] for i in need], [culled_of[i] for i in need])):
+            if recs:
+                hyb[i] = ([names[r] for r in recs], why)
     plans = []
     for i, s in enumerate(sensors):
         culled = culled_of[i]
@@ -565,7 +593,7 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
             method, reason = "analytic", "nothing can block its lights" + ("" if component == "direct" else " and nothing in front of it reflects: closed form")
         elif (not reflects or component == "direct") and exact_why[i] is None:
             method = "exact"
-            reason = f"no surface it sees reflects ({refusal}): each RectLight's visible part in closed form, penumbrae exact"
+            reason = f"no surface it sees reflects ({refusal}): each light's visible part in closed form, penumbrae exact"
         elif not reflects or component == "direct":
             why = refusal or "no closed form"
             big = _largest_solid_angle(scene, s, culled)
@@ -578,10 +606,13 @@ def make_plan(scene: Scene, sensors: list[Sensor], requested: str = "auto", comp
                           "portals only: cosine directions count the sky seen past them")
             else:
                 method, reason = "light", f"no surface it sees reflects, so direct light is all ({why}): light sampling"
+        elif i in hyb:
+            method = "exact+" + paths
+            reason = "surfaces it sees reflect: paths read the reflected light" + paths_why + "; " + hyb[i][1]
         else:
             method, reason = paths, "surfaces it sees reflect: interreflection needs paths" + paths_why
-        plans.append(SensorPlan(s.name, kind, method, bool(METHOD_FLAGS.get(method, (0, 0, 0, False))[3]), reason, lights,
-                                culled, geometry))  # fmt: skip
+        plans.append(SensorPlan(s.name, kind, method, bool(METHOD_FLAGS.get(sampled_method(method), (0, 0, 0, False))[3]),
+                                reason, lights, culled, geometry, hyb[i][0] if method in HYBRID_METHODS else []))  # fmt: skip
     return Plan(requested, component, channels, channel_reason, plans, transport, _light_sampling(scene, plans),
                 surface_needs(scene))
 
@@ -595,7 +626,7 @@ def with_optics(plan: Plan, scene: Scene, twins: list[Sensor]) -> Plan:
     it (directions drawn by the response pay there), else ``light``; an explicit closed-form method
     likewise. The plan given is not changed (a kept plan is shared)."""
     requested = plan.requested if plan.requested not in ("analytic", "exact") else "auto"
-    twin_plan = make_plan(scene, twins, requested, plan.component)
+    twin_plan = make_plan(scene, twins, requested, plan.component, hybrid=False)  # a computed part reads the cosine
     extra = []
     for s, sp in zip(twins, twin_plan.sensors):
         if sp.method in ("analytic", "exact"):
@@ -619,12 +650,15 @@ def _light_sampling(scene: Scene, plans: list[SensorPlan]) -> dict[str, str]:
     (:func:`simulator.engine.methods.light_pick_rule`)."""
     out = {}
     for m in dict.fromkeys(sp.method for sp in plans):
-        if m in MC_METHODS and m != "bsdf":
-            mode, why = light_pick_rule(m, scene)
+        b = sampled_method(m)
+        if b in MC_METHODS and b != "bsdf":
+            mode, why = light_pick_rule(b, scene)
             how = {"off": "every light at each vertex", "every": "one light per vertex",
                    "after_first": "every light at the sensor and one light at each later vertex"}[mode]
             out[m] = f"{how} ({why})"
-            if METHOD_FLAGS[m][3]:  # paths: their roulette threshold
+            if b != m:
+                out[m] += "; at the sensor, the lights whose direct light is computed are left out"
+            if METHOD_FLAGS[b][3]:  # paths: their roulette threshold
                 out[m] += "; " + rr_threshold_rule(scene)[1]
     if out and scene.geometry.n_triangles and np.any(scene.geometry.emission > 0):
         from simulator.scene.emitters import pieces_note

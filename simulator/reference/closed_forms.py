@@ -795,6 +795,11 @@ def cos_power_dome_reading(radiance, n):
     ndarray or float
         ∫ L cosⁿθ dω = 2π·L/(n + 1): L·π at n = 1, the irradiance.
 
+    Notes
+    -----
+    With dω = sinθ dθ dφ over the hemisphere, ∫₀^{2π}∫₀^{π/2} cosⁿθ sinθ dθ dφ
+    = 2π·[−cos^{n+1}θ/(n + 1)]₀^{π/2} = 2π/(n + 1).
+
     References
     ----------
     .. [1] docs/REFERENCES.md §Sensor models.
@@ -803,7 +808,21 @@ def cos_power_dome_reading(radiance, n):
 
 
 def half_power_exponent(half_angle_deg):
-    """The n of cosⁿ θ whose response is ½ at ``half_angle_deg``: ln ½ / ln cos θ½ (60° → 1).
+    """The n of cosⁿ θ whose response is ½ at ``half_angle_deg``.
+
+    Parameters
+    ----------
+    half_angle_deg : float or array_like
+        The half-power angle θ½, degrees, 0 < θ½ < 90.
+
+    Returns
+    -------
+    ndarray or float
+        n = ln ½ / ln cos θ½ (60° → 1, the cosine).
+
+    Notes
+    -----
+    cosⁿ θ½ = ½ solved for n.
 
     References
     ----------
@@ -815,6 +834,20 @@ def half_power_exponent(half_angle_deg):
 def cos_power_f2(n, limit_deg: float = 85.0):
     """ISO/CIE 19476's directional response index f2 of a head r = cosⁿ θ, in closed form.
 
+    Parameters
+    ----------
+    n : float or array_like
+        The exponent, > 0.
+    limit_deg : float
+        The largest angle of incidence integrated, degrees (the standard's 85°).
+
+    Returns
+    -------
+    ndarray or float
+        f2, a fraction (0 for the cosine).
+
+    Notes
+    -----
     f2 = ∫₀^{ε_max} |cos^{n−1} ε − 1| sin 2ε dε; with u = cos ε, sin 2ε dε = −2u du, so for n ≥ 1
     f2 = ∫_c^1 2u (1 − u^{n−1}) du = 1 − c² − 2(1 − c^{n+1})/(n + 1), c = cos ε_max, and for n < 1
     (a head reading high at a slant) its negative.

@@ -266,7 +266,7 @@ def trace_groups(scene: Scene, sensors: list[Sensor], groups: dict[str, list[str
     t0, c0 = time.perf_counter(), time.process_time()
     sub = group_scene(scene, list(owner))
     engine = Engine(sub, sensors, device=sim.device, threads=threads)
-    plan = make_plan(sub, sensors, sim.method, sim.component)
+    plan = make_plan(sub, sensors, sim.method, sim.component, hybrid=False)  # every light tallied on the paths
     light_group = np.array([owner[l.name] for l in sub.lights], np.int64)
     patch_base = np.array([split_lights.get(l.name, -1) for l in sub.lights], np.int64) if split_lights else None
     levels = pick = None
