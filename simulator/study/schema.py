@@ -107,7 +107,14 @@ Schema
     ground_reflectance = 0.2           # the dome below the horizon
     occupied_h = [8, 18]               # LM-83 hours, local standard time
     # da_lx, ase_lx, ase_hours, udi_lx, en17037_lx, step_h, replicates, sun_patches;
-    # sun_indirect = "traced" with sun_group (the DistantLight's group) and sun_bin_deg
+    # sun_indirect = "traced" with sun_group (the DistantLight's group) and sun_bin_deg;
+    # glare_index = "dgp" (or "dgps") at the stage's glare views, glare_limit = 0.40
+
+    [shading]                          # operable shading (simulator.study.annual.shading)
+    variant_set = "blinds"             # the stage's variant set of the window's states
+    states = ["up", "down"]            # its variants, least shaded first; each traced once
+    rule = "lm83"                      # lm83 (share, zones) | glare (dgp_limit, views) | schedule
+    diffusers = { "/Office/Blinds/Shade" = 0.10 }   # flat shade prims: diffuse transmittance
 
     [[control]]                        # photosensor control (simulator.study.annual.control)
     zone = "window_zone"
@@ -132,7 +139,8 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 
 from simulator.errors import UserError
 
-__all__ = ["Study", "load_study", "CandidateSpec", "GroupSpec", "ScenarioSpec", "ZoneSpec", "PlacementSpec", "SunSpec", "SkySpec", "AnnualSpec", "ControlSpec"]
+__all__ = ["Study", "load_study", "CandidateSpec", "GroupSpec", "ScenarioSpec", "ZoneSpec", "PlacementSpec", "SunSpec", "SkySpec", "AnnualSpec", "ControlSpec",
+           "ShadingSpec"]
 
 _SEED_LIMIT = 2**31
 Level = Annotated[float, Field(ge=0.0, le=1e6, allow_inf_nan=False)]
@@ -491,6 +499,10 @@ class AnnualSpec(_Model):
         None, min_length=1, description="traced: a [[group]] holding the stage's one DistantLight"
     )
     sun_bin_deg: float = Field(6.0, ge=1.0, le=30.0, description="traced: size of the sun-position bins")
+    glare_index: Literal["dgp", "dgps"] = Field(
+        "dgp", description="the stage's glare views, every hour: dgp (sky, sun and shade as sources) or dgps (from E_v alone)"
+    )
+    glare_limit: float = Field(0.40, gt=0.0, lt=1.0, description="glare autonomy: the share of occupied hours below this DGP")
 
     @model_validator(mode="after")
     def _ranges(self):
@@ -499,6 +511,24 @@ class AnnualSpec(_Model):
         if not 0.0 < self.udi_lx[0] < self.udi_lx[1]:
             raise ValueError("udi_lx: expected [lower, upper] with 0 < lower < upper")
         return self
+
+
+class ShadingSpec(_Model):
+    """Operable shading of a window group (:mod:`simulator.study.annual.shading`): its states, the rule that picks one each hour."""
+
+    variant_set: str = Field(min_length=1, description="the stage's variant set whose variants are the shading states")
+    states: list[str] = Field(min_length=1, description="its variants, least shaded first (LM-83: shades up, then down)")
+    rule: Literal["lm83", "glare", "schedule"] = Field(
+        "lm83", description="each hour the first state that: lm83, lets no more than share of the points get ase_lx of "
+                            "direct sun; glare, keeps DGP under dgp_limit at every view; schedule, the hour's state")
+    zones: list[str] = Field([], description="lm83: the zones whose points are counted (default: every zone's)")
+    share: float = Field(0.02, ge=0.0, lt=1.0, description="lm83: the share of points in direct sun that closes the shades")
+    views: list[str] = Field([], description="glare: the stage's glare views that judge (default: all)")
+    dgp_limit: float = Field(0.40, gt=0.0, le=1.0, description="glare: the DGP a view may not exceed")
+    schedule: dict[str, list[tuple[float, float, float, float]]] = Field(
+        {}, description="schedule: state → [[month from, month to, hour from, hour to], ...] (LST; other hours: the first state)")
+    diffusers: dict[str, Annotated[float, Field(gt=0.0, le=1.0)]] = Field(
+        {}, description="flat shade prims → diffuse transmittance: each passes τ·E/π, E the light on its outer face")
 
 
 class ControlSpec(_Model):
@@ -537,6 +567,7 @@ class Study(_Model):
     output: OutputSpec = OutputSpec()
     annual: AnnualSpec | None = None
     control: list[ControlSpec] = []
+    shading: ShadingSpec | None = None
 
     @model_validator(mode="after")
     def _references(self):
@@ -623,6 +654,34 @@ def _check_annual(study: "Study", groups: set, split: set, zones: set, cands: se
             raise _RefError("annual.sun_group", f"no lamp [[group]] named {a.sun_group!r}{_hint(a.sun_group, groups - split)}")
     if study.control and a is None:
         raise _RefError("control", "needs an [annual] table (control runs over the year's hours)")
+    sh = study.shading
+    if sh is not None:
+        if a is None:
+            raise _RefError("shading", "needs an [annual] table (the shades are operated over the year's hours)")
+        if len(set(sh.states)) != len(sh.states):
+            raise _RefError("shading.states", "a state is named twice")
+        for j, z in enumerate(sh.zones):
+            if z not in zones:
+                raise _RefError(f"shading.zones[{j}]", f"no [[zone]] named {z!r}{_hint(z, zones)}")
+        if sh.rule == "lm83" and not sh.zones and not zones:
+            raise _RefError("shading.rule", "lm83 counts the points of the zones: the study has no [[zone]]")
+        for st, entries in sh.schedule.items():
+            if st not in sh.states:
+                raise _RefError(f"shading.schedule.{st}", f"not one of the states {sh.states}{_hint(st, sh.states)}")
+            for k, (m0, m1, h0, h1) in enumerate(entries):
+                if not (1 <= m0 <= 12 and 1 <= m1 <= 12 and 0 <= h0 < h1 <= 24):
+                    raise _RefError(f"shading.schedule.{st}[{k}]", "expected [month from, month to, hour from, hour to] "
+                                    "with months 1-12 and 0 <= hour from < hour to <= 24")  # fmt: skip
+        if sh.rule == "schedule" and not sh.schedule:
+            raise _RefError("shading.schedule", "rule = \"schedule\" needs a schedule (state → hours)")
+        if sh.rule != "schedule" and sh.schedule:
+            raise _RefError("shading.schedule", f"is for rule = \"schedule\", not {sh.rule!r}")
+        for key, rule in (("zones", "lm83"), ("views", "glare")):
+            if getattr(sh, key) and sh.rule != rule:
+                raise _RefError(f"shading.{key}", f"is for rule = \"{rule}\", not {sh.rule!r}")
+        for prim in sh.diffusers:
+            if not prim.startswith("/"):
+                raise _RefError(f"shading.diffusers.{prim}", "expected a prim path such as /Office/Blinds/Shade")
     for i, c in enumerate(study.control):
         if c.zone not in zones:
             raise _RefError(f"control[{i}].zone", f"no [[zone]] named {c.zone!r}{_hint(c.zone, zones)}")

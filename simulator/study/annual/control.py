@@ -75,6 +75,9 @@ def levels(model: str, daylight_signal: np.ndarray, lamp_signal: float, lamp_zon
         k of the open-loop and switched models (zone daylight per unit of signal).
     """
     s = np.asarray(daylight_signal, np.float64)
+    if np.ndim(lamp_signal) or np.ndim(lamp_zone_lx):
+        return _levels_hourly(model, s, np.broadcast_to(np.asarray(lamp_signal, np.float64), s.shape),
+                              np.broadcast_to(np.asarray(lamp_zone_lx, np.float64), s.shape), target_lx, min_level, deadband, gain)
     if lamp_zone_lx <= 0:
         return np.ones_like(s)
     if model == "closed_loop":
@@ -95,6 +98,25 @@ def levels(model: str, daylight_signal: np.ndarray, lamp_signal: float, lamp_zon
                 on = True
             u[h] = 1.0 if on else 0.0
         return u
+    raise ValueError(f"unknown control model {model!r} (expected one of {', '.join(MODELS)})")
+
+
+def _levels_hourly(model: str, s: np.ndarray, lamp_signal: np.ndarray, lamp_zone_lx: np.ndarray, target_lx: float,
+                   min_level: float, deadband: float, gain: float) -> np.ndarray:  # fmt: skip
+    """:func:`levels` where the lamps' signal and zone illuminance change hour by hour (operable shading: each
+    hour's state reflects the lamps' light differently); the same rules, hour by hour."""
+    ok = lamp_zone_lx > 0
+    if model == "closed_loop":
+        ok &= lamp_signal > 0
+        sig = np.where(ok, lamp_signal, 1.0)
+        sp = sig * np.minimum(1.0, target_lx / np.where(ok, lamp_zone_lx, 1.0))
+        return np.where(ok, np.clip((sp - s) / sig, min_level, 1.0), 1.0)
+    est = gain * s
+    if model == "open_loop":
+        return np.where(ok, np.clip((target_lx - est) / np.where(ok, lamp_zone_lx, 1.0), min_level, 1.0), 1.0)
+    if model == "switched":
+        u = levels("switched", s, 1.0, 1.0, target_lx, min_level, deadband, gain)
+        return np.where(ok, u, 1.0)
     raise ValueError(f"unknown control model {model!r} (expected one of {', '.join(MODELS)})")
 
 

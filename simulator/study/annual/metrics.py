@@ -6,13 +6,16 @@ DA300 (daylight autonomy, IES LM-83-12 §2.2.1)
     Per sensor, the fraction of occupied hours with E ≥ 300 lx; the zone's
     figure is the mean over its sensors.
 sDA300/50% (spatial daylight autonomy, LM-83-12 §2.2)
-    The fraction of sensors whose DA300 is at least 50%. LM-83's operation of
-    blinds (closed where more than 2% of the sensors see over 1000 lx of
-    direct sun) is not applied: the stage has no shading devices.
+    The fraction of sensors whose DA300 is at least 50%. With ``[shading]``
+    the hours are those of the shades as their rule operated them (LM-83-12
+    §2.2.7: closed where more than 2% of the sensors see over 1000 lx of
+    direct sun; :mod:`simulator.study.annual.shading`), otherwise as the
+    stage is.
 ASE1000/250h (annual sunlight exposure, LM-83-12 §2.3)
     The fraction of sensors that see more than 1000 lx of *direct sun only*
-    (no interreflection, no sky) for more than 250 occupied hours; the direct
-    sun is exact (:mod:`simulator.study.annual.sunlight`), so ASE has no variance.
+    (no interreflection, no sky) for more than 250 occupied hours, shades up
+    (the first shading state); the direct sun is exact
+    (:mod:`simulator.study.annual.sunlight`), so ASE has no variance.
 UDI (useful daylight illuminance, Nabil and Mardaljevic 2005)
     Per sensor, the fractions of occupied hours below 100 lx (fell short),
     from 100 to 2000 lx (useful) and above 2000 lx (exceeded); zone means.

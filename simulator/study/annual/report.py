@@ -14,6 +14,15 @@ candidate photosensor and the chosen one), and three charts embedded as PNGs:
   centre) of the zone's mean illuminance;
 - the same map of the controlled lamps' level u (0…1) for each control.
 
+With ``[shading]``, a part on the shades: the rule, the occupied hours in
+each state, per zone sDA and DA with the shades operated and without, ASE
+(shades up, as LM-83 defines it) and with them operated, and a temporal map
+of the state chosen each hour. With glare views on the stage, a part on
+glare: per view glare autonomy, the hours above DGP 0.35, 0.40 and 0.45 and
+EN 17037's level of protection from glare, each with its error, and the
+year's glare map (day of year x hour, each occupied hour coloured by its
+DGP's class: imperceptible, perceptible, disturbing, intolerable).
+
 A study with scenarios gets this section after its heat maps
 (:func:`simulator.study.report.page.register_section`); a study with only
 ``[annual]`` gets a page of its own (:func:`annual_page`). Every name from
@@ -36,7 +45,7 @@ from simulator.study.annual.metrics import METRICS
 from simulator.study.report.page import (Raw, Section, esc, luminaire_section, page_html, png_img, register_section,
                                          table_html, title_block)  # fmt: skip
 
-__all__ = ["annual_section", "annual_page", "da_per_sensor", "temporal_grid", "metric_names"]
+__all__ = ["annual_section", "annual_page", "da_per_sensor", "temporal_grid", "metric_names", "shading_part", "glare_part"]
 
 
 def da_per_sensor(ares, ids, da_lx: float) -> np.ndarray:
@@ -119,19 +128,22 @@ def _temporal_png(grid: np.ndarray, days: np.ndarray, title: str, label: str, vm
     return _png(fig)
 
 
-def metric_names(cfg) -> dict[str, tuple[str, str]]:
+def metric_names(cfg, shaded: bool = False) -> dict[str, tuple[str, str]]:
     """Metric key (:data:`simulator.study.annual.metrics.METRICS`) → (the name designers use, its definition in words),
-    with the study's thresholds (``[annual]`` ``da_lx``, ``ase_lx``, ``ase_hours``, ``udi_lx``, ``en17037_lx``) in them."""
+    with the study's thresholds (``[annual]`` ``da_lx``, ``ase_lx``, ``ase_hours``, ``udi_lx``, ``en17037_lx``) in them;
+    ``shaded``: the year's readings are those of the shades as their rule operated them."""
     da, ase, ah = f"{cfg.da_lx:g}", f"{cfg.ase_lx:g}", f"{cfg.ase_hours:g}"
+    blinds = "with operable shading: the shades as their rule operated them" if shaded else "no blinds operated"
     lo, hi = (f"{v:g}" for v in cfg.udi_lx)
     t, m = (f"{v:g}" for v in cfg.en17037_lx)
     return {
         "DA": (f"DA{da}", f"Daylight autonomy: the share of occupied hours in which a point gets at least {da} lx from "
                           "daylight, averaged over the zone's points (IES LM-83-12)."),
         "sDA": (f"sDA{da}/50%", f"Spatial daylight autonomy: the share of the zone's points that get at least {da} lx from "
-                                "daylight for at least half of the occupied hours (IES LM-83-12; no blinds operated)."),
+                                f"daylight for at least half of the occupied hours (IES LM-83-12; {blinds})."),
         "ASE": (f"ASE{ase}/{ah}h", f"Annual sunlight exposure: the share of points that get more than {ase} lx of direct "
-                                   f"sunlight for more than {ah} occupied hours a year (IES LM-83-12; exact, no error)."),
+                                   f"sunlight for more than {ah} occupied hours a year (IES LM-83-12{', shades up' if shaded else ''}; "
+                                   "exact, no error)."),
         "UDI_fell_short": (f"UDI < {lo} lx", f"Useful daylight illuminance, fell short: the share of occupied hours below "
                                              f"{lo} lx, averaged over the points."),
         "UDI_useful": (f"UDI {lo}–{hi} lx", f"Useful daylight illuminance: the share of occupied hours from {lo} to {hi} lx, "
@@ -149,8 +161,8 @@ def metric_names(cfg) -> dict[str, tuple[str, str]]:
     }  # fmt: skip
 
 
-def _metrics_table(m: dict, cfg) -> str:
-    names = metric_names(cfg)
+def _metrics_table(m: dict, cfg, shaded: bool = False) -> str:
+    names = metric_names(cfg, shaded)
     rows = []
     for k, (unit, _) in METRICS.items():
         if k not in m:
@@ -182,7 +194,7 @@ def _control_table(ctl: dict) -> str:
 def _zone_part(ares, zone: str) -> str:
     a = ares.annual_spec
     ctls = [c for c in ares.controls if c["zone"] == zone]
-    parts = [f"<h3>Zone {esc(zone)}</h3>", _metrics_table(ares.metrics[zone], a)]
+    parts = [f"<h3>Zone {esc(zone)}</h3>", _metrics_table(ares.metrics[zone], a, getattr(ares, "shading", None) is not None)]
     for c in ctls:
         parts.append(_control_table(c))
     chosen = [c["chosen"] for c in ctls]
@@ -200,6 +212,127 @@ def _zone_part(ares, zone: str) -> str:
     return "".join(parts)
 
 
+#: the DGP classes of the glare map: upper bounds and colours (Wienold 2009)
+_DGP_CLASSES = ((0.35, "imperceptible", "#5aae61"), (0.40, "perceptible", "#fee08b"), (0.45, "disturbing", "#f46d43"),
+                (1.0, "intolerable", "#a50026"))  # fmt: skip
+
+
+def _state_png(ares) -> bytes:
+    """The state chosen each hour, a temporal map (grey: not analysed)."""
+    from matplotlib import colormaps
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+    from matplotlib.figure import Figure
+
+    g, days = temporal_grid(ares, np.asarray(ares.state, float))
+    n = len(ares.states)
+    base = colormaps["Blues"]
+    cmap = ListedColormap([base(0.15 + 0.75 * k / max(n - 1, 1)) for k in range(n)]).with_extremes(bad="0.85")
+    fig = Figure(figsize=(7.0, 2.8), dpi=110)
+    ax = fig.subplots()
+    im = ax.imshow(g, origin="lower", aspect="auto", interpolation="nearest", cmap=cmap,
+                   norm=BoundaryNorm(np.arange(n + 1) - 0.5, n), extent=(-0.5, len(days) - 0.5, -0.5, 23.5))  # fmt: skip
+    step = max(1, len(days) // 12)
+    ax.set_xticks(range(0, len(days), step))
+    ax.set_xticklabels([str(int(d)) for d in days[::step]])
+    ax.set_yticks([0, 6, 12, 18, 23])
+    ax.tick_params(labelsize=9)
+    ax.set_xlabel("day of year (days analysed)", fontsize=9)
+    ax.set_ylabel("hour of day (LST)", fontsize=9)
+    ax.set_title(f"shades {ares.shading.variant_set}: the state each hour ({ares.shading.rule})\n(grey: hours not analysed)", fontsize=10)
+    cb = fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02, ticks=range(n))
+    cb.ax.set_yticklabels(ares.states, fontsize=8)
+    fig.tight_layout()
+    return _png(fig)
+
+
+def _glare_png(ares, v: int) -> bytes:
+    """The year's glare map of view ``v``: each occupied hour coloured by its index's class."""
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+    from matplotlib.figure import Figure
+
+    g = ares.glare
+    vals = np.where(ares.occupied, g.index[:, v], np.nan)
+    grid, days = temporal_grid(ares, vals)
+    cmap = ListedColormap([c for _, _, c in _DGP_CLASSES]).with_extremes(bad="0.85")
+    bounds = [0.0] + [b for b, _, _ in _DGP_CLASSES]
+    fig = Figure(figsize=(7.0, 3.0), dpi=110)
+    ax = fig.subplots()
+    im = ax.imshow(grid, origin="lower", aspect="auto", interpolation="nearest", cmap=cmap, norm=BoundaryNorm(bounds, len(_DGP_CLASSES)),
+                   extent=(-0.5, len(days) - 0.5, -0.5, 23.5))  # fmt: skip
+    step = max(1, len(days) // 12)
+    ax.set_xticks(range(0, len(days), step))
+    ax.set_xticklabels([str(int(d)) for d in days[::step]])
+    ax.set_yticks([0, 6, 12, 18, 23])
+    ax.tick_params(labelsize=9)
+    ax.set_xlabel("day of year (days analysed)", fontsize=9)
+    ax.set_ylabel("hour of day (LST)", fontsize=9)
+    ax.set_title(f"view {g.views[v]}: {g.index_name.upper()} every occupied hour\n(grey: hours not occupied or not analysed)", fontsize=10)
+    cb = fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02, ticks=[0.175, 0.375, 0.425, 0.725])
+    cb.ax.set_yticklabels([f"{n} (< {b:.2f})" if b < 1 else f"{n} (≥ 0.45)" for b, n, _ in _DGP_CLASSES], fontsize=8)
+    fig.tight_layout()
+    return _png(fig)
+
+
+def _figure(png: bytes, alt: str) -> str:
+    return f'<figure class="chart">{png_img(png, alt)}<figcaption>{esc(alt)}</figcaption></figure>'
+
+
+def shading_part(ares) -> str:
+    """The shades' part of the section (module docstring); "" without ``[shading]``."""
+    sh = getattr(ares, "shading", None)
+    if sh is None:
+        return ""
+    a, x = ares.annual_spec, ares.extra
+    rule = {"lm83": (f"IES LM-83-12's rule: down when more than {100 * sh.share:g}% of the analysis points get over "
+                     f"{a.ase_lx:g} lx of direct sun with them up"),
+            "glare": f"down when DGP exceeds {sh.dgp_limit:g} at a glare view ({', '.join(sh.views) or 'every view'})",
+            "schedule": "a schedule"}[sh.rule]  # fmt: skip
+    diff = "".join(f"; {esc(p)} passes {100 * t:g}% of the light on it, diffusely" for p, t in sh.diffusers.items())
+    head = (f"<h3>Operable shading: {esc(sh.variant_set)}</h3><p>States {esc(', '.join(ares.states))} (the stage's variants), "
+            f"each traced once; every hour takes the first state that passes {esc(rule)}{diff}.</p>")  # fmt: skip
+    hours = [[st, Raw.of(esc(with_error(*x[(sh.variant_set, f"hours_{st}")], "h")), "n")] for st in ares.states]
+    t1 = table_html(["state", "occupied hours"], hours, "num")
+    names = metric_names(a)
+    rows = []
+    for z in ares.metrics:
+        rows.append([z, Raw.of(esc(with_error(*ares.metrics[z]["sDA"], "%")), "n"), Raw.of(esc(with_error(*x[(z, "sDA_open")], "%")), "n"),
+                     Raw.of(esc(with_error(*ares.metrics[z]["DA"], "%")), "n"), Raw.of(esc(with_error(*x[(z, "DA_open")], "%")), "n"),
+                     Raw.of(esc(with_error(*ares.metrics[z]["ASE"], "%")), "n"), Raw.of(esc(with_error(*x[(z, "ASE_operated")], "%")), "n")])  # fmt: skip
+    t2 = table_html(["zone", f"{names['sDA'][0]} operated", "without shading", f"{names['DA'][0]} operated", "without shading",
+                     f"{names['ASE'][0]} (shades up)", "shades operated"], rows, "num")  # fmt: skip
+    return head + t1 + t2 + _figure(_state_png(ares), f"the state of {sh.variant_set} each hour")
+
+
+def glare_part(ares) -> str:
+    """The views' part of the section (module docstring); "" without glare views."""
+    from simulator.study.annual.glare import EN17037_LEVELS
+
+    g = getattr(ares, "glare", None)
+    if g is None:
+        return ""
+    a, x = ares.annual_spec, ares.extra
+    level = {code: name for code, name, _ in EN17037_LEVELS}
+    idx = g.index_name.upper()
+    head = (f"<h3>Glare over the year</h3><p>{idx} at each glare view every occupied hour, from daylight coefficients "
+            "(the imageless method: the sky, the ground, the shades and the sun seen directly are the sources; every "
+            "surface seen adds to the vertical illuminance at the eye but is never a source). Glare autonomy: the "
+            f"share of occupied hours with {idx} below {a.glare_limit:.2f}. EN 17037 protection from glare: the highest "
+            f"level (high 0.35, medium 0.40, minimum 0.45) whose {idx} is exceeded in at most 5% of the occupied hours.</p>")  # fmt: skip
+    rows = []
+    for v in g.views:
+        ga = Raw.of(esc(with_error(*x[(v, "GA")], "%")), "n")
+        ga_open = [Raw.of(esc(with_error(*x[(v, "GA_open")], "%")), "n")] if (v, "GA_open") in x else []
+        hrs = [Raw.of(esc(with_error(*x[(v, f"hours_above_{b}")], "h")), "n") for b in ("0.35", "0.40", "0.45")]
+        code = int(x[(v, "EN17037_glare")][0])
+        en = Raw.of(esc(level.get(code, "not met") + (" (replicate years disagree)" if x[(v, "EN17037_glare")][1] > 0 else "")),
+                    "pass" if code > 0 else "fail")  # fmt: skip
+        rows.append([v, ga, *ga_open, *hrs, en])
+    cols = ["view", "glare autonomy"] + (["shades open"] if getattr(ares, "shading", None) is not None else [])
+    table = table_html(cols + [f"hours {idx} > 0.35", "> 0.40", "> 0.45", "EN 17037 protection from glare"], rows, "num")
+    figs = "".join(_figure(_glare_png(ares, v), f"the glare map of view {n}: {idx} each occupied hour") for v, n in enumerate(g.views))
+    return head + table + figs
+
+
 def annual_section(ares) -> Section:
     """The section: hours, notes, then every zone's metrics, control and charts."""
     w = ares.weather
@@ -207,7 +340,8 @@ def annual_section(ares) -> Section:
              f"{int(ares.occupied.sum())} occupied, {int(ares.daylight.sum())} with the sun up. "
              "Each figure's ± is its standard error (the standard deviation over replicate years).</p>"
              + ("<ul>" + "".join(f"<li>{esc(n)}</li>" for n in ares.notes) + "</ul>" if ares.notes else ""))  # fmt: skip
-    return Section("annual", "A year of daylight", intro + "".join(_zone_part(ares, z) for z in ares.metrics))
+    return Section("annual", "A year of daylight", intro + "".join(_zone_part(ares, z) for z in ares.metrics) + shading_part(ares)
+                   + glare_part(ares))
 
 
 def _builder(res) -> Section | None:

@@ -9,11 +9,13 @@ illuminance E_n along unit direction s, a sensor at x reads
   (a meter whose axis is within α of the sun reads E_n·V/Ω),
 
 with V(x, s) = 1 when the ray from x along s meets no triangle of the
-stage. Every surface of a stage is opaque (reflectance only: nothing is
-transmitted), so V is exact; the test is Möller–Trumbore's in float64 over
-all triangles, vectorised over sensors. No sampling: this part of every
-hourly reading has no variance, and the sun's direct light (the part
-IES LM-83 ASE counts) is exact.
+stage (Möller–Trumbore's test in float64 over all triangles, vectorised
+over sensors). On a stage with panes, translucent layers or coverage
+(a glazed window, a screen) V is the share the faces on the ray pass, as
+the kernels' shadow rays take it (:mod:`simulator.study.annual.rays`); a
+matte face passes nothing. No sampling: this part of every hourly reading
+has no variance, and the sun's direct light (the part IES LM-83 ASE
+counts) is exact.
 
 References
 ----------
@@ -28,6 +30,7 @@ import math
 import numpy as np
 
 from simulator.scene.model import SensorKind
+from simulator.study.annual.rays import cast, has_surfaces, ray_scene
 
 __all__ = ["visible", "direct_sun"]
 
@@ -76,11 +79,15 @@ def direct_sun(sensors, scene, sun_dir: np.ndarray, sun_lx: np.ndarray) -> np.nd
     half = np.array([s.half_angle for s in sensors], np.float64)
     omega = 2 * math.pi * 2.0 * np.sin(0.5 * half) ** 2  # 2π(1 − cos α) without cancellation
     out = np.zeros((len(sun_dir), len(sensors)))
+    rs = None
+    if has_surfaces(scene):  # panes or layers pass a share of the sun: the rays' product of shares
+        rs = ray_scene(scene)
     for h in np.nonzero(np.asarray(sun_lx) > 0)[0]:
         s = sun_dir[h]
         c = nrm @ s
         w = np.where(cone, np.where((c >= np.cos(half)) & (omega > 0), 1.0 / np.where(omega > 0, omega, 1.0), 0.0), np.maximum(c, 0.0))
         ids = np.nonzero(w > 0)[0]
         if len(ids):
-            out[h, ids] = sun_lx[h] * w[ids] * visible(pos[ids], s, tris)
+            v = visible(pos[ids], s, tris) if rs is None else cast(rs, pos[ids], s).through
+            out[h, ids] = sun_lx[h] * w[ids] * v
     return out

@@ -56,7 +56,7 @@ from simulator.errors import UserError
 from simulator.study.inputs import sky_patches as SP
 from simulator.study.trace.groups import derive_seed
 
-__all__ = ["AnnualResult", "run_annual", "sun_patch_levels", "Coefficients", "hourly", "replicate_years"]
+__all__ = ["AnnualResult", "GlareYear", "run_annual", "sun_patch_levels", "Coefficients", "hourly", "replicate_years"]
 
 #: CIE overcast sky horizontal illuminance the daylight factor is read at (any value: DF is a ratio)
 _DF_SKY_LX = 10000.0
@@ -205,9 +205,31 @@ class AnnualResult:
     zones: dict = field(default_factory=dict)  #: zone -> candidate indices
     scene: object | None = None  #: the stage as read (the report's plans); not in any output file
     annual_spec: object | None = None  #: the study's [annual] table
+    states: list = field(default_factory=list)  #: the shading states' names ([] without [shading])
+    state: np.ndarray | None = None  #: (H,) each hour's state (index into ``states``), None without [shading]
+    shading: object | None = None  #: the study's [shading] table
+    extra: dict = field(default_factory=dict)  #: (zone, view or window group, metric) -> (value, stderr) beyond a plain year's
+    glare: "GlareYear | None" = None  #: the views' hourly E_v and index, None without glare views
+    traces: dict = field(default_factory=dict)  #: state -> {purpose: trace groups}
+    detail: dict = field(default_factory=dict)  #: "states", "plans", "years" (ShadeState, StatePlan, StateYear): for checks, in no file
+
+
+@dataclass
+class GlareYear:
+    """The glare views' hours with the chosen shading states: E_v (lx) and DGP (or DGPs), each (H, V) with its standard error."""
+
+    views: list
+    index_name: str  #: "dgp" or "dgps"
+    ev: np.ndarray
+    ev_se: np.ndarray
+    index: np.ndarray
+    index_se: np.ndarray
+    metric_defs: dict
 
 
 def _coefficients(specs_dir, specs_ind, specs_lamp, results, n_s: int, lamp_names: list) -> Coefficients:
+    """The candidates' coefficients (the first ``n_s`` sensors of the sky's chunks; a diffusing shade's outer
+    sensors after them are read by :func:`simulator.study.annual.plan.read_coefficients`)."""
     from simulator.study.trace.chunks import readings_of
 
     g = SP.N_PATCHES + 1
@@ -218,9 +240,14 @@ def _coefficients(specs_dir, specs_ind, specs_lamp, results, n_s: int, lamp_name
         for s in specs:
             gr = readings_of(results[s.id])
             ids = np.asarray(s.sensor_ids)
-            mean[ids] = gr.mean[:, :, 1].T
-            cov[ids] = gr.cov[:, 1]
-            out.samples[ids] += gr.samples[0]
+            keep = ids < n_s
+            if not keep.all():
+                gm, gc, gs, ids = gr.mean[:, keep], gr.cov[keep], gr.samples[0][keep], ids[keep]
+            else:
+                gm, gc, gs = gr.mean, gr.cov, gr.samples[0]
+            mean[ids] = gm[:, :, 1].T
+            cov[ids] = gc[:, 1]
+            out.samples[ids] += gs
     return out
 
 
@@ -238,22 +265,222 @@ def _control_pools(study, cands, names_index: dict, label: str) -> list[list[int
     return out
 
 
+def _select(arrays: list, choice: np.ndarray):
+    """Row h of ``arrays[choice[h]]`` for every h; the array itself where one state holds every hour."""
+    ks = np.unique(choice)
+    if len(ks) == 1:
+        return arrays[int(ks[0])]
+    out = np.array(arrays[0], copy=True)
+    for k in ks[ks > 0]:
+        m = choice == k
+        out[m] = arrays[int(k)][m]
+    return out
+
+
+def _redraw(mean: np.ndarray, root: np.ndarray, rng) -> np.ndarray:
+    """``mean`` (N, G) redrawn from N(mean, A·Aᵀ) per row, ``root`` the (N, G, G) A's."""
+    if mean.size == 0:
+        return mean
+    return mean + np.einsum("ngk,nk->ng", root, rng.standard_normal(mean.shape))
+
+
+@dataclass
+class StateYear:
+    """One shading state's year: its coefficients and hourly readings (H hours, S candidates, C cells, V views)."""
+
+    co: Coefficients
+    sun: np.ndarray  #: (H, S) exact direct sun
+    mean: np.ndarray  #: (H, S)
+    stderr: np.ndarray
+    shade: object = None  #: simulator.study.annual.plan.ShadeCoefficients, or None
+    outer_sun: np.ndarray | None = None  #: (H, C) the cells' outer faces' direct sun
+    lum_cells: np.ndarray | None = None  #: (H, C) L_c(h), cd/m²
+    views: list = field(default_factory=list)  #: ViewSky per view
+    suns: list = field(default_factory=list)  #: SunTerms per view
+    ev: np.ndarray | None = None  #: (H, V) E_v
+    ev_se: np.ndarray | None = None
+    g: np.ndarray | None = None  #: (H, V) Σ L²ω/P²
+    index: np.ndarray | None = None  #: (H, V) DGP (or DGPs)
+    index_se: np.ndarray | None = None
+    eye_sun: np.ndarray | None = None  #: (H, V) traced bins: the eyes' interreflected sun
+    eye_sun_var: np.ndarray | None = None
+    eye_bins: np.ndarray | None = None  #: (V, B) traced bins: the eyes' interreflected sun per bin, for the authored sun
+    eye_bins_var: np.ndarray | None = None
+
+
+def _cells_luminance(sh, plan, d, q_patch, outer_sun, stderr: bool = True):
+    """L_c(h) = τ·E_c(h)/π of every cell (H, C) and, with ``stderr``, its variance."""
+    dq = d + q_patch
+    e = d @ sh.outer_dir.T + dq @ sh.outer_ind.T + outer_sun
+    lum = e * (plan.tau / math.pi)
+    if not stderr:
+        return lum, None
+    var = np.zeros_like(e)
+    for c in range(e.shape[1]):
+        var[:, c] = np.sum((d @ sh.outer_dir_cov[c]) * d, axis=1) + np.sum((dq @ sh.outer_ind_cov[c]) * dq, axis=1)
+    return lum, var * (plan.tau / math.pi) ** 2
+
+
+def _state_year(plan, study, results, sensors, lamp_groups, d, q, q_patch, l_dome, cone, sun_bin, sun_scale, bin_suns,
+                e_auth, skies, views, timing: dict) -> StateYear:  # fmt: skip
+    """Coefficients and hourly readings of one state (see :mod:`simulator.study.annual.plan`)."""
+    from simulator.study.annual.glare import dgp_hourly, dgps_hourly, glare_term, sun_terms, view_sky
+    from simulator.study.annual.plan import SKY, ShadeCoefficients, read_coefficients
+    from simulator.study.annual.rays import ray_scene
+    from simulator.study.annual.sunlight import direct_sun
+    from simulator.study.inputs.sun import sun_direction
+    from simulator.study.trace.chunks import readings_of
+
+    st = plan.state
+    n_s = len(sensors)
+    co = _coefficients(plan.sky_dir, plan.sky_ind, plan.lamps, results, n_s, lamp_groups)
+    if sun_bin is not None:
+        co.sun = np.zeros((n_s, len(plan.sun_bins)))
+        co.sun_var = np.zeros_like(co.sun)
+        eye_sun = np.zeros((len(plan.eyes), len(plan.sun_bins)))
+        eye_sun_var = np.zeros_like(eye_sun)
+        for b, lst in enumerate(plan.sun_bins):
+            for s_ in lst:
+                gr = readings_of(results[s_.id])
+                ids = np.asarray(s_.sensor_ids)
+                room = ids < n_s  # the glare views' eyes follow the candidates
+                co.sun[ids[room], b] = gr.mean[0, room, 1]
+                co.sun_var[ids[room], b] = gr.stderr[0, room, 1] ** 2
+                eye_sun[ids[~room] - n_s, b] = gr.mean[0, ~room, 1]
+                eye_sun_var[ids[~room] - n_s, b] = gr.stderr[0, ~room, 1] ** 2
+        # the passes trace the whole sun; its exact direct part at the bin's own sun comes off (it is added per hour)
+        bin_dirs = np.stack([sun_direction(az, el) for az, el in bin_suns])
+        co.sun -= direct_sun(sensors, st.scene, bin_dirs, np.full(len(bin_suns), e_auth)).T
+        if plan.eyes:
+            eye_sun -= direct_sun(plan.eyes, st.scene, bin_dirs, np.full(len(bin_suns), e_auth)).T
+    c_sun = time.process_time()
+    sun = direct_sun(sensors, st.scene, skies.sun_dir, skies.dni_lx)
+    timing["sun_shadow_rays"] = timing.get("sun_shadow_rays", 0.0) + time.process_time() - c_sun
+    mean, stderr = hourly(co, d, q, sun, sun_bin=sun_bin, sun_scale=sun_scale, cone=cone if sun_bin is None else None)
+    y = StateYear(co, sun, mean, stderr)
+    n_c = len(plan.cells)
+    n_slots = SKY + n_c
+    if not n_c and not views:
+        return y
+    out_dir_m, out_dir_c, _ = read_coefficients(plan.sky_dir, results, n_s + len(plan.outer), SKY)
+    out_ind_m, out_ind_c, _ = read_coefficients(plan.sky_ind, results, n_s + len(plan.outer), SKY)
+    sh_m, sh_c, _ = read_coefficients(plan.shade, results, n_s, n_c)
+    eye_m, eye_c, _ = read_coefficients(plan.glare, results, len(plan.eyes), n_slots)
+    y.shade = ShadeCoefficients(out_dir_m[n_s:], out_dir_c[n_s:], out_ind_m[n_s:], out_ind_c[n_s:], sh_m, sh_c, eye_m, eye_c)
+    lum_c = np.zeros((len(d), 0))
+    if n_c:
+        y.outer_sun = direct_sun(plan.outer, st.scene, skies.sun_dir, skies.dni_lx)
+        lum_c, lum_var = _cells_luminance(y.shade, plan, d, q_patch, y.outer_sun)
+        y.lum_cells = lum_c
+        x = lum_c / plan.l_auth
+        x_var = lum_var / plan.l_auth**2
+        var = stderr**2 + x_var @ (sh_m**2).T
+        for s in range(n_s):
+            var[:, s] += np.sum((x @ sh_c[s]) * x, axis=1)
+        y.mean = mean + x @ sh_m.T
+        y.stderr = np.sqrt(np.maximum(var, 0.0))
+    if views:
+        c_view = time.process_time()
+        rs = ray_scene(st.scene)
+        base_slot, cell_base = SKY, []
+        for dd in st.diffusers:
+            cell_base.append(base_slot)
+            base_slot += dd.n_cells
+        lum = np.concatenate([d * l_dome, lum_c], axis=1)
+        traced = sun_bin is not None  # the eyes' interreflected sun from the traced bins, else from the patches
+        xe = np.concatenate([d + (q if traced else q_patch), lum_c / plan.l_auth if n_c else lum_c], axis=1)
+        n_h, n_v = len(d), len(views)
+        if traced:
+            y.eye_bins, y.eye_bins_var = eye_sun, eye_sun_var
+            y.eye_sun, y.eye_sun_var = _bins_hourly(eye_sun, sun_bin, sun_scale), _bins_hourly(eye_sun_var, sun_bin, sun_scale**2)
+        y.ev, y.ev_se, y.g = np.zeros((n_h, n_v)), np.zeros((n_h, n_v)), np.zeros((n_h, n_v))
+        y.index, y.index_se = np.zeros((n_h, n_v)), np.zeros((n_h, n_v))
+        for v, view in enumerate(views):
+            vs = view_sky(view, rs, st.diffusers, cell_base, n_slots)
+            su = sun_terms(vs, rs, skies.sun_dir, skies.dni_lx)
+            y.views.append(vs)
+            y.suns.append(su)
+            y.ev[:, v] = lum @ vs.a + xe @ eye_m[v] + su.ev + (y.eye_sun[:, v] if traced else 0.0)
+            y.ev_se[:, v] = np.sqrt(np.maximum(np.sum((xe @ eye_c[v]) * xe, axis=1) + (y.eye_sun_var[:, v] if traced else 0.0), 0.0))
+            y.g[:, v] = glare_term(vs, lum, su)
+        _index_of(y, views, study.annual.glare_index)
+        timing["views"] = timing.get("views", 0.0) + time.process_time() - c_view
+    return y
+
+
+def _bins_hourly(per_bin: np.ndarray, sun_bin: np.ndarray, scale: np.ndarray) -> np.ndarray:
+    """(V, B) values per sun bin → (H, V) per hour: the hour's bin × its scale (0 where the sun is down)."""
+    out = np.zeros((len(sun_bin), per_bin.shape[0]))
+    on = sun_bin >= 0
+    out[on] = per_bin[:, sun_bin[on]].T * scale[on, None]
+    return out
+
+
+def _index_of(y: StateYear, views: list, which: str, ev: np.ndarray | None = None):
+    """DGP (or DGPs) of every hour and view from ``ev`` (default ``y.ev``) and ``y.g``: sets ``y.index``/``index_se``
+    when ``ev`` is None, else returns the index."""
+    from simulator.glare.sources import GlareSettings
+    from simulator.study.annual.glare import dgp_hourly, dgps_hourly
+
+    e = y.ev if ev is None else ev
+    out = np.zeros_like(e)
+    slope = np.zeros_like(e)
+    for v, view in enumerate(views):
+        s = view.glare if view.glare is not None else GlareSettings()
+        out[:, v], slope[:, v] = dgps_hourly(e[:, v]) if which == "dgps" else dgp_hourly(e[:, v], y.g[:, v], s.low_light)
+    if ev is not None:
+        return out
+    y.index, y.index_se = out, np.abs(slope) * y.ev_se
+    return None
+
+
+def _replicate_state(y: StateYear, plan, rc: Coefficients, roots: dict, rng, d, q, q_patch, l_dome, sun_bin, sun_scale, cone,
+                     views, which: str):  # fmt: skip
+    """One replicate year of a state: the candidates' readings (H, S) and the views' index (H, V) or None."""
+    e_r, _ = hourly(rc, d, q, y.sun, stderr=False, sun_bin=sun_bin, sun_scale=sun_scale, cone=cone if sun_bin is None else None)
+    if y.shade is None:
+        return e_r, None
+    sh = y.shade
+    lum_c = np.zeros((len(d), 0))
+    if y.lum_cells is not None:
+        from types import SimpleNamespace
+
+        o = SimpleNamespace(outer_dir=_redraw(sh.outer_dir, roots["outer_dir"], rng),
+                            outer_ind=_redraw(sh.outer_ind, roots["outer_ind"], rng))  # fmt: skip
+        lum_c, _ = _cells_luminance(o, plan, d, q_patch, y.outer_sun, stderr=False)
+        e_r = e_r + (lum_c / plan.l_auth) @ _redraw(sh.shade, roots["shade"], rng).T
+    if not views:
+        return e_r, None
+    eye = _redraw(sh.eye, roots["eye"], rng)
+    lum = np.concatenate([d * l_dome, lum_c], axis=1)
+    traced = y.eye_sun is not None
+    xe = np.concatenate([d + (q if traced else q_patch), lum_c / plan.l_auth if lum_c.shape[1] else lum_c], axis=1)
+    ev = np.stack([lum @ vs.a + xe @ eye[v] + su.ev for v, (vs, su) in enumerate(zip(y.views, y.suns))], axis=1)
+    if traced:  # each bin's traced sun redrawn once for the whole year (its hours share it)
+        bins = y.eye_bins + np.sqrt(np.maximum(y.eye_bins_var, 0.0)) * rng.standard_normal(y.eye_bins.shape)
+        ev = ev + _bins_hourly(bins, sun_bin, sun_scale)
+    return e_r, _index_of(y, views, which, ev)
+
+
 def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None = None, workers: int | None = None,
                scheduler: str | None = None) -> AnnualResult:  # fmt: skip
     """Run (or resume) the ``[annual]`` part of a study; outputs are written by :mod:`simulator.study.annual.outputs`."""
     from simulator.scene.model import LightKind, SensorKind
     from simulator.scene.usd import load_stage
     from simulator.study.annual import control as CT
+    from simulator.study.annual import shading as SH
+    from simulator.study.annual.glare import GLARE_METRICS, annual_views, glare_metrics
+    from simulator.study.annual.plan import plan_state
+    from simulator.study.annual.rays import textured_faces
+    from simulator.study.figures.glare_views import views_of
     from simulator.study.inputs.candidates import build_candidates, candidate_warnings
-    from simulator.study.trace.chunks import ChunkStore, make_chunks
+    from simulator.study.trace.chunks import ChunkStore
     from simulator.study.annual.climate import daylight_mask, hour_of_day, read_weather
     from simulator.study.trace.distributed import choose_mode, run_chunks
     from simulator.study.annual.metrics import zone_metrics
     from simulator.study.annual.perez import hour_skies
     from simulator.study.runner import _sim_dict, zone_members
-    from simulator.study.inputs.scenarios import TraceGroup, check_split_groups, resolve_groups
-    from simulator.study.inputs.sun import sun_direction
-    from simulator.study.annual.sunlight import direct_sun
+    from simulator.study.inputs.scenarios import check_split_groups, resolve_groups
 
     a = study.annual
     label = str(path)
@@ -287,6 +514,34 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
     if any(l.kind == LightKind.DISTANT for l in base.lights):
         notes.append("the stage's DistantLight is not used: each hour's sun comes from the weather file")
 
+    # shading states (each its own stage) and the glare views read every hour
+    sh = study.shading
+    states = SH.shading_states(study, stage, base, label)
+    all_views = views_of(base)
+    views, skipped = annual_views(all_views)
+    for w in skipped:
+        log(f"warning: {w}")
+    notes += [f"warning: {w}" for w in skipped]
+    judged = list(range(len(views)))
+    if sh is not None and sh.rule == "glare":
+        if not views:
+            raise UserError(f"{label}: shading.rule: \"glare\" needs glare views on the stage (prims with "
+                            "probesim:sensor:kind = \"glare\" and an absolute evalglare -b); it has none")  # fmt: skip
+        names, every = [v.name for v in views], [v.name for v in all_views]
+        for j, n in enumerate(sh.views):
+            if n in every and n not in names:
+                raise UserError(f"{label}: shading.views[{j}]: glare view {n!r} has a relative evalglare -b (a multiple "
+                                "of the task or mean luminance), which a year without pictures cannot read")  # fmt: skip
+            if n not in names:
+                raise UserError(f"{label}: shading.views[{j}]: no glare view named {n!r} on the stage (it has: {', '.join(every)})")
+        judged = [names.index(n) for n in sh.views] if sh.views else judged
+    if any(textured_faces(st.scene) for st in states):
+        notes.append("the host's rays (direct sun, the views' sky) read an opacity texture at its mean coverage")
+    if any(st.diffusers for st in states):
+        notes.append("diffusing shades: " + "; ".join(sorted({f"{dd.prim} (transmittance {dd.transmittance:g}, "
+                                                              f"{dd.cells[0]} x {dd.cells[1]} cells)" for st in states
+                                                              for dd in st.diffusers})))  # fmt: skip
+
     # hours: daylight (sun above the horizon at the centre, or diffuse light) and occupied hours
     hod = hour_of_day(weather)
     occ_all = (hod >= a.occupied_h[0]) & (hod < a.occupied_h[1])
@@ -296,15 +551,11 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
     daylight = weather.sun_elevation_deg[rows] > 0.0
     t_weather = time.perf_counter()
 
-    # traces: the sky's direct and interreflected coefficients, the controlled lamps
+    # traces: per state, the sky's direct and interreflected coefficients, the controlled lamps, the shades, the eyes
     sim = _sim_dict(study)
     lamp_groups = sorted({g for c in study.control for g in c.groups}, key=list(groups).index)
-    tgs = [(TraceGroup("annual;sky;direct", {}, None, [], [a.sky_group]), {**sim, "component": "direct"}),
-           (TraceGroup("annual;sky;indirect", {}, None, [], [a.sky_group]), {**sim, "component": "indirect"})]  # fmt: skip
-    if lamp_groups:
-        tgs.append((TraceGroup("annual;lamps", {}, None, [], lamp_groups), sim))
-    sun_bin = sun_scale = None
-    n_fixed = len(tgs)
+    sun_bin = sun_scale = bin_suns = None
+    e_auth = 0.0
     if a.sun_indirect == "traced":
         distant = [l for l in base.lights if l.kind == LightKind.DISTANT]
         if len(distant) != 1 or groups[a.sun_group] != [distant[0].name]:
@@ -315,17 +566,15 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
         lit_h = skies.dni_lx > 0
         sun_bin, bin_suns = sun_bins(skies.sun_dir, lit_h, a.sun_bin_deg)
         sun_scale = skies.dni_lx / e_auth
-        for az, el in bin_suns:
-            tgs.append((TraceGroup(f"annual;sun;{az:.6f},{el:.6f}", {}, (az, el), [], [a.sun_group]), sim))
         notes.append(f"interreflected sun traced at {len(bin_suns)} sun positions (bins of {a.sun_bin_deg:g} deg)")
     block = study.compute.sensor_block
     if block == "auto":  # from the study's size alone, as the scenario runner does (simulator.study.trace.blocks)
         from simulator.study.trace.blocks import auto_block
 
         block = auto_block(len(sensors), study.simulation.samples)
-    spec_lists = [make_chunks([tg], sensors, groups, stage, study.light_units, sd, study.seed, block, sky_split)
-                  for tg, sd in tgs]  # fmt: skip
-    specs = [s for lst in spec_lists for s in lst]
+    plans = [plan_state(st, study, sensors, groups, stage, sim, block, tuple(sky_split), lamp_groups, bin_suns, views, dome)
+             for st in states]  # fmt: skip
+    specs = [s for p in plans for s in p.specs()]
     store = ChunkStore(out_dir)
     results = {s.id: r for s in specs if (r := store.load(s.id)) is not None}
     todo = [s for s in specs if s.id not in results]
@@ -337,31 +586,18 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
         results[res["id"]] = res
         computed += 1
     t_traced = time.perf_counter()
-    co = _coefficients(spec_lists[0], spec_lists[1], spec_lists[2] if lamp_groups else [], results, len(sensors), lamp_groups)
-    if sun_bin is not None:
-        from simulator.study.trace.chunks import readings_of
-
-        co.sun = np.zeros((len(sensors), len(spec_lists) - n_fixed))
-        co.sun_var = np.zeros_like(co.sun)
-        for b, lst in enumerate(spec_lists[n_fixed:]):
-            for s_ in lst:
-                gr = readings_of(results[s_.id])
-                ids = np.asarray(s_.sensor_ids)
-                co.sun[ids, b] = gr.mean[0, :, 1]
-                co.sun_var[ids, b] = gr.stderr[0, :, 1] ** 2
-        # the passes trace the whole sun; its exact direct part at the bin's own sun comes off (it is added per hour)
-        bin_dirs = np.stack([sun_direction(az, el) for az, el in bin_suns])
-        co.sun -= direct_sun(sensors, base, bin_dirs, np.full(len(bin_suns), e_auth)).T
     trace_cpu = sum(float(results[s.id].get("trace_cpu_s", 0.0)) for s in specs)
 
-    # every hour
+    # every hour, every state
     d = sky_levels_of(skies, l_dome, a.ground_reflectance)
-    q = sun_patch_levels(skies.sun_dir, skies.dni_lx, a.sun_patches, l_dome) if sun_bin is None else np.zeros_like(d)
-    c_sun = time.process_time()
-    sun = direct_sun(sensors, base, skies.sun_dir, skies.dni_lx)
+    q_patch = sun_patch_levels(skies.sun_dir, skies.dni_lx, a.sun_patches, l_dome)
+    q = q_patch if sun_bin is None else np.zeros_like(d)
     cone = np.array([c.sensor.kind == SensorKind.RADIANCE for c in cands])
-    c_sun = time.process_time() - c_sun
-    mean, stderr = hourly(co, d, q, sun, sun_bin=sun_bin, sun_scale=sun_scale, cone=cone if sun_bin is None else None)
+    timing: dict = {}
+    years = [_state_year(p, study, results, sensors, lamp_groups, d, q, q_patch, l_dome, cone, sun_bin, sun_scale, bin_suns,
+                         e_auth, skies, views, timing) for p in plans]  # fmt: skip
+    co = years[0].co
+    sun = years[0].sun
     ov = np.zeros(SP.N_PATCHES + 1)
     ov[: SP.N_PATCHES] = SP.sky_weights("overcast", None, _DF_SKY_LX / l_dome)
 
@@ -370,43 +606,110 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
 
     df = df_of(co)
     df_se = np.sqrt(np.maximum(np.einsum("p,spq,q->s", ov, co.dir_cov + co.ind_cov, ov), 0.0)) / _DF_SKY_LX
+
+    # each hour's state
+    analysis = np.unique(np.concatenate([zones[z] for z in (sh.zones if sh is not None and sh.zones else zones)])) if zones else None
+    wc = weather.centre[rows]
+    month = np.asarray(wc.month)
+    hod_rows = hod[rows]
+
+    def choose(sun_by_state, index_by_state):
+        if sh is None or len(states) == 1:
+            return np.zeros(len(rows), np.int64)
+        if sh.rule == "lm83":
+            return SH.lm83_choice([s_[:, analysis] for s_ in sun_by_state], a.ase_lx, sh.share)
+        if sh.rule == "glare":
+            return SH.glare_choice([g_[:, judged] for g_ in index_by_state], sh.dgp_limit)
+        return SH.schedule_choice(list(sh.states), sh.schedule, month, hod_rows)
+
+    choice = choose([y.sun for y in years], [y.index for y in years])
+    mean = _select([y.mean for y in years], choice)
+    stderr = _select([y.stderr for y in years], choice)
     t_hourly = time.perf_counter()
 
     # metrics and control, on the estimate and on each replicate year
-    def figures(e: np.ndarray, c: Coefficients, dfs: np.ndarray):
+    def figures(e: np.ndarray, cs: list, ch: np.ndarray, dfs: np.ndarray):
         m = {z: zone_metrics(e[:, ids], sun[:, ids], occupied, daylight, dfs[ids], a, float(a.step_h)) for z, ids in zones.items()}
+        ch_occ = ch[occupied]
+        one = np.unique(ch_occ)
+        one = int(one[0]) if len(one) == 1 else None
         ctl = []
         for ci, spec in enumerate(study.control):
             ids = zones[spec.zone]
             target = float(spec.target_lx if spec.target_lx is not None else dict(study.zone[[z.name for z in study.zone].index(spec.zone)].targets)["mean"])
             gsel = [lamp_groups.index(g) for g in spec.groups]
-            e_zone = float(np.mean(c.lamp[ids][:, gsel].sum(axis=1)))
+            e_zones = [float(np.mean(c.lamp[ids][:, gsel].sum(axis=1))) for c in cs]
+            e_zone = e_zones[one] if one is not None else np.asarray(e_zones)[ch_occ]
             day = e[occupied][:, ids].mean(axis=1)
             d_ov = float(np.mean(dfs[ids])) * _DF_SKY_LX
             per = []
             for k in pools[ci]:
                 s_day = e[occupied][:, k]
-                s_lamp = float(c.lamp[k, gsel].sum())
+                s_lamps = [float(c.lamp[k, gsel].sum()) for c in cs]
+                s_lamp = s_lamps[one] if one is not None else np.asarray(s_lamps)[ch_occ]
                 s_ov = float(dfs[k]) * _DF_SKY_LX
                 gain = d_ov / s_ov if s_ov > 0 else 0.0
                 u = CT.levels(spec.model, s_day, s_lamp, e_zone, target, spec.min_level, spec.deadband, gain)
                 per.append(CT.outcome(u, day, e_zone, target))
-            ctl.append((target, e_zone, per))
+            ctl.append((target, e_zones[0], per))
         return m, ctl
 
-    m0, ctl0 = figures(mean, co, df)
+    def extras(e_by_state: list, ch: np.ndarray, idx_by_state: list):
+        """The rows beyond a plain year's: the zones with the shades open all year and the operated ASE, the
+        hours in each state, the views' glare figures."""
+        out = {}
+        if sh is not None:
+            sun_ch = _select([y.sun for y in years], ch)
+            for z, ids in zones.items():
+                mo = zone_metrics(e_by_state[0][:, ids], sun[:, ids], occupied, daylight, df[ids], a, float(a.step_h))
+                mc = zone_metrics(e_by_state[0][:, ids], sun_ch[:, ids], occupied, daylight, df[ids], a, float(a.step_h))
+                out[(z, "DA_open")], out[(z, "sDA_open")], out[(z, "ASE_operated")] = mo["DA"], mo["sDA"], mc["ASE"]
+            hrs = SH.state_hours(ch, occupied, len(states), float(a.step_h))
+            for k, st in enumerate(states):
+                out[(sh.variant_set, f"hours_{st.name}")] = float(hrs[k])
+        if views:
+            idx = _select(idx_by_state, ch)
+            for v, view in enumerate(views):
+                for key, val in glare_metrics(idx[:, v], occupied, a.glare_limit, float(a.step_h)).items():
+                    out[(view.name, key)] = val
+                if sh is not None:
+                    out[(view.name, "GA_open")] = glare_metrics(idx_by_state[0][:, v], occupied, a.glare_limit, float(a.step_h))["GA"]
+        return out
+
+    m0, ctl0 = figures(mean, [y.co for y in years], choice, df)
+    x0 = extras([y.mean for y in years], choice, [y.index for y in years])
     reps_m = {z: {k: [] for k in m0[z]} for z in m0}
+    reps_x = {k: [] for k in x0}
     reps_c = [[[] for _ in pools[i]] for i in range(len(study.control))]
-    for rc in replicate_years(co, a.replicates, derive_seed(study.seed, "annual", "replicates")):
-        e_r, _ = hourly(rc, d, q, sun, stderr=False, sun_bin=sun_bin, sun_scale=sun_scale, cone=cone if sun_bin is None else None)
-        m_r, c_r = figures(e_r, rc, df_of(rc))
+    gens = [replicate_years(y.co, a.replicates, derive_seed(study.seed, "annual", "replicates", *([st.name] if k else [])))
+            for k, (y, st) in enumerate(zip(years, states))]  # fmt: skip
+    roots = [{k: _sqrt_psd(v) for k, v in (("outer_dir", y.shade.outer_dir_cov), ("outer_ind", y.shade.outer_ind_cov),
+                                          ("shade", y.shade.shade_cov), ("eye", y.shade.eye_cov))} if y.shade is not None else {}
+             for y in years]  # fmt: skip
+    rngs = [np.random.default_rng(derive_seed(study.seed, "annual", "replicates", "shades and views", st.name)) for st in states]
+    idx_reps = []
+    for _ in range(a.replicates):
+        rcs = [next(g) for g in gens]
+        e_rs, i_rs = [], []
+        for k, (y, p) in enumerate(zip(years, plans)):
+            e_k, i_k = _replicate_state(y, p, rcs[k], roots[k], rngs[k], d, q, q_patch, l_dome, sun_bin, sun_scale, cone, views,
+                                        a.glare_index)  # fmt: skip
+            e_rs.append(e_k)
+            i_rs.append(i_k)
+        ch_r = choose([y.sun for y in years], i_rs) if (sh is not None and sh.rule == "glare") else choice
+        e_r = _select(e_rs, ch_r)
+        m_r, c_r = figures(e_r, rcs, ch_r, df_of(rcs[0]))
         for z in m_r:
             for k, v in m_r[z].items():
                 reps_m[z][k].append(v)
         for i, (_, _, per) in enumerate(c_r):
             for j, o in enumerate(per):
                 reps_c[i][j].append((o.relative_energy, o.hours_below, o.score))
+        if x0:
+            for k, v in extras(e_rs, ch_r, i_rs).items():
+                reps_x[k].append(v)
     metrics = {z: {k: (v, float(np.std(reps_m[z][k], ddof=1))) for k, v in m0[z].items()} for z in m0}
+    extra = {k: (v, float(np.std(reps_x[k], ddof=1))) for k, v in x0.items()}
     controls = []
     for i, spec in enumerate(study.control):
         target, e_zone, per = ctl0[i]
@@ -430,11 +733,19 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
                          "runner_up": None if runner is None else rows_c[runner]["photosensor"], "lead": lead, "lead_stderr": lead_se,
                          "separable": runner is None or (lead is not None and lead > 2.0 * (lead_se or 0.0)),
                          "candidates": rows_c, "level": per[best].level})  # fmt: skip
+    glare = None
+    if views:
+        glare = GlareYear([v.name for v in views], a.glare_index, _select([y.ev for y in years], choice),
+                          _select([y.ev_se for y in years], choice), _select([y.index for y in years], choice),
+                          _select([y.index_se for y in years], choice), GLARE_METRICS)  # fmt: skip
     t_end = time.perf_counter()
     return AnnualResult(weather, rows, occupied, daylight, skies, cands, mean, stderr, sun, df, df_se, metrics, controls,
                         timings_s={"weather_and_skies": t_weather - t0, "chunks": t_traced - t_weather, "hourly": t_hourly - t_traced,
                                    "metrics_and_control": t_end - t_hourly, "total": t_end - t0},
-                        cpu_s={"total": time.process_time() - c0, "trace_in_chunks": trace_cpu, "sun_shadow_rays": c_sun},
+                        cpu_s={"total": time.process_time() - c0, "trace_in_chunks": trace_cpu,
+                               "sun_shadow_rays": timing.get("sun_shadow_rays", 0.0), **({"views": timing["views"]} if "views" in timing else {})},
                         notes=notes, chunks_total=len(specs), chunks_computed=computed, coefficients=co, sky_levels=d,
-                        zones=zones, scene=base, annual_spec=a)  # fmt: skip
-
+                        zones=zones, scene=base, annual_spec=a, states=[st.name for st in states] if sh is not None else [],
+                        state=choice if sh is not None else None, shading=sh, extra=extra, glare=glare,
+                        traces={(st.name or "stage"): p.traces() for st, p in zip(states, plans)},
+                        detail={"states": states, "plans": plans, "years": years, "dome": dome})  # fmt: skip

@@ -63,6 +63,7 @@ class ChunkSpec:
     levels: tuple[tuple[tuple[str, float], ...], ...] = ()  #: the trace group's dimming vectors (adaptive targets)
     threads: int = 0
     sky_split: tuple[str, ...] = ()  #: groups whose sky is traced as Tregenza patches
+    extra_lights: tuple = ()  #: lights added to the stage's (a diffusing shade's cells, :mod:`simulator.study.annual.diffusers`)
 
 
 def atomic_write(path: Path, data: bytes) -> None:
@@ -94,11 +95,14 @@ def _sensor_text(s: Sensor) -> str:
 
 
 def make_chunks(trace_groups, sensors: list[Sensor], groups: dict[str, list[str]], stage: Path, light_units: str,
-                sim: dict, seed: int, block: int, sky_split: tuple[str, ...] = ()) -> list[ChunkSpec]:  # fmt: skip
+                sim: dict, seed: int, block: int, sky_split: tuple[str, ...] = (), extra_lights: tuple = (),
+                extra_ident: dict | None = None) -> list[ChunkSpec]:  # fmt: skip
     """One chunk per (trace group, block of ``block`` sensors), in a fixed order.
 
     ``sky_split``: groups traced as sky patches; their slots' levels
-    (``group/pNNN``, ``group/ground``) join the dimming vectors."""
+    (``group/pNNN``, ``group/ground``) join the dimming vectors.
+    ``extra_lights``: lights added to the stage in every chunk (groups may name them).
+    ``extra_ident``: more that the chunks' numbers depend on (their ids hash it; the seeds do not)."""
     stage_sha = hashlib.sha256(stage.read_bytes()).hexdigest()
     out = []
     for tg in trace_groups:
@@ -117,9 +121,12 @@ def make_chunks(trace_groups, sensors: list[Sensor], groups: dict[str, list[str]
             }  # fmt: skip
             if split:
                 ident["sky_split"] = split
+            if extra_ident:
+                ident.update(extra_ident)
             cid = hashlib.sha256(json.dumps(ident, sort_keys=True).encode()).hexdigest()[:20]
             out.append(ChunkSpec(cid, tg.key, b, str(stage), light_units, tuple(sorted(tg.variants.items())), tg.sun, gl, ids,
-                                 tuple(sensors[i] for i in ids), sim, cseed, levels, sky_split=split))  # fmt: skip
+                                 tuple(sensors[i] for i in ids), sim, cseed, levels, sky_split=split,
+                                 extra_lights=tuple(extra_lights)))  # fmt: skip
     return out
 
 
@@ -131,8 +138,10 @@ def _stage(stage: str, light_units: str, variants: tuple):
 
 
 def chunk_scene(spec: ChunkSpec):
-    """The scene of a chunk's trace group: the stage with its variants, the sun turned to ``spec.sun``."""
+    """The scene of a chunk's trace group: the stage with its variants and extra lights, the sun turned to ``spec.sun``."""
     scene = _stage(spec.stage, spec.light_units, spec.variants)
+    if spec.extra_lights:
+        scene = replace(scene, lights=list(scene.lights) + list(spec.extra_lights))
     if spec.sun is None:
         return scene
     frame = sun_frame(sun_direction(*spec.sun))
