@@ -328,6 +328,37 @@ def test_dome_run_reads_the_model_through_its_optics(tmp_path):
             assert row[k] == v, k
 
 
+def test_patch_names_a_model_and_reads_its_area_average(tmp_path):
+    """A `[[sensor]]` patch names a model as an irradiance sensor does (a photometer head's area average):
+    under the dome stage's uniform sky (L = 1 cd/m², D65) a 0.4 m × 0.2 m class B patch reads
+    L·2π/(n + 1)/F_D65 at every point, so its optics column is that within 4 standard errors + 1e-6; its
+    ideal columns (irradiance and flux) are the bytes of the same patch without the model; a VEML7700
+    patch at gain 1/8 and 100 ms gets the device columns at that setting."""
+    from simulator.config.loader import load_config
+    from simulator.pipeline import run
+
+    def cfg(extra: str, name: str) -> Path:
+        p = tmp_path / name
+        p.write_text(f'stage = "{ROOT / "stages" / "dome.usda"}"\n[simulation]\nsamples = 256\nseed = 3\n'
+                     '[[sensor]]\nname = "p"\nkind = "patch"\nposition = [0, 0, 0]\nnormal = [0, 0, 1]\n'
+                     f'size = [0.4, 0.2]\nup = [0, 1, 0]\n{extra}\n[output]\ncsv = "{tmp_path / name}.csv"\n')
+        return p
+
+    (row,) = _rows(run(load_config(cfg('model = "class_b_head"', "m.toml")), log=lambda m: None).csv_path)
+    m = load_model("class_b_head")
+    truth = float(cf.cos_power_dome_reading(1.0, m.angular.exponent)) / m.mismatch(emitter_spectrum("D65").on_wide_grid())
+    assert row["model"] == "class_b_head"
+    assert abs(float(row["optics_illuminance_lx"]) - truth) <= 4 * float(row["optics_illuminance_stderr_lx"]) + 1e-6 * truth
+    (ideal,) = _rows(run(load_config(cfg("", "plain.toml")), log=lambda m: None).csv_path)
+    assert "luminous_flux_lm" in ideal
+    for k, v in ideal.items():
+        if k != "seconds":
+            assert row[k] == v, k
+    (dev,) = _rows(run(load_config(cfg('model = "veml7700"\ngain = 0.125\nintegration_ms = 100', "d.toml")),
+                       log=lambda m: None).csv_path)
+    assert float(dev["device_gain"]) == 0.125 and float(dev["device_integration_ms"]) == 100.0 and dev["device_counts_als"] != ""
+
+
 def test_model_output_is_byte_identical_across_threads(tmp_path):
     """A run with modelled sensors (the OPT3001, whose device noise is drawn per reading, and the TSL2561's
     two channels) writes the same CSV cells with 1 and 2 worker threads (the seconds column aside)."""
@@ -375,7 +406,7 @@ def test_stage_authored_sensor_names_a_model(tmp_path):
     out = run(load_config(cfg(stage(("irradiance", "class_l_head")))), log=lambda m: None)
     (row,) = _rows(out.csv_path)
     assert row["sensor"] == "/World/Head" and row["model"] == "class_l_head" and float(row["optics_illuminance_lx"]) > 0
-    for attrs, message in ((("radiance", "class_l_head"), "only an irradiance sensor takes a model"),
+    for attrs, message in ((("radiance", "class_l_head"), "only an irradiance or a patch sensor takes a model"),
                            (("irradiance", "nope"), "unknown sensor model 'nope'")):
         with pytest.raises(UserError) as e:
             run(load_config(cfg(stage(attrs))), log=lambda m: None)
