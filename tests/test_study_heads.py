@@ -119,7 +119,7 @@ def test_each_group_reads_at_its_spectrum_s_factor(tmp_path):
 @pytest.fixture(scope="module")
 def open_roof(tmp_path_factory):
     """The open roof (dome.usda: a uniform sky over a black ground) for four days of the bundled year, a plain
-    sensor and two Gaussian heads; the sun under illuminant A."""
+    sensor and two Gaussian heads; the sun under illuminant A (the group holding the stage's DistantLight)."""
     import importlib.util
 
     from simulator.study.annual.year import run_annual
@@ -128,8 +128,12 @@ def open_roof(tmp_path_factory):
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     tmp = tmp_path_factory.mktemp("heads_roof")
-    body = OPEN.format(stage=ROOT / "stages" / "dome.usda", model=_gaussian_model(tmp), extra="")
-    body += f'[annual]\nweather = "{mod._days(tmp)}"\nsky_group = "sky"\nreplicates = 16\nsun_spectrum = "A"\n'
+    stage = tmp / "roof.usda"  # the dome with a DistantLight whose group names the sun's spectrum
+    text = (ROOT / "stages" / "dome.usda").read_text().rstrip()
+    stage.write_text(text[:-1] + 'def DistantLight "Sun"\n{\n    float inputs:intensity = 1\n}\n}\n')
+    body = OPEN.format(stage=stage, model=_gaussian_model(tmp), extra="")
+    body += '[[group]]\nname = "sun"\nlights = ["/World/Sun"]\nspectrum = "A"\n'
+    body += f'[annual]\nweather = "{mod._days(tmp)}"\nsky_group = "sky"\nreplicates = 16\n'
     (tmp / "s.toml").write_text(body)
     study, p = load_study(tmp / "s.toml")
     return run_annual(study, p, tmp / "out", log=lambda m: None)

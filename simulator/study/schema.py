@@ -505,9 +505,6 @@ class AnnualSpec(_Model):
         None, min_length=1, description="traced: a [[group]] holding the stage's one DistantLight"
     )
     sun_bin_deg: float = Field(6.0, ge=1.0, le=30.0, description="traced: size of the sun-position bins")
-    sun_spectrum: Union[str, Annotated[float, Field(gt=0.0)]] | None = Field(
-        None, description="the sun's spectrum as a sensor model reads it (default: the sun_group's, else the stage's "
-        "DistantLight's, else D65)")
 
     @model_validator(mode="after")
     def _ranges(self):

@@ -8,8 +8,8 @@ them depends on each light's spectrum.
 
 Spectra. The sky's patches take the sky group's spectrum; the sun (its exact
 direct light, and its interreflected light from the patches around it or
-from its traced bins) ``[annual] sun_spectrum``, else the ``sun_group``'s,
-else the stage's one DistantLight's, else D65; each lamp group its own; the
+from its traced bins) that of the group holding the stage's DistantLight,
+else the DistantLight's own, else D65; each lamp group its own; the
 ground slot, of luminance ρ(E_dh + E_n sin h)/π, the hour's blend: a share
 E_dh/(E_dh + E_n sin h) of sky and the rest of sun. Channel c's hourly
 signal is year.py's recombination with every level scaled by its light's
@@ -65,28 +65,19 @@ SUN = "[annual] sun"
 
 
 def sun_spectrum(study, scene, groups: dict, label: str):
-    """The annual sun's spectrum (see the module's Notes) and its name."""
+    """The annual sun's spectrum: that of the ``[[group]]`` holding the stage's DistantLight (its ``spectrum``,
+    else the light's own; ``sun_group`` where it is traced), else the stage's one DistantLight's, else D65."""
     from pathlib import Path
 
-    from simulator.errors import UserError
     from simulator.scene.model import LightKind
     from simulator.spectra.sources import emitter_spectrum
 
-    a = study.annual
-    if a.sun_spectrum is not None:
-        try:
-            return emitter_spectrum(a.sun_spectrum, Path(label).parent)
-        except UserError as e:
-            raise UserError(f"{label}: annual.sun_spectrum: {e}") from None
-    if a.sun_group is not None:
-        g = next(g for g in study.group if g.name == a.sun_group)
-        if g.spectrum is not None:
+    distant = [l for l in scene.lights if l.kind == LightKind.DISTANT]
+    for g in study.group:
+        if any(l.name in set(groups[g.name]) for l in distant) and g.spectrum is not None:
             return emitter_spectrum(g.spectrum, Path(label).parent)
-        lights = [l for l in scene.lights if l.name in set(groups[a.sun_group])]
-    else:
-        lights = [l for l in scene.lights if l.kind == LightKind.DISTANT]
-    if len(lights) == 1 and lights[0].spectrum is not None:
-        return emitter_spectrum(lights[0].spectrum)
+    if len(distant) == 1 and distant[0].spectrum is not None:
+        return emitter_spectrum(distant[0].spectrum)
     return emitter_spectrum("D65")
 
 
