@@ -11,6 +11,16 @@ prints the relative variance per sample v = n·stderr²/reading² (seeded and ex
 load-independent) and the samples a 95 % half-width of ±1 % needs, n₁ % = (1.96/0.01)²·v, and the ratio
 of a narrow head's to the cosine's. The estimator is the same for all (``--method``; ``path`` by
 default, the engine's plain paths: the guide's pilot would otherwise be learnt from the first sensors).
+
+``--decompose`` splits each narrow head's variance per sample in two. With its directions drawn by its
+response (p = r/∫r dω) a sample is Y = ∫r dω · L̂(ω), L̂ the path's estimate of the radiance arriving
+along ω, so Var Y = (∫r dω)²·(Var_p L(ω) + E_p Var(L̂ | ω)): the first part is all that any choice of
+the head's first direction (its response times a guide toward the bright surfaces it sees, or MIS with
+the light sampler) can remove; the second is the paths' own, after their first hit. The first part is
+measured by ``--directions`` directions drawn by r on the host and the engine's one-direction radiance
+meter along each (``--dir-samples`` samples): Var_p L = the spread of those readings less their mean
+squared standard error. The script prints that share of the head's variance, and the largest factor
+by which a perfect first-direction sampler could cut it, 1/(1 − share).
 """
 
 from __future__ import annotations
@@ -83,11 +93,66 @@ def measure(samples: int, method: str, seed: int) -> list[dict]:
     return out
 
 
+def _directions(resp, n: int, rng) -> np.ndarray:
+    """``n`` unit directions about +Z drawn with density r/∫r dω (cosⁿ exactly; a table head by rejection
+    from the uniform cone of its last angle)."""
+    out = []
+    while len(out) < n:
+        if resp.kind == "power":
+            mu = rng.random(n) ** (1.0 / (resp.exponent + 1.0))
+            keep = np.ones(n, bool)
+        else:
+            top = np.cos(np.radians(resp.theta_deg[-1]))
+            mu = 1.0 - rng.random(n) * (1.0 - top)
+            keep = rng.random(n) < resp.response(np.degrees(np.arccos(np.clip(mu, -1.0, 1.0)))) / resp.values.max()
+        phi = 2 * np.pi * rng.random(n)
+        st = np.sqrt(np.maximum(0.0, 1.0 - mu * mu))
+        d = np.stack([st * np.cos(phi), st * np.sin(phi), mu], -1)[keep]
+        out += list(d)
+    return np.array(out[:n])
+
+
+def decompose(rows: list[dict], method: str, seed: int, directions: int, dir_samples: int) -> list[dict]:
+    """Per point and narrow head: the share of its variance per sample that comes from its first direction
+    (see module docstring), with the standard error of that share from the directions' spread."""
+    from simulator.engine.driver import Engine
+    from simulator.scene.model import Sensor, SensorKind
+    from simulator.scene.usd import load_stage
+
+    out = []
+    rng = np.random.default_rng(seed)
+    scenes = {}
+    for r in rows:
+        scene = scenes.setdefault(r["stage"], load_stage(ROOT / "stages" / r["stage"], light_units="photometric"))
+        n = np.array(r["normal"], float) / np.linalg.norm(r["normal"])
+        t = np.cross(n, [1.0, 0.0, 0.0] if abs(n[0]) < 0.9 else [0.0, 1.0, 0.0])
+        t /= np.linalg.norm(t)
+        frame = np.column_stack([t, np.cross(n, t), n])
+        for name, resp in heads().items():
+            d = _directions(resp, directions, rng) @ frame.T
+            sensors = [Sensor(f"d{j}", SensorKind.RADIANCE, np.array(r["position"], float), d[j]) for j in range(len(d))]
+            res = Engine(scene, sensors).run(method, samples=dir_samples, seed=seed)
+            lum, se = res.mean[:, 1], res.stderr[:, 1]
+            k = resp.integral_sr()
+            var_l = float(np.var(lum, ddof=1) - np.mean(se**2))
+            m, v = r[name][0], r[name][1]
+            total = v * m * m  # the head's variance per sample, lx²
+            share = k * k * var_l / total if total > 0 else float("nan")
+            # its standard error: the spread of (L − mean)² over the directions
+            share_se = k * k * float(np.std((lum - lum.mean()) ** 2, ddof=1)) / np.sqrt(len(lum)) / total if total > 0 else float("nan")
+            out.append({"stage": r["stage"], "position": r["position"], "head": name, "reading": m, "reading_dirs": k * float(lum.mean()),
+                        "share": share, "share_se": share_se})
+    return out
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--samples", type=int, default=1 << 15)
     ap.add_argument("--method", default="path", choices=("path", "guided", "mis", "light"))
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--decompose", action="store_true", help="also split each narrow head's variance (module docstring)")
+    ap.add_argument("--directions", type=int, default=256)
+    ap.add_argument("--dir-samples", type=int, default=1024)
     args = ap.parse_args(argv)
     rows = measure(args.samples, args.method, args.seed)
     names = ["cosine", *heads(), "meter 10°"]
@@ -112,6 +177,13 @@ def main(argv=None) -> int:
         print(f"{r['stage']:<16} {str(r['position']):<18} {str(r['normal']):<12} " + " ".join(f"{c:>39}" for c in cells)
               + "   " + ", ".join(f"{a:.2f}, {b:.2f}" for a, b in ratios))
     print(f"largest samples ratio: {worst:.2f}")
+    if args.decompose:
+        print(f"\nfirst direction's share of each head's variance per sample ({args.directions} directions drawn by r, "
+              f"{args.dir_samples} samples each; the best a first-direction sampler can do: 1/(1 − share))")
+        for d in decompose(rows, args.method, args.seed, args.directions, args.dir_samples):
+            print(f"{d['stage']:<16} {str(d['position']):<18} {d['head']:<15} reading {d['reading']:>9.4g} lx "
+                  f"(from the directions {d['reading_dirs']:>9.4g}) share {d['share']:>6.3f} ± {d['share_se']:.3f} "
+                  f"best cut {1.0 / max(1e-9, 1.0 - d['share']):>6.2f}×")
     return 0
 
 

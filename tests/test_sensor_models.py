@@ -234,6 +234,71 @@ def test_two_channel_formula_follows_the_data_sheet():
         0.0304 * 100 * k - 0.062 * 100 * k * 0.3**1.4)
 
 
+def test_many_readings_at_once_are_the_single_readings():
+    """read_devices (a year's hours at once) gives, reading by reading, what read_device gives with the same
+    noise draw: the setting (fixed, or auto-ranged per reading), the codes, the saturation flag and the
+    value (relative 1e-12), for a one-channel part with shot noise and dark counts ranging over 0.01–5,000 lx
+    and for the TSL2561's two channels and formula over 1–50,000 lx."""
+    from simulator.sensor_models.electronics import read_devices
+
+    el, ch = _plain(auto_range=True, read_noise_counts=2.0, electrons_per_count=3.0)
+    ch = (Channel("c", np.ones_like(WIDE_NM), "flat", counts_per_unit=10.0, dark_counts_per_s=5.0),)
+    tsl = load_model("tsl2561")
+    rng = np.random.default_rng(3)
+    for e, chans, x, gains in ((el, ch, np.geomspace(0.01, 5000.0, 60)[:, None], ("auto", 4.0)),
+                               (tsl.electronics, tsl.channels, np.geomspace(1.0, 5e4, 40)[:, None] * [1.0, 0.4], ("auto", 1.0))):
+        for gain in gains:
+            t = None if gain == "auto" else e.integration_ms[-1]
+            z = rng.standard_normal(x.shape)
+            many = read_devices(e, chans, x, z, gain, t)
+            for n in range(len(x)):
+                one = read_device(e, chans, list(x[n]), seed=0, sensor="s", gain=gain, integration_ms=t)
+                # the same reading with this draw: replay it through the single reading's arithmetic
+                s_ = one.setting
+                mu = np.array(one.mean_counts)
+                var = e.read_noise_counts ** 2 + (np.maximum(mu, 0.0) / e.electrons_per_count if e.electrons_per_count else 0.0)
+                analogue = mu + np.sqrt(var) * z[n]
+                fs = e.full_scale_at(s_)
+                codes = np.clip(np.floor(analogue), 0, fs).astype(np.int64)
+                assert (many.gain[n], many.integration_ms[n]) == (s_.gain, s_.integration_ms)
+                assert tuple(many.counts[n]) == tuple(codes) and bool(many.saturated[n]) == bool(np.any(analogue >= fs))
+                if e.firmware == "linear":
+                    want = codes[0] / (chans[0].counts_per_unit * e.sensitivity(s_))
+                else:
+                    from simulator.sensor_models.electronics import firmware_value
+
+                    want = firmware_value(e, codes.astype(float), s_)
+                assert many.value[n] == pytest.approx(want, rel=1e-12, abs=1e-12)
+
+
+@pytest.mark.parametrize("gain", [4.0, "auto"])
+def test_the_signal_reaching_a_reading_is_its_threshold(gain):
+    """signal_reaching gives, per noise draw, the least signal whose reading reaches a value: on a fine grid
+    of signals (0.1–500 lx, 20,000 steps) the first that reaches the value lies one step above it at most and
+    none below it does (at a fixed gain every one above it does too), for a fixed gain (4×, 400 ms: full
+    scale 25.6 lx, so 80 and 250 lx are never reached: +inf) and auto-ranging (a reading's setting changing
+    with its signal), read noise 2 counts and shot noise of 3 electrons per count."""
+    from simulator.sensor_models.electronics import read_devices, signal_reaching
+
+    el, _ = _plain(auto_range=True, read_noise_counts=2.0, electrons_per_count=3.0)
+    ch = (Channel("c", np.ones_like(WIDE_NM), "flat", counts_per_unit=10.0, dark_counts_per_s=5.0),)
+    t = None if gain == "auto" else 400.0
+    grid = np.linspace(0.1, 500.0, 20001)
+    reached = 0
+    for value, z in ((12.3, 0.0), (12.3, 1.7), (20.0, -2.2), (80.0, -2.2), (250.0, 0.4), (1e6, 0.0)):
+        x_star = float(signal_reaching(el, ch[0], value, np.array([z]), gain, t)[0])
+        r = read_devices(el, ch, grid[:, None], np.full((len(grid), 1), z), gain, t).value >= value
+        if not r.any():  # saturates below the value (4×, 400 ms: full scale 25.6 lx; any setting: 10⁶ lx)
+            assert math.isinf(x_star) and x_star > 0, (value, z, x_star)
+            continue
+        reached += 1
+        first = int(np.argmax(r))
+        assert first > 0 and grid[first - 1] - 1e-9 < x_star <= grid[first] + 1e-9, (value, z, x_star)
+        if gain != "auto":  # at one setting a reading grows with its signal (ranging can step it back a code)
+            assert r[first:].all()
+    assert reached >= (2 if gain != "auto" else 5)
+
+
 # ----------------------------------------------------------------------------- config
 
 
@@ -328,6 +393,37 @@ def test_dome_run_reads_the_model_through_its_optics(tmp_path):
             assert row[k] == v, k
 
 
+def test_patch_names_a_model_and_reads_its_area_average(tmp_path):
+    """A `[[sensor]]` patch names a model as an irradiance sensor does (a photometer head's area average):
+    under the dome stage's uniform sky (L = 1 cd/m², D65) a 0.4 m × 0.2 m class B patch reads
+    L·2π/(n + 1)/F_D65 at every point, so its optics column is that within 4 standard errors + 1e-6; its
+    ideal columns (irradiance and flux) are the bytes of the same patch without the model; a VEML7700
+    patch at gain 1/8 and 100 ms gets the device columns at that setting."""
+    from simulator.config.loader import load_config
+    from simulator.pipeline import run
+
+    def cfg(extra: str, name: str) -> Path:
+        p = tmp_path / name
+        p.write_text(f'stage = "{ROOT / "stages" / "dome.usda"}"\n[simulation]\nsamples = 256\nseed = 3\n'
+                     '[[sensor]]\nname = "p"\nkind = "patch"\nposition = [0, 0, 0]\nnormal = [0, 0, 1]\n'
+                     f'size = [0.4, 0.2]\nup = [0, 1, 0]\n{extra}\n[output]\ncsv = "{tmp_path / name}.csv"\n')
+        return p
+
+    (row,) = _rows(run(load_config(cfg('model = "class_b_head"', "m.toml")), log=lambda m: None).csv_path)
+    m = load_model("class_b_head")
+    truth = float(cf.cos_power_dome_reading(1.0, m.angular.exponent)) / m.mismatch(emitter_spectrum("D65").on_wide_grid())
+    assert row["model"] == "class_b_head"
+    assert abs(float(row["optics_illuminance_lx"]) - truth) <= 4 * float(row["optics_illuminance_stderr_lx"]) + 1e-6 * truth
+    (ideal,) = _rows(run(load_config(cfg("", "plain.toml")), log=lambda m: None).csv_path)
+    assert "luminous_flux_lm" in ideal
+    for k, v in ideal.items():
+        if k != "seconds":
+            assert row[k] == v, k
+    (dev,) = _rows(run(load_config(cfg('model = "veml7700"\ngain = 0.125\nintegration_ms = 100', "d.toml")),
+                       log=lambda m: None).csv_path)
+    assert float(dev["device_gain"]) == 0.125 and float(dev["device_integration_ms"]) == 100.0 and dev["device_counts_als"] != ""
+
+
 def test_model_output_is_byte_identical_across_threads(tmp_path):
     """A run with modelled sensors (the OPT3001, whose device noise is drawn per reading, and the TSL2561's
     two channels) writes the same CSV cells with 1 and 2 worker threads (the seconds column aside)."""
@@ -375,7 +471,7 @@ def test_stage_authored_sensor_names_a_model(tmp_path):
     out = run(load_config(cfg(stage(("irradiance", "class_l_head")))), log=lambda m: None)
     (row,) = _rows(out.csv_path)
     assert row["sensor"] == "/World/Head" and row["model"] == "class_l_head" and float(row["optics_illuminance_lx"]) > 0
-    for attrs, message in ((("radiance", "class_l_head"), "only an irradiance sensor takes a model"),
+    for attrs, message in ((("radiance", "class_l_head"), "only an irradiance or a patch sensor takes a model"),
                            (("irradiance", "nope"), "unknown sensor model 'nope'")):
         with pytest.raises(UserError) as e:
             run(load_config(cfg(stage(attrs))), log=lambda m: None)

@@ -148,11 +148,16 @@ class PatchEntry(SensorFields):
     normal: Direction
     size: Annotated[Size, Field(description="width, height of the rectangle", json_schema_extra={"unit": "m"})]
     up: Annotated[UpDirection, Field(description="direction of the height side (glare: up in the view; default +Z)")]
+    # a photometer head's area average: the model's angular response at every point drawn on the rectangle
+    # (its azimuth 0 along the width side)
+    model: ModelName | None = MODEL_NAME
+    gain: Any = MODEL_GAIN
+    integration_ms: Positive | None = MODEL_INTEGRATION
 
     def to_sensor(self, name: str, source: str) -> Sensor:
         return Sensor(
             name=name, kind=self.KIND, position=self.position, normal=self.normal, up=self.up, size=self.size,
-            source=source,
+            source=source, gain=self.gain, integration_ms=self.integration_ms,
         )  # fmt: skip
 
 

@@ -494,6 +494,12 @@ assert [int(s.kind) for s in SENSOR_SPECS] == list(range(len(SensorKind)))
 #: sensor kind names, as configs and ``probesim:sensor:kind`` spell them
 SENSOR_KINDS = {s.name: s.kind for s in SENSOR_SPECS}
 
+#: the kinds that take a sensor model (:mod:`simulator.sensor_models`): a head's angular response r(ω)
+#: replaces a cosine at a flat receiver's own vertex, a point's (irradiance) or every point drawn on a
+#: rectangle (patch: a photometer head's area average). Not the others: a cylinder's reading is defined
+#: by the cosine over its curved surface, a radiance meter's field is its cone, a probe is a map.
+MODEL_KINDS = (SensorKind.IRRADIANCE, SensorKind.PATCH)
+
 
 def patch_width_axis(up: np.ndarray, normal: np.ndarray) -> np.ndarray:
     """A patch's unit width axis, ``normalize(cross(up, normal))``: with

@@ -48,7 +48,8 @@ import numpy as np
 
 from simulator.errors import UserError
 
-__all__ = ["Segment", "Electronics", "Setting", "DeviceReading", "reading_stream", "read_device", "firmware_value"]
+__all__ = ["Segment", "Electronics", "Setting", "DeviceReading", "reading_stream", "read_device", "firmware_value",
+           "candidate_settings", "DeviceReadings", "read_devices", "firmware_values", "signal_reaching"]
 
 
 @dataclass(frozen=True)
@@ -178,22 +179,31 @@ def _mean_counts(el: Electronics, signals, channels, s: Setting) -> np.ndarray:
                      for x, ch in zip(signals, channels)], float)
 
 
-def _choose(el: Electronics, signals, channels, gain, integration_ms) -> Setting:
+def candidate_settings(el: Electronics, gain=None, integration_ms=None) -> list[Setting]:
+    """The settings a reading at ``gain`` and ``integration_ms`` (as a sensor states them; None: the part's
+    default) may be taken at, in the order auto-ranging tries them: one where the setting is fixed."""
     if gain is None and integration_ms is None:
         gain, integration_ms = el.default_gain, el.default_integration_ms
         if gain is None and integration_ms is None:
-            return Setting(el.reference_gain, el.reference_integration_ms)
+            return [Setting(el.reference_gain, el.reference_integration_ms)]
     if gain is None and integration_ms is not None:
         gain = "auto" if el.auto_range else el.reference_gain
     if gain != "auto" and integration_ms is None and not el.auto_range:
         integration_ms = el.reference_integration_ms
     if gain != "auto" and integration_ms is not None:
-        return Setting(float(gain), float(integration_ms))
+        return [Setting(float(gain), float(integration_ms))]
     cands = el.settings()
     if gain != "auto":
         cands = [s for s in cands if math.isclose(s.gain, gain, rel_tol=1e-9)]
     if integration_ms is not None:
         cands = [s for s in cands if math.isclose(s.integration_ms, integration_ms, rel_tol=1e-9)]
+    return cands
+
+
+def _choose(el: Electronics, signals, channels, gain, integration_ms) -> Setting:
+    cands = candidate_settings(el, gain, integration_ms)
+    if len(cands) == 1:
+        return cands[0]
     for s in cands:
         if np.all(_mean_counts(el, signals, channels, s) <= el.auto_range_max * el.full_scale_at(s)):
             return s
@@ -256,3 +266,118 @@ def _firmware_real(el: Electronics, counts: np.ndarray, s: Setting) -> float:
 def firmware_value(el: Electronics, counts, s: Setting) -> float:
     """A two-channel part's formula on real-valued counts at setting ``s`` (no quantisation)."""
     return _firmware_real(el, np.asarray(counts, float), s)
+
+
+# ---------------------------------------------------------------- many readings at once (a year's hours)
+
+
+@dataclass
+class DeviceReadings:
+    """:class:`DeviceReading` of N readings, as arrays."""
+
+    value: np.ndarray  # (N,) the reported values
+    counts: np.ndarray  # (N, C) int64 ADC codes
+    saturated: np.ndarray  # (N,) bool
+    gain: np.ndarray  # (N,) the setting each was read at
+    integration_ms: np.ndarray  # (N,)
+
+
+def _setting_arrays(el: Electronics, channels, cands: list[Setting]):
+    """Per candidate setting: counts per unit of each channel (S, C), dark counts (S, C), full scale (S,)."""
+    sens = np.array([el.sensitivity(s) for s in cands])
+    cpu = np.array([ch.counts_per_unit for ch in channels], float)
+    dark = np.array([[ch.dark_counts_per_s * s.integration_ms * 1e-3 for ch in channels] for s in cands])
+    fs = np.array([el.full_scale_at(s) for s in cands], float)
+    return sens, cpu, dark, fs
+
+
+def read_devices(el: Electronics, channels, signals, z, gain=None, integration_ms=None) -> DeviceReadings:
+    """:func:`read_device` of N readings at once: ``signals`` (N, C) each channel's signal, ``z`` (N, C) the
+    standard normal draws of their noise (0: the noiseless count, as a reading averaged over many
+    conversions gives). Reading n is what :func:`read_device` gives for ``signals[n]`` with the draw
+    ``z[n]`` in place of its own stream's: the same setting (auto-ranged per reading on its noiseless
+    counts), counts, saturation and firmware."""
+    x = np.atleast_2d(np.asarray(signals, float))
+    zz = np.broadcast_to(np.asarray(z, float), x.shape)
+    cands = candidate_settings(el, gain, integration_ms)
+    sens, cpu, dark, fs = _setting_arrays(el, channels, cands)
+    mu_all = x[:, None, :] * cpu[None, None, :] * sens[None, :, None] + dark[None, :, :]  # (N, S, C)
+    if len(cands) == 1:
+        pick = np.zeros(len(x), np.int64)
+    else:
+        ok = np.all(mu_all <= (el.auto_range_max * fs)[None, :, None], axis=2)
+        pick = np.where(ok.any(axis=1), np.argmax(ok, axis=1), len(cands) - 1)
+    rows = np.arange(len(x))
+    mu = mu_all[rows, pick]  # (N, C)
+    var = np.full_like(mu, el.read_noise_counts ** 2)
+    if el.electrons_per_count:
+        var = var + np.maximum(mu, 0.0) / el.electrons_per_count
+    analogue = mu + np.sqrt(var) * zz
+    top = fs[pick][:, None]
+    saturated = np.any(analogue >= top, axis=1)
+    codes = np.clip(np.floor(analogue), 0, top).astype(np.int64)
+    g = np.array([s.gain for s in cands])[pick]
+    t = np.array([s.integration_ms for s in cands])[pick]
+    if el.firmware == "linear":
+        value = codes[:, 0] / (channels[0].counts_per_unit * sens[pick])
+    else:
+        value = firmware_values(el, codes.astype(float), g, t)
+    return DeviceReadings(value, codes, saturated, g, t)
+
+
+def firmware_values(el: Electronics, counts: np.ndarray, gain: np.ndarray, integration_ms: np.ndarray) -> np.ndarray:
+    """A two-channel part's formula on counts (N, 2) read at settings (N,) (:func:`_firmware`, vectorised)."""
+    scale = (el.scale_gain / np.asarray(gain, float)) * (el.scale_integration_ms / np.asarray(integration_ms, float))
+    c0, c1 = counts[:, 0] * scale, counts[:, 1] * scale
+    out = np.zeros(len(c0))
+    pos = c0 > 0
+    ratio = np.divide(c1, c0, out=np.zeros_like(c0), where=pos)
+    done = ~pos
+    for seg in el.segments:
+        m = ~done & (ratio <= seg.ratio_max)
+        out[m] = np.maximum(0.0, seg.k0 * c0[m] - seg.k1 * c0[m] * ratio[m] ** seg.power)
+        done |= m
+    return out
+
+
+def signal_reaching(el: Electronics, channel, value: float, z, gain=None, integration_ms=None) -> np.ndarray:
+    """The smallest signal x of a one-channel part with linear firmware whose reading reaches ``value``,
+    per reading (``z`` (N,), its noise draw): ``read_devices(x).value ≥ value`` exactly where the signal is
+    at least the result (−inf: any signal; +inf: none, the part saturates below ``value``).
+
+    At a setting of a counts per unit and dark counts b, a reading is ⌊μ + σ(μ)·z⌋/a with μ = a·x + b,
+    σ² = σ_r² + μ/e; it reaches ``value`` where the code reaches C = ⌈a·value⌉, i.e. where
+    μ + σ(μ)·z ≥ C: μ* = C − σ_r·z without shot noise, else μ* = e(t² − σ_r²) with t the positive root
+    of e·t² + z·t − (C + e·σ_r²) = 0. Auto-ranging picks a setting by x alone, each over an interval of
+    signals (from the largest limit of the settings tried before it to its own limit, auto_range_max ×
+    full scale): the answer is the least over settings of the least x ≥ x* in the setting's interval."""
+    z = np.asarray(z, float)
+    cands = candidate_settings(el, gain, integration_ms)
+    sens, cpu, dark, fs = _setting_arrays(el, [channel], cands)
+    a = cpu[0] * sens  # (S,)
+    b = dark[:, 0]
+    limit = (el.auto_range_max * fs - b) / a  # the largest signal each setting is chosen for (when tried)
+    best = np.full(len(z), np.inf)
+    r2 = el.read_noise_counts ** 2
+    e = el.electrons_per_count
+    for j in range(len(cands)):
+        lo = -np.inf if j == 0 else float(np.max(limit[:j]))
+        hi = np.inf if (j == len(cands) - 1 or len(cands) == 1) else float(limit[j])
+        if lo >= hi:
+            continue  # never chosen
+        code = math.ceil(value * a[j] * (1.0 - 1e-12))
+        if code > fs[j]:
+            continue  # the reading saturates below the value at this setting
+        if code <= 0:
+            x_star = np.full(len(z), -np.inf)
+        else:
+            if e:
+                t = (-z + np.sqrt(z * z + 4.0 * e * (code + e * r2))) / (2.0 * e)
+                mu = e * (t * t - r2)
+                mu = np.where(mu < 0.0, code - math.sqrt(r2) * z, mu)  # below 0 counts there is no shot noise
+            else:
+                mu = code - math.sqrt(r2) * z
+            x_star = (mu - b[j]) / a[j]
+        cand = np.maximum(x_star, lo)
+        best = np.where(cand <= hi, np.minimum(best, cand), best)
+    return best

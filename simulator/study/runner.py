@@ -11,6 +11,7 @@ import numpy as np
 
 from simulator.errors import UserError
 from simulator.study.inputs.candidates import build_candidates, candidate_warnings
+from simulator.study.inputs.heads import combine_heads, head_factors
 from simulator.study.trace.chunks import ChunkStore, StudyInterrupted, chunk_scene, make_chunks, readings_of
 from simulator.study.trace.distributed import choose_mode, run_chunks
 from simulator.study.trace.groups import derive_seed, group_scene
@@ -56,6 +57,7 @@ class StudyResult:
     ugr: list = field(default_factory=list)  #: simulator.study.figures.ugr.UgrRow, the areas' observers
     glare: list = field(default_factory=list)  #: simulator.study.figures.glare_views.GlareViewRow, the stage's glare prims
     scene: object | None = None  #: the stage as read (geometry for the heat maps' plans); not in any output file
+    sensor_models: dict = field(default_factory=dict)  #: modelled candidates: each model's sets, spectra and F per group
 
 
 def zone_members(study: Study, sets, candidates, label: str = "") -> dict[str, np.ndarray]:
@@ -216,6 +218,9 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     if (base.geometry.emission > 0).any():
         warnings.append("emissive surfaces are in no light group and are left out of every scenario")
     sky_split = check_split_groups(base, study.group, groups, label)
+    heads = head_factors(study, base, candidates, groups, label)  # None: no candidate names a sensor model
+    if heads is not None:
+        warnings += heads.notes
     scenarios = expand_scenarios(study.scenario, list(groups), label, scene=base, groups=groups)
     tgs = trace_groups_of(scenarios, base, groups, label)
     warnings += dark_scenarios(scenarios, base, groups)
@@ -274,17 +279,19 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     by_tg: dict[str, list] = {}
     for s in specs:
         by_tg.setdefault(s.trace_key, []).append(s)
+    ch = 1 if study.light_units == "photometric" else 0
     for j, sc in enumerate(scenarios):
         for s in by_tg.get(sc.trace_key, []):
             gr = readings_of(results[s.id])
             m, e = gr.combine(sc.levels)
+            if heads is not None:  # modelled candidates: each light group through the head's spectral response
+                combine_heads(gr, sc.levels, s.sensor_ids, heads, ch, m, e)
             ids = np.asarray(s.sensor_ids)
             mean[j, ids], stderr[j, ids] = m, e
             samples[j, ids] = np.asarray(results[s.id]["samples"])[0]
             for i, name in zip(s.sensor_ids, gr.methods):
                 methods[j][i] = name
 
-    ch = 1 if study.light_units == "photometric" else 0
     figures, checks = {}, {}
     for z in study.zone:
         ids = zones[z.name]
@@ -344,6 +351,7 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
         timings_s={"setup": t_setup - t0, "chunks": t_traced - t_chunks, "trace_in_chunks": trace_s,
                    "analysis": t_analysis - t_traced, "reference_run": t_end - t_analysis, "total": t_end - t0},
         chunk_wall_s={s.id: float(results[s.id].get("wall_s", 0.0)) for s in specs}, reference=reference, warnings=warnings, scene=base, areas=areas, ugr=ugr, glare=glare,
+        sensor_models={} if heads is None else heads.record(candidates),
         chunk_trace_s={(s.trace_key, s.block): float(np.sum(results[s.id]["trace_s"])) for s in specs},
         chunk_trace_cpu_s={(s.trace_key, s.block): float(results[s.id].get("trace_cpu_s", 0.0)) for s in specs},
     )  # fmt: skip

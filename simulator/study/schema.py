@@ -45,10 +45,13 @@ Schema
     half_angle_deg = 30                # photosensor cone
     points = [[1.5, 2.0, 2.98]]
     normal = [0, 0, -1]
+    # model = "ceiling_photosensor"    # a sensor model: its angular and spectral response (and
+    # gain = 1, integration_ms = 100   # in an annual control its device, at this setting)
 
     [[group]]                          # a light group: paths or fnmatch patterns
     name = "window_row"
     lights = ["/Office/Lights/WindowRow/*"]
+    spectrum = "LED-B2"                # what sensor models read it at (default: its lights' own)
 
     [[group]]                          # ... or a USD collection (UsdCollectionAPI)
     name = "window_side"
@@ -208,7 +211,13 @@ class CandidateSpec(_Model):
     half_angle_deg: float = Field(30.0, gt=0.0, lt=90.0, description="photosensor: half angle of its cone")
     model: str | None = Field(
         None, min_length=1, description="irradiance, photosensor: a sensor model (probesim sensor --list, or a .toml "
-        "beside the study): the set reads through its angular response instead of the cosine or the cone")
+        "beside the study): the set reads through its angular and spectral response instead of the cosine or the "
+        "cone, and an annual control through its electronics")
+    gain: Union[Literal["auto"], Annotated[float, Field(gt=0.0)]] | None = Field(
+        None, description="with a model with electronics: the part's gain the installed device runs at (default: the "
+        "part's)")
+    integration_ms: float | None = Field(
+        None, gt=0.0, description="with a model with electronics: its integration time (default: the part's)")
     facing: Vec3 | None = Field(None, description="semicylindrical: where the half cylinders face (across the axis)")
     on: list[str] | None = Field(None, description="flat prims (paths) to grid; the grid lies on their plane")
     height_m: float = Field(
@@ -243,6 +252,8 @@ class CandidateSpec(_Model):
             raise ValueError("facing is for kind = \"semicylindrical\"")
         if self.model is not None and self.kind not in ("irradiance", "photosensor"):
             raise ValueError(f"model is for kind = \"irradiance\" or \"photosensor\", not {self.kind!r}")
+        if self.model is None and (self.gain is not None or self.integration_ms is not None):
+            raise ValueError("gain and integration_ms are for a set with a model (model = \"...\")")
         if (self.on is None) == (self.points is None):
             raise ValueError("give either 'on' (prims to grid) or 'points' (an explicit list), not both or neither")
         if self.points is not None:
@@ -277,6 +288,9 @@ class GroupSpec(_Model):
             "\"tregenza\": the group's one DomeLight traced as 145 sky patches and a ground (daylight coefficients)"
         )
     )
+    spectrum: Union[str, Annotated[float, Field(gt=0.0)]] | None = Field(
+        None, description="the group's emission spectrum as a sensor model reads it: an illuminant (\"LED-B2\"), a "
+        "temperature in K or an SPD .csv beside the study (default: its lights' own)")
 
     @model_validator(mode="after")
     def _some_lights(self):

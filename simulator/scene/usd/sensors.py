@@ -14,7 +14,7 @@ import math
 import numpy as np
 from pxr import Usd
 
-from simulator.scene.model import DEFAULT_GLARE_RESOLUTION, DEFAULT_PROBE_RESOLUTION, SENSOR_KINDS, Sensor, SensorKind
+from simulator.scene.model import DEFAULT_GLARE_RESOLUTION, DEFAULT_PROBE_RESOLUTION, MODEL_KINDS, SENSOR_KINDS, Sensor, SensorKind
 from simulator.scene.usd.context import _Context, _get
 from simulator.scene.usd.transforms import _axis_scales, _unit, _world_affine
 
@@ -46,8 +46,8 @@ def _read_sensor(ctx: _Context, prim: Usd.Prim) -> Sensor:
     )
     model = str(_sensor_attr(ctx, prim, "model", "") or "").strip()
     if model:  # a sensor model: a bundled name, or a .toml relative to the stage file
-        if kind != SensorKind.IRRADIANCE:
-            raise ctx.error(prim, f"{SENSOR_ATTR_PREFIX}model: only an irradiance sensor takes a model")
+        if kind not in MODEL_KINDS:
+            raise ctx.error(prim, f"{SENSOR_ATTR_PREFIX}model: only an irradiance or a patch sensor takes a model")
         from pathlib import Path
 
         from simulator.errors import UserError

@@ -117,15 +117,22 @@ def metrics_csv(res) -> str:
 def control_csv(res) -> str:
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
+    device = _device_columns(res)
     w.writerow(("zone", "model", "groups", "target_lx", "lamps_zone_lx", "photosensor", "relative_energy", "relative_energy_stderr",
-                "hours_below_target", "hours_below_target_stderr", "score", "score_stderr", "chosen"))  # fmt: skip
+                "hours_below_target", "hours_below_target_stderr", "score", "score_stderr", "chosen") + device)  # fmt: skip
     for c in res.controls:
         for row in c["candidates"]:
             w.writerow((c["zone"], c["model"], ";".join(c["groups"]), _f(c["target_lx"]), _f(c["lamps_zone_lx"]), row["photosensor"],
                         _f(row["relative_energy"]), _f(row["relative_energy_stderr"]), _f(row["hours_below"]),
                         _f(row["hours_below_stderr"]), _f(row["score"]), _f(row["score_stderr"]),
-                        int(row["photosensor"] == c["chosen"])))  # fmt: skip
+                        int(row["photosensor"] == c["chosen"])) + tuple(_f(row[k]) if k in row else "" for k in device))  # fmt: skip
     return buf.getvalue()
+
+
+def _device_columns(res) -> tuple[str, ...]:
+    """The columns of photosensors read through a sensor model's electronics (none where no candidate is one)."""
+    keys = ("hours_saturated", "hours_saturated_stderr")
+    return keys if any(keys[0] in r for c in res.controls for r in c["candidates"]) else ()
 
 
 def record(res, study) -> dict:
@@ -152,6 +159,7 @@ def record(res, study) -> dict:
         "method": "sky: Perez all-weather over Tregenza patches, direct and interreflected daylight coefficients traced once; "
                   "sun: direct light exact by shadow rays per hour, interreflected light from the indirect coefficients of the "
                   "patches nearest the sun; errors: hourly from the covariance, metrics from replicate years",
+        **({"sensor_models": res.sensor_models} if getattr(res, "sensor_models", None) else {}),
     }  # fmt: skip
 
 

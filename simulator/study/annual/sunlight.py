@@ -3,7 +3,8 @@
 The sun of a climate-based study is a delta distant light: from normal
 illuminance E_n along unit direction s, a sensor at x reads
 
-- irradiance (normal n): E = E_n · max(0, n·s) · V(x, s);
+- irradiance (normal n): E = E_n · max(0, n·s) · V(x, s); a modelled head (a sensor model's
+  angular response r, docs/sensors.md): E_n · r(θ, φ) · V(x, s), θ the sun's angle from n;
 - cone meter (axis n, half-angle α, mean radiance over the cone): a delta
   inside the cone adds E_n / Ω to the mean, Ω = 2π(1 − cos α); outside, 0
   (a meter whose axis is within α of the sun reads E_n·V/Ω),
@@ -32,7 +33,7 @@ import numpy as np
 from simulator.scene.model import SensorKind
 from simulator.study.annual.rays import cast, has_surfaces, ray_scene
 
-__all__ = ["visible", "direct_sun"]
+__all__ = ["visible", "direct_sun", "head_response"]
 
 #: a hit nearer than this (metres) along the ray is the sensor's own surface, not an occluder
 _T_MIN_M = 1e-6
@@ -65,8 +66,37 @@ def visible(origins: np.ndarray, direction: np.ndarray, tris: np.ndarray) -> np.
     return ~hit.any(axis=1)
 
 
+def _frame_x(n: np.ndarray) -> np.ndarray:
+    """The first tangent the kernels take around unit ``n`` (kernels.sampling.frame_x, Duff et al. 2017)."""
+    s = 1.0 if n[2] >= 0.0 else -1.0
+    a = -1.0 / (s + n[2])
+    b = n[0] * n[1] * a
+    return np.array([1.0 + s * n[0] * n[0] * a, s * b, -s * n[0]])
+
+
+def head_response(sensors, ids, nrm: np.ndarray, s: np.ndarray) -> np.ndarray:
+    """r(θ, φ) of the modelled heads ``ids`` (their ``optics``) toward unit direction ``s``, in the frame the
+    kernels read them in (azimuth 0 along ``azimuth_ref``, else the tangent of :func:`_frame_x`)."""
+    out = np.zeros(len(ids))
+    for k, i in enumerate(ids):
+        sen, n = sensors[i], nrm[i]
+        c = float(n @ s)
+        if c <= 0.0:
+            continue
+        theta = math.degrees(math.atan2(float(np.linalg.norm(s - c * n)), c))
+        phi = 0.0
+        if not sen.optics.symmetric:
+            x = sen.azimuth_ref if sen.azimuth_ref is not None else _frame_x(n)
+            x = x - float(x @ n) * n
+            x = x / np.linalg.norm(x)
+            phi = math.degrees(math.atan2(float(s @ np.cross(n, x)), float(s @ x)))
+        out[k] = float(sen.optics.response(theta, phi))
+    return out
+
+
 def direct_sun(sensors, scene, sun_dir: np.ndarray, sun_lx: np.ndarray) -> np.ndarray:
-    """Direct sun reading of every sensor every hour, shape (H, S) (lux for irradiance, cd/m² for a cone meter).
+    """Direct sun reading of every sensor every hour, shape (H, S) (lux for irradiance, cd/m² for a cone meter;
+    a modelled head, ``optics`` set, reads E_n·r(θ, φ)·V through its angular response).
 
     ``sun_dir`` (H, 3) unit directions toward the sun; ``sun_lx`` (H,)
     normal illuminance (0: no sun that hour)."""
@@ -78,6 +108,7 @@ def direct_sun(sensors, scene, sun_dir: np.ndarray, sun_lx: np.ndarray) -> np.nd
     cone = np.array([s.kind == SensorKind.RADIANCE for s in sensors])
     half = np.array([s.half_angle for s in sensors], np.float64)
     omega = 2 * math.pi * 2.0 * np.sin(0.5 * half) ** 2  # 2π(1 − cos α) without cancellation
+    heads = [i for i, x in enumerate(sensors) if getattr(x, "optics", None) is not None]
     out = np.zeros((len(sun_dir), len(sensors)))
     rs = None
     if has_surfaces(scene):  # panes or layers pass a share of the sun: the rays' product of shares
@@ -86,6 +117,8 @@ def direct_sun(sensors, scene, sun_dir: np.ndarray, sun_lx: np.ndarray) -> np.nd
         s = sun_dir[h]
         c = nrm @ s
         w = np.where(cone, np.where((c >= np.cos(half)) & (omega > 0), 1.0 / np.where(omega > 0, omega, 1.0), 0.0), np.maximum(c, 0.0))
+        if heads:
+            w[list(heads)] = head_response(sensors, heads, nrm, s)
         ids = np.nonzero(w > 0)[0]
         if len(ids):
             v = visible(pos[ids], s, tris) if rs is None else cast(rs, pos[ids], s).through

@@ -53,6 +53,7 @@ from pathlib import Path
 import numpy as np
 
 from simulator.errors import UserError
+from simulator.study.annual import heads as AH
 from simulator.study.inputs import sky_patches as SP
 from simulator.study.trace.groups import derive_seed
 
@@ -212,6 +213,7 @@ class AnnualResult:
     glare: "GlareYear | None" = None  #: the views' hourly E_v and index, None without glare views
     traces: dict = field(default_factory=dict)  #: state -> {purpose: trace groups}
     detail: dict = field(default_factory=dict)  #: "states", "plans", "years" (ShadeState, StatePlan, StateYear): for checks, in no file
+    sensor_models: dict = field(default_factory=dict)  #: modelled candidates: each model's sets, spectra and F per light
 
 
 @dataclass
@@ -263,6 +265,40 @@ def _control_pools(study, cands, names_index: dict, label: str) -> list[list[int
                 raise UserError(f"{label}: control[{i}].photosensor: no candidate or [[candidates]] set named {c.photosensor!r}")
         out.append(pool)
     return out
+
+
+def _annual_heads(study, base, cands, groups: dict, label: str):
+    """The modelled candidates' spectral factors per group and for the sun (None: no candidate names a model)."""
+    from simulator.study.inputs.heads import head_factors
+
+    if not any(getattr(c.sensor, "model", None) is not None for c in cands):
+        return None
+    return head_factors(study, base, cands, groups, label, {AH.SUN: AH.sun_spectrum(study, base, groups, label)})
+
+
+def _sky_share(skies) -> np.ndarray:
+    """Each hour's share of sky light in the ground's luminance ρ(E_dh + E_n sin h)/π (1 where it is dark)."""
+    g = skies.global_lx
+    return np.divide(skies.dhi_lx, g, out=np.ones_like(g), where=g > 0)
+
+
+def _devices(heads, cands, pools, seed: int, occupied_rows: np.ndarray, n_rows: int) -> dict:
+    """The photosensor candidates whose model has electronics: candidate → (its head's index, its hours'
+    noise draws (H, C))."""
+    dev_seed = derive_seed(seed, "annual", "device")
+    at = {int(i): j for j, i in enumerate(heads.index)}
+    out = {}
+    for k in sorted({k for pool in pools for k in pool}):
+        j = at.get(k)
+        if j is not None and heads.models[j].electronics is not None:
+            out[k] = (j, AH.hour_noise(dev_seed, cands[k].sensor.name, occupied_rows, n_rows, len(heads.models[j].channels)))
+    return out
+
+
+def _saturated(o) -> tuple:
+    """``(hours saturated,)`` of a device's outcome, () of any other."""
+    h = getattr(o, "saturated_hours", None)
+    return () if h is None else (h,)
 
 
 def _select(arrays: list, choice: np.ndarray):
@@ -508,14 +544,23 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
         raise UserError(f"{label}: annual.sky_group: the DomeLight {dome.name} has no luminance to scale")
     names_index = {c.sensor.name: k for k, c in enumerate(cands)}
     pools = _control_pools(study, cands, names_index, label)
+    heads = _annual_heads(study, base, cands, groups, label)
     notes = list(weather.notes) + [f"warning: {w}" for w in weather.warnings + misplaced]
     for w in weather.warnings:  # the weather's doubts, on the console as they are found and in the record
         log(f"warning: {w}")
     if any(l.kind == LightKind.DISTANT for l in base.lights):
         notes.append("the stage's DistantLight is not used: each hour's sun comes from the weather file")
+    if heads is not None:
+        notes += [f"warning: {w}" for w in heads.notes]
+        for w in heads.notes:
+            log(f"warning: {w}")
 
     # shading states (each its own stage) and the glare views read every hour
     sh = study.shading
+    if sh is not None and heads is not None:
+        named = next(c.sensor for c in cands if getattr(c.sensor, "model", None) is not None)
+        raise UserError(f"{label}: candidate {named.name!r} names a sensor model, which a study with [shading] does not "
+                        "read yet (a head's response to the shades' own light); leave the model out of this study")  # fmt: skip
     states = SH.shading_states(study, stage, base, label)
     all_views = views_of(base)
     views, skipped = annual_views(all_views)
@@ -625,10 +670,19 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
     choice = choose([y.sun for y in years], [y.index for y in years])
     mean = _select([y.mean for y in years], choice)
     stderr = _select([y.stderr for y in years], choice)
+    head_year = None
+    if heads is not None:  # modelled candidates (one state: no [shading]): what their heads report, group by group
+        head_year = AH.YearLight(d, q, sun, _sky_share(skies), sun_bin, sun_scale)
+        chans, val, se = AH.head_hourly(heads, a.sky_group, co, head_year)
+        AH.apply_heads(heads, mean, val, stderr, se)
+        df_h = AH.overcast_readings(heads, a.sky_group, df, _DF_SKY_LX)
+        df_se = df_se * np.divide(df_h, df, out=np.ones_like(df), where=df > 0)
+        df = df_h
+        sun = AH.head_sun(heads, sun)  # the metrics' direct sun as the heads report it (head_year keeps the true one)
     t_hourly = time.perf_counter()
 
     # metrics and control, on the estimate and on each replicate year
-    def figures(e: np.ndarray, cs: list, ch: np.ndarray, dfs: np.ndarray):
+    def figures(e: np.ndarray, cs: list, ch: np.ndarray, dfs: np.ndarray, hc=None):
         m = {z: zone_metrics(e[:, ids], sun[:, ids], occupied, daylight, dfs[ids], a, float(a.step_h)) for z, ids in zones.items()}
         ch_occ = ch[occupied]
         one = np.unique(ch_occ)
@@ -638,14 +692,18 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
             ids = zones[spec.zone]
             target = float(spec.target_lx if spec.target_lx is not None else dict(study.zone[[z.name for z in study.zone].index(spec.zone)].targets)["mean"])
             gsel = [lamp_groups.index(g) for g in spec.groups]
-            e_zones = [float(np.mean(c.lamp[ids][:, gsel].sum(axis=1))) for c in cs]
+            lamps_s = [AH.lamp_readings(heads, c.lamp, lamp_groups, gsel) for c in cs]  # full output, as each sensor reads it
+            e_zones = [float(np.mean(ls[ids])) for ls in lamps_s]
             e_zone = e_zones[one] if one is not None else np.asarray(e_zones)[ch_occ]
             day = e[occupied][:, ids].mean(axis=1)
             d_ov = float(np.mean(dfs[ids])) * _DF_SKY_LX
             per = []
             for k in pools[ci]:
+                if k in devices:  # a modelled photosensor with electronics (one state): the control reads its device
+                    per.append(_device_outcome(spec, k, cs[0], hc, gsel, d_ov, day, e_zone, target))
+                    continue
                 s_day = e[occupied][:, k]
-                s_lamps = [float(c.lamp[k, gsel].sum()) for c in cs]
+                s_lamps = [float(ls[k]) for ls in lamps_s]
                 s_lamp = s_lamps[one] if one is not None else np.asarray(s_lamps)[ch_occ]
                 s_ov = float(dfs[k]) * _DF_SKY_LX
                 gain = d_ov / s_ov if s_ov > 0 else 0.0
@@ -676,7 +734,18 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
                     out[(view.name, "GA_open")] = glare_metrics(idx_by_state[0][:, v], occupied, a.glare_limit, float(a.step_h))["GA"]
         return out
 
-    m0, ctl0 = figures(mean, [y.co for y in years], choice, df)
+    devices = {} if heads is None else _devices(heads, cands, pools, study.seed, rows[occupied], len(weather))
+
+    def _device_outcome(spec, k, c, hc, gsel, d_ov, day, e_zone, target):
+        j, z = devices[k]
+        m_, i_ = heads.models[j], int(heads.index[j])
+        lamp_ch = AH.lamp_channels(heads, j, c.lamp[i_], lamp_groups, gsel)
+        ov_ch = AH.overcast_channels(heads, j, a.sky_group, float(df_of(c)[i_]) * _DF_SKY_LX)
+        o, _ = AH.control_outcome(spec, m_, AH.setting_of(cands[k].sensor), hc[j][:, occupied], lamp_ch, ov_ch, d_ov, day,
+                                  e_zone, target, z)  # fmt: skip
+        return o
+
+    m0, ctl0 = figures(mean, [y.co for y in years], choice, df, None if heads is None else chans)
     x0 = extras([y.mean for y in years], choice, [y.index for y in years])
     reps_m = {z: {k: [] for k in m0[z]} for z in m0}
     reps_x = {k: [] for k in x0}
@@ -698,13 +767,19 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
             i_rs.append(i_k)
         ch_r = choose([y.sun for y in years], i_rs) if (sh is not None and sh.rule == "glare") else choice
         e_r = _select(e_rs, ch_r)
-        m_r, c_r = figures(e_r, rcs, ch_r, df_of(rcs[0]))
+        if heads is None:
+            m_r, c_r = figures(e_r, rcs, ch_r, df_of(rcs[0]))
+        else:  # one state
+            e_r = np.array(e_r, copy=True)
+            hc_r, val_r, _ = AH.head_hourly(heads, a.sky_group, rcs[0], head_year, stderr=False)
+            AH.apply_heads(heads, e_r, val_r)
+            m_r, c_r = figures(e_r, rcs, ch_r, AH.overcast_readings(heads, a.sky_group, df_of(rcs[0]), _DF_SKY_LX), hc_r)
         for z in m_r:
             for k, v in m_r[z].items():
                 reps_m[z][k].append(v)
         for i, (_, _, per) in enumerate(c_r):
             for j, o in enumerate(per):
-                reps_c[i][j].append((o.relative_energy, o.hours_below, o.score))
+                reps_c[i][j].append((o.relative_energy, o.hours_below, o.score) + _saturated(o))
         if x0:
             for k, v in extras(e_rs, ch_r, i_rs).items():
                 reps_x[k].append(v)
@@ -720,6 +795,9 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
                            "relative_energy_stderr": float(np.std(r[:, 0], ddof=1)), "hours_below": o.hours_below,
                            "hours_below_stderr": float(np.std(r[:, 1], ddof=1)), "score": o.score,
                            "score_stderr": float(np.std(r[:, 2], ddof=1)), "scores": r[:, 2]})  # fmt: skip
+            if _saturated(o):  # a device: the hours it saturated
+                rows_c[-1].update(hours_saturated=o.saturated_hours, hours_saturated_stderr=float(np.std(r[:, 3], ddof=1)),
+                                  target_tolerance_lx=o.target_tolerance_lx)
         best = min(range(len(rows_c)), key=lambda j: (rows_c[j]["score"], j))
         runner = min((j for j in range(len(rows_c)) if j != best), key=lambda j: (rows_c[j]["score"], j), default=None)
         lead = lead_se = None
@@ -748,4 +826,5 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
                         zones=zones, scene=base, annual_spec=a, states=[st.name for st in states] if sh is not None else [],
                         state=choice if sh is not None else None, shading=sh, extra=extra, glare=glare,
                         traces={(st.name or "stage"): p.traces() for st, p in zip(states, plans)},
-                        detail={"states": states, "plans": plans, "years": years, "dome": dome})  # fmt: skip
+                        detail={"states": states, "plans": plans, "years": years, "dome": dome},
+                        sensor_models={} if heads is None else heads.record(cands))  # fmt: skip

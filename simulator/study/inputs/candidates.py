@@ -123,11 +123,21 @@ def _boxes(scene: Scene, patterns: list[str], label: str) -> list[tuple[np.ndarr
     return out
 
 
+def _check_setting(model, spec: CandidateSpec, label: str) -> None:
+    """A set's ``gain`` and ``integration_ms`` must be the part's: one line naming the key."""
+    if model.electronics is None:
+        if spec.gain is not None or spec.integration_ms is not None:
+            key = "gain" if spec.gain is not None else "integration_ms"
+            raise UserError(f"{label}.{key}: model {model.name!r} has no electronics")
+        return
+    model.electronics.check_setting(spec.gain, spec.integration_ms, label)
+
+
 def _sensor(spec: CandidateSpec, name: str, position: np.ndarray, normal: np.ndarray, source: str,
             model=None) -> Sensor:
     if model is not None:  # a real head: its angular response in place of the cosine or the cone
         return Sensor(name=name, kind=SensorKind.IRRADIANCE, position=position, normal=normal, source=source,
-                      optics=model.angular, model=model)
+                      optics=model.angular, model=model, gain=spec.gain, integration_ms=spec.integration_ms)
     if spec.kind in ("cylindrical", "semicylindrical"):  # the axis along the prim's normal (a floor: vertical)
         axis = normal / np.linalg.norm(normal)
         ref = np.asarray(spec.facing, float) if spec.facing is not None else np.array([1.0, 0.0, 0.0])
@@ -205,6 +215,7 @@ def build_candidates(scene: Scene, specs: list[CandidateSpec], file_label: str) 
             from simulator.sensor_models.model import load_model
 
             model = load_model(spec.model, Path(file_label).parent, f"{label}.model")
+            _check_setting(model, spec, label)
         cands: list[Candidate] = []
         grids: dict[str, Grid] = {}
         outside = 0

@@ -199,6 +199,7 @@ def record(res, versions: dict) -> dict:
         "host": {"platform": platform.platform(), "machine": platform.machine()},
         "versions": versions,
         "files": res.files,
+        **({"sensor_models": res.sensor_models} if getattr(res, "sensor_models", None) else {}),
     }
 
 
