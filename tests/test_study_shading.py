@@ -523,3 +523,21 @@ def test_the_report_shows_the_shades_and_the_glare_year(year):
     from simulator.io.numbers import with_error
 
     assert with_error(ga, se, "%").replace("\u00a0", " ") in page.replace("\u00a0", " ")
+
+
+def test_a_sensor_model_in_a_study_with_shading_is_refused_in_one_line(tmp_path):
+    """A modelled head under operable shades would read the shade's own light (a diffusing blind's cells)
+    through its response, which the year does not yet model: the study is refused, naming the candidate,
+    before anything is traced, rather than run with the head's response left off that light."""
+    from simulator.study.annual.year import run_annual
+
+    study, p = _write(tmp_path, ROOT / "stages" / "office_shading.usda", '[shading]\nvariant_set = "blinds"\nstates = ["up", "down"]')
+    text = p.read_text().replace('kind = "photosensor"\n', 'kind = "photosensor"\nmodel = "class_b_head"\n')
+    p.write_text(text)
+    from simulator.study.schema import load_study
+
+    study, p = load_study(p)
+    with pytest.raises(UserError) as e:
+        run_annual(study, p, tmp_path / "out", log=lambda m: None)
+    assert "candidate 'ceiling[0]' names a sensor model" in str(e.value) and "[shading]" in str(e.value) and "\n" not in str(e.value)
+    assert not (tmp_path / "out" / "chunks").exists()
