@@ -103,7 +103,9 @@ def make_chunks(trace_groups, sensors: list[Sensor], groups: dict[str, list[str]
     (``group/pNNN``, ``group/ground``) join the dimming vectors.
     ``extra_lights``: lights added to the stage in every chunk (groups may name them).
     ``extra_ident``: more that the chunks' numbers depend on (their ids hash it; the seeds do not)."""
-    stage_sha = hashlib.sha256(stage.read_bytes()).hexdigest()
+    from simulator.scene.usd.dependencies import stage_digest
+
+    stage_sha = stage_digest(stage)  # every layer and asset the stage reads: a changed sublayer is a new chunk
     out = []
     for tg in trace_groups:
         if not tg.groups:
