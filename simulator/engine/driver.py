@@ -258,6 +258,10 @@ class Engine:
         #: True (always, as a stage has them) or False (the scene's triangles, one piece)
         self.emitter_pieces: str | bool = "auto"
         self._pieces_on = True  # the device scene's emitters are in pieces
+        #: the emitter pieces' table per cell (engine.piece_table.PieceTable) once the device scene has
+        #: pieces; None: none (one piece, or not yet uploaded); False: never built (each receiver weighs
+        #: the pieces one by one, as before the table)
+        self.piece_table = None
         #: what the pieces' choice measured (None: no choice made yet, or nothing to choose)
         self.pieces_pilot: dict | None = None
         self._piece_tally: np.ndarray | None = None  # the latest pick pilot's per-piece sums, (K, 4) (tally_pick)
@@ -303,6 +307,10 @@ class Engine:
                 self._device_scene.set_light_mask(self._light_mask)
             if self._hero is not None:
                 self._device_scene.set_hero_tables(self._hero)
+            if self.piece_table is not False:  # emitter pieces: each cell's own pick (engine.piece_table)
+                from simulator.engine.piece_table import piece_table
+
+                self.piece_table = piece_table(self) or None
         return self._device_scene
 
     @property
@@ -552,13 +560,15 @@ class Engine:
         gain = with_one / base if base > 0 else (np.inf if with_one > 0 else 1.0)  # inf: no noise with pieces
         keep = gain >= emitters.PIECES_MIN_GAIN
         self.pieces_pilot = {
-            "pieces": int(dev.pieces.n), "triangles": int(dev.rec.tris.shape[0] // 3),
+            "pieces": int(dev.pieces.n), "triangles": int(dev.rec.tris.shape[0] // 3), "elements": int(dev.n_elements),
             "predicted_gain": gain if np.isfinite(gain) else None,
             "min_gain": emitters.PIECES_MIN_GAIN, "kept": bool(keep), "pilot_s": time.perf_counter() - tb,
             "why": (f"one piece would have {gain:.2f}× the pieces' relative variance (pilot)"
                     + (f", ≥ {emitters.PIECES_MIN_GAIN:g}: pieces kept" if keep else
                        f", < {emitters.PIECES_MIN_GAIN:g}: one piece over the scene's own triangles")),
         }  # fmt: skip
+        if keep and self.piece_table:
+            self.pieces_pilot["table"] = self.piece_table.summary()
         if not keep:
             tr = time.perf_counter()
             self._pieces_on = False
