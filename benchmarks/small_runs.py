@@ -13,6 +13,8 @@ Cases (default: all):
 
 - ``point``: ``configs/point.toml``, four closed-form readings of a point light;
 - ``one_sensor``: one irradiance sensor under the point light of ``stages/point.usda``;
+- ``desk``: one irradiance sensor on the office's desk (``stages/office.usda``: sky, sun, six
+  lamps, reflecting walls), traced: Warp, the kernels from the cache, the pilots;
 - ``sphere_grid``: ``configs/integrating_sphere_grid.toml --rel-error 0.01``, 256 sensors in an
   integrating sphere of 261,120 triangles, adaptive to 1%;
 - ``floor_grid``: ``configs/occluded_floor_grid.toml``, 1,024 exact readings (no Warp).
@@ -52,13 +54,20 @@ normal = [0, 0, 1]
 """
 
 
+DESK = ONE_SENSOR.replace("position = [0, 0, 0]", "position = [2.0, 2.0, 0.8]").replace('name = "below"', 'name = "desk"')
+
+
 def cases(folder: Path) -> dict[str, list[str]]:
-    """Each case's ``run`` arguments (the config first); ``one_sensor``'s config is written to ``folder``."""
+    """Each case's ``run`` arguments (the config first); ``one_sensor``'s and ``desk``'s configs are
+    written to ``folder``."""
     one = folder / "one_sensor.toml"
     one.write_text(ONE_SENSOR.format(stage=(ROOT / "stages" / "point.usda").as_posix()))
+    desk = folder / "desk.toml"
+    desk.write_text(DESK.format(stage=(ROOT / "stages" / "office.usda").as_posix()))
     return {
         "point": [str(ROOT / "configs" / "point.toml")],
         "one_sensor": [str(one)],
+        "desk": [str(desk)],
         "sphere_grid": [str(ROOT / "configs" / "integrating_sphere_grid.toml"), "--rel-error", "0.01"],
         "floor_grid": [str(ROOT / "configs" / "occluded_floor_grid.toml")],
     }

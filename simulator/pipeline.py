@@ -502,6 +502,7 @@ def _trace_and_write(cfg, scene, sensors, probes, plain, plan, probes_method, re
                       "trace": res.wall_s + sum(p.seconds for p in probe_res) + sum(g.seconds for g in glare_res),
                       "guide": engine.guide.seconds if engine.guide is not None else 0.0, "total": t_end - t0},
         **({} if engine.guide is None else {"guide": engine.guide.to_record()}),
+        **({} if engine.guide is not None or not engine.guide_skipped else {"guide_skipped": engine.guide_skipped}),
         **({} if engine.rr_pilot is None else {"roulette": _roulette_record(engine.rr_pilot)}),
         **({} if engine.split_pilot is None else {"split": dict(engine.split_pilot)}),
         **({} if engine.pieces_pilot is None else {"emitter_pieces": dict(engine.pieces_pilot)}),

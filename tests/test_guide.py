@@ -325,7 +325,8 @@ def test_guided_integrating_sphere_without_a_layout():
     engine = Engine(scene, [sensor])
     (light,) = scene.lights
     res = engine.run("guided", samples=4096, seed=13, component="indirect")
-    assert engine.guide.patches == 0 and "no guide" in engine.guide.reason
+    # no layout (and a run of 4,096 samples, under the guide's pilot, builds no guide either)
+    assert not engine._dev.layout.usable and engine.guide is None
     for ch in (0, 1):
         flux = 4.0 * math.pi * light.emission[ch]
         truth = cf.integrating_sphere_reflected(flux, 1.0, 0.8)
@@ -355,3 +356,24 @@ def test_guided_office_covers_the_reference(office_guided):
     cover = float(np.mean(np.abs(z) < 1.96))
     assert 0.927 <= cover <= 0.973, cover
     assert abs(res.mean[:, 1].sum() / r.sum() - 1.0) < 0.01
+
+
+def test_a_run_too_small_for_the_guides_pilot_reads_plain_paths():
+    """One desk sensor of the office at 256 samples: the guide's pilot alone would draw
+    guide.PILOT_MIN_TOTAL = 16,384 samples, 64 times the run, so the guided run builds no guide and
+    says why (``Engine.guide_skipped``); a guided trace without a guide is a plain path trace, so its
+    reading is ``path``'s, bit for bit (same seed). 64 such sensors (16,384 samples) build it."""
+    from simulator.engine import guide as G
+    from simulator.scene.usd import load_stage
+
+    scene = load_stage(CONFIGS.parent / "stages" / "office.usda", light_units="photometric")
+    desk = Sensor("desk", SensorKind.IRRADIANCE, np.array([2.0, 2.0, 0.8]), np.array([0.0, 0.0, 1.0]))
+    eng = Engine(scene, [desk])
+    guided = eng.run("guided", samples=256, seed=3)
+    assert eng.guide is None and eng.guide_skipped and f"{G.PILOT_MIN_TOTAL:,}" in eng.guide_skipped
+    plain = Engine(scene, [desk]).run("path", samples=256, seed=3)
+    np.testing.assert_array_equal(guided.mean, plain.mean)
+    np.testing.assert_array_equal(guided.stderr, plain.stderr)
+    many = Engine(scene, [desk] * (G.PILOT_MIN_TOTAL // 256))
+    many.run("guided", samples=256, seed=3)
+    assert many.guide is not None and many.guide_skipped is None

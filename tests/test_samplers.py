@@ -663,20 +663,25 @@ def test_cylinder_light_sampler_matches_pdf_light():
     _check_light(eng, 0, p, np.array([0.0, 0.0, 1.0]), param, 8, 24, "cylinder", emission=1.0, integral=facing, pdf_rtol=pdf_rtol)
 
 
-@pytest.mark.parametrize("piece_m", [10.0, 0.5])
-def test_emissive_triangles_sampler_matches_pdf_light(monkeypatch, piece_m):
+@pytest.mark.parametrize("piece_m, split_m", [(10.0, 10.0), (0.5, 10.0), (0.5, 0.4)])
+def test_emissive_triangles_sampler_matches_pdf_light(monkeypatch, piece_m, split_m):
     """Emissive geometry: a triangle picked ∝ its power (radiance × area ×
     sides), then a uniform point on it; pdf P(tri)·d²/(A·|cosθ_l|). Three
     triangles of different size and radiance, one of them two-sided. Each
-    triangle is binned in the sampler's own square-to-triangle map
-    (b1, b2) = (u1·√u0, 1 − √u0), which is area-preserving (dA = A du0 du1).
+    triangle is binned in the square-to-triangle map (b1, b2) = (u1·√u0,
+    1 − √u0), which is area-preserving (dA = A du0 du1).
     With pieces of at most 0.5 m each triangle is a piece of its own, picked
-    with P(k | x) from its estimate (simulator.scene.emitters): the pdf is then
-    P(k | x)·d²/(A·|cosθ_l|). Emitters are not cut here (the triangles keep
-    their indices)."""
+    with P(k | c) from the pieces' table of the receiver's cell
+    (simulator.engine.piece_table): the pdf is then P(k | c)·d²/(A·|cosθ_l|).
+    Cut at 0.4 m, each triangle is m × m elements (patches of it, m = 2 or
+    3) grouped into more pieces, an element picked ∝ its power within its
+    piece and a point uniform on it: the pdf P(k | c)·P(e | k)·m²·d²/(A·|cosθ_l|)
+    then steps from element to element, and the binning, which knows nothing
+    of the elements, still meets the code's pdf (the triangles keep their
+    indices: the cut is the sampler's, not the geometry's)."""
     from simulator.scene import emitters
 
-    monkeypatch.setattr(emitters, "SPLIT_M", 10.0)
+    monkeypatch.setattr(emitters, "SPLIT_M", split_m)
     monkeypatch.setattr(emitters, "PIECE_M", piece_m)
     pts = np.array([
         [0.0, 0.0, 2.0], [1.0, 0.0, 2.0], [0.0, 0.8, 2.0],      # faces down (wound clockwise from above)
@@ -716,9 +721,14 @@ def test_emissive_triangles_sampler_matches_pdf_light(monkeypatch, piece_m):
         return u, v, tri
 
     param = _surface_param(p, point, lambda u, v, part: ng[part], lambda u, v, part: area[part], inverse, tri_of_part=lambda part: part)
-    assert eng._dev.pieces.n == (1 if piece_m > 1 else 3)
-    _check_light(eng, li, p, np.array([0.0, 0.0, 1.0]), param, 8, 8, f"emissive triangles, pieces of {piece_m} m",
-                 n_parts=3)
+    assert eng._dev.pieces.n == (1 if piece_m > 1 else 3 if split_m > 1 else eng._dev.pieces.n)
+    assert eng._dev.rec.tris.shape[0] == 9  # the stage's three triangles, cut or not
+    if split_m < 1:
+        assert eng._dev.n_elements > 3 and eng._dev.pieces.n > 3
+    if piece_m < 1:  # the receiver's cell has a table: the pick is the cell's
+        assert eng.piece_table is not None and eng.piece_table.cell_of(p, [0.0, 0.0, 1.0])[0] >= 0
+    _check_light(eng, li, p, np.array([0.0, 0.0, 1.0]), param, 8, 8,
+                 f"emissive triangles, pieces of {piece_m} m, cut at {split_m} m", n_parts=3)
 
 
 # --------------------------------------------------------------------------- Lambertian reflection

@@ -276,7 +276,12 @@ def _cmd_run(args) -> int:
     )
     if rec.get("emitter_pieces"):
         ep = rec["emitter_pieces"]
-        print(f"emissive geometry: {ep['pieces']} pieces {'kept' if ep['kept'] else 'set aside'}: {ep['why']}")
+        tab = ep.get("table")
+        print(f"emissive geometry: {ep['pieces']} pieces {'kept' if ep['kept'] else 'set aside'}: {ep['why']}"
+              + (f"; picked by the table of {tab['cells']} cells of {tab['cell_m']:g} m ({tab['seconds']:.2f} s)"
+                 if tab else ""))
+    if rec.get("guide_skipped"):
+        print(rec["guide_skipped"])
     ad = rec.get("adaptive")
     if ad:
         print(

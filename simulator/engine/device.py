@@ -16,7 +16,7 @@ import numpy as np
 
 from simulator.errors import UserError
 from simulator.scene import emitters
-from simulator.scene.emitters import emitter_pieces, split_emitters
+from simulator.scene.emitters import element_index, emitter_cuts, emitter_pieces, split_emitters
 from simulator.scene.model import Scene, Sensor
 from simulator.scene.patches import patch_layout, source_rows
 
@@ -169,16 +169,7 @@ class DeviceScene:
 
         self.device = device
         self._n_sensors = len(sensors)
-        # large emitting triangles cut for the emitter pieces (coplanar: the same surface and emission);
-        # every per-triangle array on the device follows ``tri_orig`` (the scene's triangle of each)
         self.in_pieces = pieces
-        if pieces:
-            split, self.tri_orig = split_emitters(scene.geometry, emitters.SPLIT_M)
-        else:
-            split, self.tri_orig = scene.geometry, np.arange(scene.geometry.n_triangles)
-        self._n_scene_tris = scene.geometry.n_triangles
-        if split is not scene.geometry:
-            scene = dc_replace(scene, geometry=split)
         self.layout = patch_layout(scene.geometry.points, scene.geometry.triangles)
         g = scene.geometry
         self._prim = g.prim if len(g.prim) == g.n_triangles else np.zeros(g.n_triangles, np.int32)
@@ -231,39 +222,56 @@ class DeviceScene:
         rec.two_sided = arr(two_sided, wp.int32)
         self._upload_surfaces(wp, K, rec, g, scene.lights)
 
-        # Emissive triangles in pieces (simulator.scene.emitters): a piece is
-        # picked by its estimate × learned factor, a triangle of it ∝ its
-        # emitted power (radiance × area × sides), the best choice when all are visible.
-        prob = np.zeros(max(n_tri, 1), np.float64)
+        # Emissive triangles in pieces (simulator.scene.emitters): a piece is picked (by its cell's table,
+        # engine.piece_table, or its estimate × learned factor), then an element of it ∝ its emitted power
+        # (radiance × area × sides), the best choice when all are visible. An element is a sub-triangle of
+        # an emitting triangle cut m × m (a patch of it, simulator.scene.patches: the device keeps the
+        # stage's triangles, so the cut adds nothing to the hierarchy rays traverse), or the triangle (m = 1).
         lights = [L.light_record(l, self._keep) for l in scene.lights]
         self.emissive_light = -1
         cap = emitters.MAX_PIECES if self.in_pieces else 1
-        pieces = emitter_pieces(g, emitters.PIECE_M, cap) if n_tri else None
+        m = emitter_cuts(g, emitters.SPLIT_M) if n_tri and self.in_pieces else np.ones(n_tri, np.int64)
+        split, orig = split_emitters(g, emitters.SPLIT_M) if (m > 1).any() else (g, np.arange(n_tri))
+        pieces = emitter_pieces(split, emitters.PIECE_M, cap) if n_tri else None
         self.pieces = pieces
-        piece_of = np.full(max(n_tri, 1), -1, np.int32)
+        emitting = np.flatnonzero(np.any(g.emission > 0, axis=1)) if n_tri else np.zeros(0, np.int64)
+        base = np.full(n_tri, -1, np.int64)
+        base[emitting] = np.cumsum(m[emitting] ** 2) - m[emitting] ** 2
+        n_elem = int((m[emitting] ** 2).sum())
+        prob = np.zeros(n_elem, np.float64)
+        piece_of = np.full(n_elem, -1, np.int64)
+        elem = np.zeros(0, np.int64)
+        cdf = np.zeros(0)
         if pieces is not None:
-            prob[pieces.tris] = pieces.prob
-            cdf = np.zeros(len(pieces.tris))
+            elem = base[orig[pieces.tris]] + element_index(orig)[pieces.tris]  # each split triangle's element
+            prob[elem] = pieces.prob
+            cdf = np.zeros(len(elem))
             for k in range(pieces.n):
                 sl = slice(int(pieces.first[k]), int(pieces.first[k] + pieces.count[k]))
                 c = np.cumsum(pieces.prob[sl])
                 cdf[sl] = c / c[-1]
-                piece_of[pieces.tris[sl]] = k
-            rec.emit_tris = wp.array(pieces.tris.astype(np.int32), dtype=wp.int32)
-            rec.emit_cdf = wp.array(cdf.astype(np.float32), dtype=float)
+                piece_of[elem[sl]] = k
             lights.append(L.emissive_record())
             self.emissive_light = len(lights) - 1
-        else:
-            rec.emit_tris = wp.zeros(0, dtype=wp.int32)
-            rec.emit_cdf = wp.zeros(1, dtype=float)
-        self._upload_pieces(wp, rec, pieces, piece_of)
-        rec.emit_prob = wp.array(prob.astype(np.float32), dtype=float)
+        self.n_elements = n_elem
+        k = 0 if pieces is None else pieces.n
+        rec.n_pieces = k
+        rec.n_emit_tris = n_tri
+        rec.n_elems = n_elem
+        rec.piece_tally = wp.zeros(1, dtype=wp.vec4)
+        # the tables' sections in the order of SceneRec.emit_ints / emit_floats (the table's come last)
+        geom = (np.concatenate([pieces.centre, pieces.normal, pieces.area[:, None], pieces.radiance[:, None],
+                                pieces.reach[:, None], pieces.two_sided[:, None].astype(np.float64)], axis=1).reshape(-1)
+                if k else np.zeros(0))  # fmt: skip
+        self._emit_ints = [base, np.maximum(m, 1), np.repeat(emitting, m[emitting] ** 2), piece_of, elem,
+                           pieces.first if k else np.zeros(0), pieces.count if k else np.zeros(0)]  # fmt: skip
+        self._emit_floats = [prob, cdf, np.ones(k), pieces.power_share if k else np.zeros(0), geom]
+        self._table_fields(wp, rec, None)
         rec.lights = wp.array(lights, dtype=K.LightRec) if lights else wp.zeros(1, dtype=K.LightRec)
         rec.n_lights = len(lights)
         self._light_src, self._lights_authored = list(scene.lights), rec.lights  # for set_light_scale
         rec.guide = self._guide_record(wp, K, n_tri)
-        self._keep += [mesh, points, tri_ids, rec.albedo, rec.emission, rec.two_sided, rec.emit_tris, rec.emit_cdf,
-                       rec.emit_prob, rec.lights]  # fmt: skip
+        self._keep += [mesh, points, tri_ids, rec.albedo, rec.emission, rec.two_sided, rec.lights]
         return rec
 
     def _upload_optics(self, wp, sensors: list[Sensor]) -> dict[int, int]:
@@ -414,37 +422,39 @@ class DeviceScene:
         rec.texels = wp.array(np.ascontiguousarray(texels, np.float32), dtype=float)
         self._keep += [rec.tex_id, rec.tex_uv, rec.tex, rec.texels]
 
-    def _upload_pieces(self, wp, rec, pieces, piece_of: np.ndarray) -> None:
-        """The emitter pieces' records (one placeholder piece where none emit)."""
-        k = 0 if pieces is None else pieces.n
-        rec.n_pieces = k
-        rec.emit_piece = wp.array(piece_of, dtype=wp.int32)
-        if k:
-            shape = np.stack([pieces.area, pieces.radiance, pieces.reach, pieces.two_sided.astype(np.float64)], axis=1)
-            rec.piece_first = wp.array(pieces.first.astype(np.int32), dtype=wp.int32)
-            rec.piece_count = wp.array(pieces.count.astype(np.int32), dtype=wp.int32)
-            rec.piece_centre = wp.array(pieces.centre.astype(np.float32), dtype=wp.vec3)
-            rec.piece_normal = wp.array(pieces.normal.astype(np.float32), dtype=wp.vec3)
-            rec.piece_shape = wp.array(shape.astype(np.float32), dtype=wp.vec4)
-            rec.piece_power = wp.array(pieces.power_share.astype(np.float32), dtype=float)
+    def set_piece_table(self, table) -> None:
+        """The pieces' table per cell (:class:`simulator.engine.piece_table.PieceTable`; None: no table,
+        every receiver weighs the pieces one by one)."""
+        wp = warp()
+        with wp.ScopedDevice(self.device):
+            self._table_fields(wp, self.rec, table)
+
+    def _table_fields(self, wp, rec, table) -> None:
+        """Upload the emitters' two arrays (SceneRec.emit_ints, emit_floats) with the pieces' table
+        ``table`` (None: none) after their other sections."""
+        self.piece_table = table
+        ints, floats = list(self._emit_ints), list(self._emit_floats)
+        if table is None:
+            rec.n_cells = 0
+            rec.cell_dims = wp.vec3i(0, 0, 0)
         else:
-            rec.piece_first = wp.zeros(1, dtype=wp.int32)
-            rec.piece_count = wp.zeros(1, dtype=wp.int32)
-            rec.piece_centre = wp.zeros(1, dtype=wp.vec3)
-            rec.piece_normal = wp.zeros(1, dtype=wp.vec3)
-            rec.piece_shape = wp.zeros(1, dtype=wp.vec4)
-            rec.piece_power = wp.ones(1, dtype=float)
-        rec.piece_factor = wp.ones(max(k, 1), dtype=float)
-        rec.piece_tally = wp.zeros(1, dtype=wp.vec4)
-        self._keep += [rec.emit_piece, rec.piece_first, rec.piece_count, rec.piece_centre, rec.piece_normal,
-                       rec.piece_shape, rec.piece_power]  # fmt: skip
+            rec.n_cells = table.n_cells
+            rec.cell_dims = wp.vec3i(*table.dims)
+            ints.append(table.grid)
+            floats += [np.asarray(table.lo, np.float64), [1.0 / table.h], table.cdf.reshape(-1), table.total]
+        i = np.concatenate([np.asarray(x, np.int64).reshape(-1) for x in ints] + [np.zeros(1, np.int64)])
+        f = np.concatenate([np.asarray(x, np.float32).reshape(-1) for x in floats] + [np.zeros(1, np.float32)])
+        rec.emit_ints = wp.array(i.astype(np.int32), dtype=wp.int32)  # (a last 0: never an empty array)
+        rec.emit_floats = wp.array(f, dtype=float)
+        self._emit_arrays = (rec.emit_ints, rec.emit_floats)  # the record holds only their pointers
 
     def set_piece_factors(self, factors: np.ndarray) -> None:
         """The emitter pieces' learned factors, (K,) (see kernels/lights/emissive.py)."""
         wp = warp()
+        self._emit_floats[2] = np.asarray(factors, np.float64)
+        self.piece_factors = self._emit_floats[2]
         with wp.ScopedDevice(self.device):
-            self.rec.piece_factor = wp.array(np.ascontiguousarray(factors, np.float32), dtype=float)
-        self._piece_factor = self.rec.piece_factor  # the record holds only its pointer
+            self._table_fields(wp, self.rec, self.piece_table)
 
     def _upload_hero(self, wp, rec, tables) -> None:
         """The hero-wavelength tables (:class:`simulator.spectra.hero.HeroTables`) on ``rec``; placeholders
@@ -462,8 +472,6 @@ class DeviceScene:
             face_em = np.ascontiguousarray(getattr(tables, "face_emission", np.zeros(0)), np.int32)
             if len(face_em) != len(face):  # none coloured (or no triangles): every face its record's row
                 face_em = np.full(len(face), -1, np.int32)
-            if len(self.tri_orig) != self._n_scene_tris and len(face) == self._n_scene_tris:
-                face, face_em = face[self.tri_orig], face_em[self.tri_orig]  # the cut emitters' triangles
         rec.spectral_reflectance = wp.array2d(refl, dtype=float)
         rec.spectral_face = wp.array(face, dtype=wp.int32)
         rec.spectral_emission = wp.array2d(emis, dtype=float)

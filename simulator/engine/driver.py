@@ -240,6 +240,8 @@ class Engine:
         self._device_scene: DeviceScene | None = None
         self._hero = None  # simulator.spectra.hero.HeroTables when tracing spectrally
         self.guide = None  #: GuideInfo once a guided run has built the guide (once per engine)
+        #: why the latest guided run read its sensors without a guide (None: it had one, or was not guided)
+        self.guide_skipped: str | None = None
         #: next-event estimation by one picked light: "auto" (methods.light_pick_rule) or a methods.LIGHT_PICK_MODES key
         self.light_pick = "auto"
         #: Russian roulette threshold of path throughput; None: methods.rr_threshold_rule
@@ -258,6 +260,10 @@ class Engine:
         #: True (always, as a stage has them) or False (the scene's triangles, one piece)
         self.emitter_pieces: str | bool = "auto"
         self._pieces_on = True  # the device scene's emitters are in pieces
+        #: the emitter pieces' table per cell (engine.piece_table.PieceTable) once the device scene has
+        #: pieces; None: none (one piece, or not yet uploaded); False: never built (each receiver weighs
+        #: the pieces one by one, as before the table)
+        self.piece_table = None
         #: what the pieces' choice measured (None: no choice made yet, or nothing to choose)
         self.pieces_pilot: dict | None = None
         self._piece_tally: np.ndarray | None = None  # the latest pick pilot's per-piece sums, (K, 4) (tally_pick)
@@ -303,6 +309,10 @@ class Engine:
                 self._device_scene.set_light_mask(self._light_mask)
             if self._hero is not None:
                 self._device_scene.set_hero_tables(self._hero)
+            if self.piece_table is not False:  # emitter pieces: each cell's own pick (engine.piece_table)
+                from simulator.engine.piece_table import piece_table
+
+                self.piece_table = piece_table(self) or None
         return self._device_scene
 
     @property
@@ -446,6 +456,23 @@ class Engine:
             self.guide = build_guide(self, seed, ids, max_depth, lit, levels)
         return self.guide
 
+    def _guide_pays(self, samples: int, rel_error: float | None, groups) -> bool:
+        """Whether a guided run of ``samples`` per sensor builds the guide. Not where the engine's sensors
+        (all of them, whichever group runs first) draw a fixed budget of fewer samples in all than the
+        guide's pilot alone would (``guide.PILOT_MIN_TOTAL``, however few the sensors): a lone sensor's 256
+        samples paid 16,384 pilot samples, 64 times their own cost, which no gain of the guide's can
+        return. The run is then read by plain paths (a guided trace with no guide is one, draw for draw);
+        ``guide_skipped`` says so, and a later run that can pay builds it."""
+        from simulator.engine import guide as G
+
+        total = len(self.sensors) * samples
+        if self.guide is not None or rel_error is not None or groups is not None or total >= G.PILOT_MIN_TOTAL:
+            self.guide_skipped = None
+            return True
+        self.guide_skipped = (f"guide not built: the run draws {total:,} samples, fewer than its pilot would "
+                              f"({G.PILOT_MIN_TOTAL:,}); read by plain paths")
+        return False
+
     def light_pick_mode(self, method: str) -> str:
         """How :meth:`run` samples lights for ``method``: a key of
         ``methods.LIGHT_PICK_MODES`` (``light_pick`` "auto": the rule)."""
@@ -552,13 +579,15 @@ class Engine:
         gain = with_one / base if base > 0 else (np.inf if with_one > 0 else 1.0)  # inf: no noise with pieces
         keep = gain >= emitters.PIECES_MIN_GAIN
         self.pieces_pilot = {
-            "pieces": int(dev.pieces.n), "triangles": int(dev.rec.tris.shape[0] // 3),
+            "pieces": int(dev.pieces.n), "triangles": int(dev.rec.tris.shape[0] // 3), "elements": int(dev.n_elements),
             "predicted_gain": gain if np.isfinite(gain) else None,
             "min_gain": emitters.PIECES_MIN_GAIN, "kept": bool(keep), "pilot_s": time.perf_counter() - tb,
             "why": (f"one piece would have {gain:.2f}× the pieces' relative variance (pilot)"
                     + (f", ≥ {emitters.PIECES_MIN_GAIN:g}: pieces kept" if keep else
                        f", < {emitters.PIECES_MIN_GAIN:g}: one piece over the scene's own triangles")),
         }  # fmt: skip
+        if keep and self.piece_table:
+            self.pieces_pilot["table"] = self.piece_table.summary()
         if not keep:
             tr = time.perf_counter()
             self._pieces_on = False
@@ -1016,7 +1045,7 @@ class Engine:
         # the preparations run() makes first (each done once per engine or kept): pieces, guide, pick
         if METHOD_FLAGS[base][0] and self.emitter_pieces == "auto" and self.pieces_pilot is None:
             self._choose_pieces(base, seed, depth, "total", ids)
-        if base in GUIDED_METHODS:
+        if base in GUIDED_METHODS and self._guide_pays(int(kw["samples"]), kw["rel_error"], None):
             self.ensure_guide(seed, ids, depth)
         self.set_light_mask(plain)
         params = self.trace_params(base, (seed + 0x2545F491) & 0x7FFFFFFF, depth, "total")
@@ -1171,7 +1200,7 @@ class Engine:
         n_s = len(self.sensors)
         if METHOD_FLAGS[method][0] and self.emitter_pieces == "auto" and self.pieces_pilot is None:
             self._choose_pieces(method, seed, max_depth, component, ids_all)  # before the guide: it may rebuild
-        if method in GUIDED_METHODS:
+        if method in GUIDED_METHODS and self._guide_pays(samples, rel_error, groups):
             self.ensure_guide(seed, ids_all, max_depth, groups)
         params = self.trace_params(method, seed, max_depth, component)
         params.count_rays = int(count_rays)  # True: every ray; 2: shadow rays only (kernels.rays)

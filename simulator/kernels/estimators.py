@@ -49,8 +49,10 @@ from simulator.scene.model import Sensor, SensorKind
 
 from .group_tally import clear_group_sample, fold_group_sample, tally_group, tregenza_patch
 from .guide import glossy_mixture_factor, guide_fraction, guide_row, make_guided_step, mixture_factor, pdf_guide, tally_patch
-from .light_pick import (LightPick, computed_at, is_delta, pick_light, pick_light_at, pick_scale, picks_at, tally_patch_pick,
-                         tally_pick)
+from .light_pick import (LM_TO_W, LightPick, computed_at, is_delta, pick_light, pick_light_at, pick_scale, picks_at,
+                         tally_patch_pick, tally_pick)
+from .lights.emissive import pdf_at as emissive_pdf_at
+from .lights.emissive import sample_piece
 from .lights import (  # noqa: F401  (GuideRec, LightRec, SceneRec re-exported for the engine)
     RAY_INF,
     GuideRec,
@@ -482,6 +484,7 @@ class Trace:
     samplers: dict  # the per-sample entries by name (SensorKernel.sample)
     sample_sensor: Any
     estimate_kernel: Any
+    piece_table_kernel: Any  # the emitter pieces' table per cell (simulator.engine.piece_table)
 
 
 @functools.cache
@@ -699,7 +702,7 @@ def make_trace(surfaces: bool) -> Trace:
                                 if params.tally != 0 and depth > 0:
                                     tally_patch(scene, params, prev_row, cur_face, p, c_light)
                     if params.tally_pick != 0:
-                        tally_pick(scene, params, li, p, n, depth, weight, got, ls.tri, w)
+                        tally_pick(scene, params, li, p, n, depth, weight, got, ls.elem, w)
                         if params.tally_pick == 2 and depth > 0:
                             tally_patch_pick(scene, li, cur_face, p, n, weight, got)
             # -- delta lights and the sun seen in flat mirrors: their image sources (kernels.mirrors); light
@@ -1064,8 +1067,10 @@ def make_trace(surfaces: bool) -> Trace:
                                                                           params.emissive_light):
                 w = float(1.0)
                 if weigh and params.emissive_light >= 0:
+                    # the piece's probability read at the receiver (p, ns) its light samples were drawn for
+                    # (the cell of the pieces' table, lights/emissive.py, is a function of those two)
                     w = power_heuristic(pdf_b, pick_scale(scene, params, pk, params.emissive_light, p, n, depth)
-                                        * pdf_light(scene, params.emissive_light, o, n, wi, t_hit, face))
+                                        * emissive_pdf_at(scene, p, ns, o + t_hit * wi, wi, t_hit, face))
                 total += emissive_contribution(scene, params, face, (w_dir * w) * le, tint_d)
             if params.bounces >= 0 and depth >= params.bounces:
                 break
@@ -1368,7 +1373,47 @@ def make_trace(surfaces: bool) -> Trace:
         out_sumsq[t] = s2
         out_bad[t] = bad
 
-    return Trace(surfaces, vertex_estimate, vertex_irradiance, sample_radiance, samplers, sample_sensor, estimate_kernel)
+    @wp.kernel(module=trace_module(surfaces))
+    def piece_table_kernel(
+        scene: SceneRec,
+        cell_p: wp.array(dtype=wp.vec3),
+        cell_n: wp.array(dtype=wp.vec3),
+        per_cell: int,
+        rays: int,
+        li: int,
+        seed: int,
+        offset: int,
+        out: wp.array(dtype=float),
+    ):
+        """Entry (c, k) = thread c·n_pieces + k of the emitter pieces' table (``simulator.engine.piece_table``):
+        the mean over ``rays`` light samples of piece k (:func:`.lights.emissive.sample_piece`), each from
+        one of cell c's ``per_cell`` receivers (points ``cell_p``, unit normals ``cell_n``) in turn, of its
+        shadowed value as W + lm/683 per m², through panes and cut-outs at their share: an estimate of
+        the piece's irradiance over the cell. Each entry draws from its own random stream."""
+        t = wp.tid() + offset
+        c = t // scene.n_pieces
+        k = t - c * scene.n_pieces
+        rng = wp.rand_init(seed, t)
+        total = float(0.0)
+        for r in range(rays):
+            i = c * per_cell + r % per_cell
+            x = cell_p[i]
+            nx = cell_n[i]
+            ls = sample_piece(scene, k, 1.0, x, nx, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)))
+            if ls.value[0] > 0.0 or ls.value[1] > 0.0:
+                o = x
+                if scene.has_mesh != 0:
+                    o = x + offset_length(scene, x) * nx
+                vis = float(1.0)
+                if (scene.surfaces != 0) if wp.static(surfaces) else False:
+                    vis = shadow_ray_pass(scene, o, x, li, ls)
+                elif not shadow_ray_clear(scene, o, x, li, ls):
+                    vis = 0.0
+                total += vis * (wp.max(ls.value[0], 0.0) + LM_TO_W * wp.max(ls.value[1], 0.0))
+        out[t] = total / float(rays)
+
+    return Trace(surfaces, vertex_estimate, vertex_irradiance, sample_radiance, samplers, sample_sensor, estimate_kernel,
+                 piece_table_kernel)
 
 
 #: the two trace variants, all-matte (False) and with the surface model (True), built in this order at import

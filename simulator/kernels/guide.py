@@ -11,7 +11,7 @@ import warp as wp
 from .lights import SceneRec, tri_params, tri_vertex
 from .rays import first_hit, offset_length
 from .records import TraceParams
-from .sampling import INV_PI, sample_triangle_bary
+from .sampling import INV_PI, patch_index, patch_point  # noqa: F401  (patch_point: the guide's sampler below)
 from .coverage import coverage_at
 from .surfaces import pass_factor, transmittance_along
 
@@ -27,45 +27,6 @@ from .surfaces import pass_factor, transmittance_along
 # see vertex_irradiance. The idea of
 # learning where light comes from with a pilot and sampling it is path
 # guiding's (Vorba et al. 2014, Müller et al. 2017), here on surface patches.
-
-
-@wp.func
-def patch_index(s: float, t: float, m: int) -> int:
-    """Index k (0 … m² − 1) of the sub-triangle holding (s, t) on a triangle
-    cut m × m: k = j·(2m − j) + 2i + upper (see
-    :mod:`simulator.scene.patches`). Twin of :func:`patch_point`."""
-    fm = float(m)
-    i = wp.clamp(int(wp.floor(s * fm)), 0, m - 1)
-    j = wp.clamp(int(wp.floor(t * fm)), 0, m - 1)
-    upper = int(0)
-    if i + j > m - 1:  # rounding past the hypotenuse
-        i = m - 1 - j
-    elif i + j <= m - 2 and (s * fm - float(i)) + (t * fm - float(j)) >= 1.0:
-        upper = 1
-    return j * (2 * m - j) + 2 * i + upper
-
-
-@wp.func
-def patch_point(k: int, m: int, u: wp.vec2) -> wp.vec2:
-    """(s, t) uniform on sub-triangle k of a triangle cut m × m (area pdf
-    m²/A on the triangle's plane). Twin of :func:`patch_index`."""
-    fm = float(m)
-    j = wp.clamp(int(wp.floor(fm - wp.sqrt(wp.max(fm * fm - float(k), 0.0)))), 0, m - 1)
-    while j > 0 and j * (2 * m - j) > k:
-        j -= 1
-    while j < m - 1 and (j + 1) * (2 * m - j - 1) <= k:
-        j += 1
-    r = k - j * (2 * m - j)
-    i = r // 2
-    b = sample_triangle_bary(u)  # weights of the corners B and C, A gets the rest
-    a0 = wp.vec2(float(i), float(j))
-    e1 = wp.vec2(1.0, 0.0)
-    e2 = wp.vec2(0.0, 1.0)
-    if r % 2 == 1:  # upper: corners (i+1, j+1), (i, j+1), (i+1, j)
-        a0 = wp.vec2(float(i + 1), float(j + 1))
-        e1 = wp.vec2(-1.0, 0.0)
-        e2 = wp.vec2(0.0, -1.0)
-    return (a0 + b[0] * e1 + b[1] * e2) / fm
 
 
 @wp.func

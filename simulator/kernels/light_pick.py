@@ -48,7 +48,7 @@ import warp as wp
 from simulator.scene.model import LightKind
 
 from .lights import LightRec, SceneRec
-from .lights.emissive import piece_estimate, piece_probability, piece_totals
+from .lights.emissive import elem_piece, piece_estimate, piece_power, piece_probability, piece_totals
 from .guide import patch_at
 from .records import TraceParams
 from .sampling import PI
@@ -367,12 +367,12 @@ def piece_moments(v: float, r: float, w: float) -> wp.vec2:
 @wp.func
 def tally_pick(
     scene: SceneRec, params: TraceParams, li: int, p: wp.vec3, n: wp.vec3, depth: int, weight: float, got: wp.vec2,
-    tri: int, mis_w: float,
+    elem: int, mis_w: float,
 ):
     """A pilot's sums for light ``li``'s pick factor (light_pick.py): the
     path weight × its estimate ê, and × the value its shadowed sample gave;
     slot 0 for a sensor's first vertex, 1 for the rest. A sample of emissive
-    triangle ``tri`` (≥ 0) from piece k also adds to k's sums (one row for
+    element ``elem`` (≥ 0, kernels/lights/emissive.py) of piece k also adds to k's sums (one row for
     all vertices): weight × ê_k and weight × value × P(k | x), the piece's
     shadowed irradiance (the value was divided by P(k | x)), and for the
     pieces' choice (engine.driver.Engine._choose_pieces) :func:`piece_moments`.
@@ -380,14 +380,14 @@ def tally_pick(
     if is_delta(scene.lights[li]):
         return
     pc = int(-1)
-    if scene.lights[li].kind == _EMISSIVE and tri >= 0 and scene.n_pieces > 1:
-        pc = scene.emit_piece[tri]
+    if scene.lights[li].kind == _EMISSIVE and elem >= 0 and scene.n_pieces > 1:
+        pc = elem_piece(scene, elem)
     if pc >= 0:
         pr = piece_probability(scene, pc, p, n, piece_totals(scene, p, n))
         j = params.thread * scene.n_pieces + pc
         ek = piece_estimate(scene, pc, p, n)
         v = weight * importance(got)
-        mo = piece_moments(v, scene.piece_power[pc] / wp.max(pr, 1.0e-30), mis_w)
+        mo = piece_moments(v, piece_power(scene, pc) / wp.max(pr, 1.0e-30), mis_w)
         # the first two as weight × (ê_k, value × P): the factors' sums as they were before the moments
         got_k = weight * (importance(got) * pr)
         scene.piece_tally[j] = scene.piece_tally[j] + wp.vec4(weight * ek[0], got_k, mo[0], mo[1])

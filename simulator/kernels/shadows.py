@@ -142,7 +142,7 @@ def light_end_offset(l: LightRec, o: wp.vec3, p: wp.vec3, q: wp.vec3, nl: wp.vec
     return wp.dot(abs3(nl), e)
 
 
-@wp.func
+@wp.func(inline=True)  # never a copy of the scene record per shadow ray (rays.unoccluded)
 def shadow_ray_clear(scene: SceneRec, o: wp.vec3, p: wp.vec3, li: int, ls: LightSample) -> bool:
     """Visibility of light sample ``ls`` of light ``li`` (drawn at p) from
     the ray origin o.
@@ -165,7 +165,7 @@ def shadow_ray_clear(scene: SceneRec, o: wp.vec3, p: wp.vec3, li: int, ls: Light
     return unoccluded(scene, o, wp.vec3(seg[0], seg[1], seg[2]), seg[3], ls.tri)
 
 
-@wp.func
+@wp.func(inline=True)  # never a copy of the scene record per shadow ray (rays.unoccluded)
 def shadow_segment(scene: SceneRec, o: wp.vec3, p: wp.vec3, li: int, ls: LightSample) -> wp.vec4:
     """The shadow ray of :func:`shadow_ray_clear` as (unit direction, length): from o to the light point
     moved off the light (lights at infinity: along ``ls.wi`` for ``ls.dist``); length 0 when o is on it."""
@@ -185,7 +185,7 @@ def shadow_segment(scene: SceneRec, o: wp.vec3, p: wp.vec3, li: int, ls: LightSa
     return wp.vec4(w[0], w[1], w[2], dist)
 
 
-@wp.func
+@wp.func(inline=True)  # never a copy of the scene record per shadow ray (rays.unoccluded)
 def shadow_ray_pass(scene: SceneRec, o: wp.vec3, p: wp.vec3, li: int, ls: LightSample) -> float:
     """The share of light sample ``ls`` that reaches o along :func:`shadow_ray_clear`'s segment through
     surfaces that pass light (coverage, panes; :func:`.surfaces.transmittance_along`): 0 when blocked."""

@@ -26,15 +26,16 @@ import numpy as np
 from simulator.scene.model import Geometry
 from simulator.scene.vectors import cross3
 
-__all__ = ["MAX_PIECES", "PIECE_M", "PIECES_MIN_GAIN", "SPLIT_M", "EmitterPieces", "split_emitters", "emitter_pieces",
-           "pieces_note"]
+__all__ = ["MAX_PIECES", "PIECE_M", "PIECES_MIN_GAIN", "SPLIT_M", "EmitterPieces", "split_emitters", "emitter_cuts",
+           "element_index", "emitter_pieces", "pieces_note"]
 
 #: target size of a piece (bounding-box diagonal, metres) before the cap grows it
-PIECE_M = 1.0
+PIECE_M = 0.5
 #: emitting triangles with a longer edge than this (metres) are cut
 SPLIT_M = 1.0
-#: most pieces: the pick weighs every piece at each vertex (a loop over them)
-MAX_PIECES = 32
+#: most pieces: a receiver outside every cell of the pieces' table (engine.piece_table) weighs every
+#: piece (a loop over them); in a cell the pick is a binary search of the cell's CDF
+MAX_PIECES = 128
 #: most subdivisions per edge of one emitting triangle
 MAX_SPLIT = 16
 #: pieces are kept where the pick pilot predicts that one piece would have at least this many times
@@ -104,19 +105,38 @@ def _importance(emission: np.ndarray) -> np.ndarray:
     return np.maximum(emission[:, 0], 0.0) + np.maximum(emission[:, 1], 0.0) / PICK_LM_PER_W
 
 
+def emitter_cuts(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> np.ndarray:
+    """Subdivisions per edge of each triangle of ``g``: m = ⌈longest edge/h⌉ ≤ ``max_m`` for an
+    emitting one, 1 for the rest."""
+    m = np.ones(g.n_triangles, np.int64)
+    lit = np.flatnonzero(np.any(g.emission > 0, axis=1)) if g.n_triangles else np.zeros(0, np.int64)
+    p = g.points[g.triangles[lit]]  # only emitters are cut: measure only their edges
+    edge = np.max(np.linalg.norm(p - np.roll(p, 1, axis=1), axis=2), axis=1) if len(lit) else np.zeros(0)
+    m[lit] = np.clip(np.ceil(edge / h), 1, max_m).astype(np.int64)
+    return m
+
+
+def element_index(orig: np.ndarray) -> np.ndarray:
+    """Per triangle of :func:`split_emitters`' geometry, its index among the sub-triangles of its
+    original: the patch index k = j·(2m − j) + 2i + upper of simulator.scene.patches (0 for a triangle
+    not cut), since the sub-triangles of one original come together in that order."""
+    first = np.full(int(orig.max()) + 1 if len(orig) else 0, -1, np.int64)
+    idx = np.arange(len(orig))
+    first[orig[::-1]] = idx[::-1]  # each original's first position
+    return idx - first[orig]
+
+
 def split_emitters(g: Geometry, h: float = SPLIT_M, max_m: int = MAX_SPLIT) -> tuple[Geometry, np.ndarray]:
     """``g`` with each emitting triangle longer than ``h`` (longest edge)
     cut into m × m coplanar sub-triangles, m = ⌈edge/h⌉ ≤ ``max_m``; the
     others as they are. Returns the geometry and, per new triangle, the
-    original it came from (every per-triangle array follows it)."""
+    original it came from. The emitter pieces are grouped over these
+    sub-triangles; the device keeps ``g``'s own triangles and samples a
+    sub-triangle as a patch of its original (kernels/lights/emissive.py)."""
     n_tri = g.n_triangles
     if n_tri == 0:
         return g, np.zeros(0, np.int64)
-    lit = np.flatnonzero(np.any(g.emission > 0, axis=1))  # only emitters are cut: measure only their edges
-    p = g.points[g.triangles[lit]]
-    edge = np.max(np.linalg.norm(p - np.roll(p, 1, axis=1), axis=2), axis=1)
-    m = np.ones(n_tri, np.int64)
-    m[lit] = np.clip(np.ceil(edge / h), 1, max_m).astype(np.int64)
+    m = emitter_cuts(g, h, max_m)
     if not (m > 1).any():
         return g, np.arange(n_tri)
     keep = m == 1
@@ -241,13 +261,15 @@ def pieces_note(g: Geometry) -> str | None:
     n_prims = len(np.unique(split.prim[pieces.tris])) if len(split.prim) == split.n_triangles else 1
     cut = split.n_triangles - g.n_triangles
     how = (f"{pieces.n} pieces of at most {pieces.size_m:.2g} m over {n_prims} emitting prim{'s' * (n_prims != 1)}"
-           + (f" (large triangles cut: {cut} more)" if cut else ""))
+           + (f" (large triangles sampled in {split.n_triangles} elements, patches of them: the hierarchy keeps "
+              "the stage's triangles)" if cut else ""))
     if pieces.n == 1:
         return f"emissive geometry: {how}, a triangle picked ∝ its power"
-    return (f"emissive geometry: {how}, a piece picked by its estimated irradiance × a visibility a pilot "
-            f"learns, then a triangle ∝ its power; kept where that pilot predicts one piece would have at least "
-            f"{PIECES_MIN_GAIN:g}× their relative variance, else one piece over the triangles uncut (the run "
-            "record's emitter_pieces says which)")
+    return (f"emissive geometry: {how}, a piece picked by the table of the receiver's cell (each piece's "
+            "irradiance there, shadow rays measure it: engine.piece_table; elsewhere its estimated irradiance × a "
+            "visibility a pilot learns), then an element ∝ its power; kept where that pilot predicts one piece would "
+            f"have at least {PIECES_MIN_GAIN:g}× their relative variance, else one piece over the triangles uncut "
+            "(the run record's emitter_pieces says which)")
 
 
 def _corner_uv(uv: np.ndarray, bc: np.ndarray) -> np.ndarray:

@@ -143,19 +143,22 @@ class SceneRec:
     n_curves: int
     face_curve: wp.array(dtype=wp.int32)  # per triangle: its curved mirror, −1 for none
     curve_sphere: wp.array(dtype=wp.vec4)  # per curved mirror: (centre, radius), the seed of its Newton solve
-    emit_tris: wp.array(dtype=wp.int32)  # emissive triangle ids
-    emit_cdf: wp.array(dtype=float)  # per piece, the inclusive CDF over its emit_tris (last = 1), concatenated
-    emit_prob: wp.array(dtype=float)  # per triangle: its share of its piece's power (0 if not emissive)
-    # emitter pieces (simulator.scene.emitters; lights/emissive.py picks one per sample)
+    # emissive geometry in pieces (kernels/lights/emissive.py reads these through its accessors): every table
+    # in one int and one float array, so that the record (copied into every function that takes it) stays small
     n_pieces: int
-    emit_piece: wp.array(dtype=wp.int32)  # per triangle: its piece, −1 when it does not emit
-    piece_first: wp.array(dtype=wp.int32)  # per piece: its first entry of emit_tris
-    piece_count: wp.array(dtype=wp.int32)  # per piece: its number of triangles
-    piece_centre: wp.array(dtype=wp.vec3)  # area-weighted centroid (m)
-    piece_normal: wp.array(dtype=wp.vec3)  # area-weighted mean front normal (length 1 when flat)
-    piece_shape: wp.array(dtype=wp.vec4)  # (area m², radiance W + lm/683, reach m, two-sided 0/1)
-    piece_factor: wp.array(dtype=float)  # per piece: the learned factor of its pick (a pilot's, 1 before)
-    piece_power: wp.array(dtype=float)  # per piece: its share of the emitted power, π_k (a pick ∝ power's)
+    n_emit_tris: int  # T: the triangles (every one has an entry)
+    n_elems: int  # E: the elements, m² sub-triangles of each emitting triangle cut m × m (m = 1: the triangle)
+    n_cells: int  # C: cells of the pieces' table (engine.piece_table); 0: no table
+    cell_dims: wp.vec3i  # its grid's voxels along x, y, z (G = 6·nx·ny·nz slots)
+    # ints: per triangle its first element (−1: emits nothing) [T] and its cut m [T]; per element its triangle
+    # [E] and piece [E]; the elements grouped by piece [E]; per piece its first entry there [K] and count [K];
+    # the grid's slots, each its cell or −1 [G]
+    emit_ints: wp.array(dtype=wp.int32)
+    # floats: per element its share of its piece's power [E]; per piece the inclusive CDF over its elements in
+    # that order [E]; per piece its learned factor [K] and share of all power [K]; per piece centre (3), mean
+    # front normal (3), area, radiance (W + lm/683), reach, two-sided [10K]; the grid's lowest corner and
+    # 1/spacing [4]; per cell its CDF over the pieces [C·K] and Σ_k of its shadowed estimates [C]
+    emit_floats: wp.array(dtype=float)
     piece_tally: wp.array(dtype=wp.vec4)  # (threads × n_pieces): a pilot's sums, light_pick.tally_pick
     lights: wp.array(dtype=LightRec)
     n_lights: int
@@ -192,6 +195,7 @@ class LightSample:
     value: wp.vec2  # unshadowed L·cosθ/pdf (W/m², lx)
     pdf: float  # solid-angle pdf; 0 for delta lights
     tri: int  # sampled emissive triangle, −1 otherwise
+    elem: int  # its element (kernels/lights/emissive.py), −1 otherwise
 
 
 @dataclass(frozen=True)
@@ -222,6 +226,7 @@ def empty_sample() -> LightSample:
     s.value = wp.vec2(0.0, 0.0)
     s.pdf = 0.0
     s.tri = -1
+    s.elem = -1
     return s
 
 
