@@ -279,7 +279,7 @@ def _office(tmp_path, block: int) -> Path:
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     p = tmp_path / f"office_{block}.toml"
-    p.write_text(OFFICE.format(stage=ROOT / "stages" / "office.usda", model=ROOT / "configs" / "studies" / "ceiling_photosensor_als.toml",
+    p.write_text(OFFICE.format(stage=ROOT / "stages" / "office.usda", model=ROOT / "simulator" / "sensor_models" / "data" / "ceiling_photosensor_als.toml",
                                weather=mod._days(tmp_path), block=block))
     return p
 
@@ -327,7 +327,7 @@ def test_a_set_s_device_setting_is_the_part_s(tmp_path, extra, message):
     from simulator.study.inputs.candidates import build_candidates
 
     p = tmp_path / "s.toml"
-    p.write_text(OPEN.format(stage=ROOT / "stages" / "dome.usda", model=ROOT / "configs" / "studies" / "ceiling_photosensor_als.toml",
+    p.write_text(OPEN.format(stage=ROOT / "stages" / "dome.usda", model=ROOT / "simulator" / "sensor_models" / "data" / "ceiling_photosensor_als.toml",
                              extra=extra) + '[[scenario]]\nname = "x"\nlevels = { sky = 1 }\n')
     study, path = load_study(p)
     scene = load_stage(ROOT / "stages" / "dome.usda", light_units="photometric")

@@ -80,7 +80,8 @@ def test_a_guided_config_writes_the_same_csv_at_1_and_2_threads(tmp_path):
     (``exact+guided``, whose pilot weighs rays and modelled costs, not seconds)."""
     out = []
     for threads in (1, 2):
-        cfg = apply_overrides(_office(), samples=32, csv=tmp_path / f"t{threads}.csv")
+        # 96 sensors × 192 samples: more in all than the guide's pilot (16,384), so the run builds its guide
+        cfg = apply_overrides(_office(), samples=192, csv=tmp_path / f"t{threads}.csv")
         cfg = dataclasses.replace(cfg, simulation=dataclasses.replace(cfg.simulation, threads=threads))
         res = run(cfg, log=lambda *a: None)
         assert res.record["guide"]["sampled"] > 0

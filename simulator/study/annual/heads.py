@@ -105,7 +105,7 @@ def head_hourly(heads, sky_group: str, co, yl: YearLight, stderr: bool = True):
     """Each modelled candidate's hourly channel signals (list of (C, H)), readings (H, n) and their
     standard errors (H, n; None without ``stderr``). The candidates of one model share its factors: one
     recombination per model and channel."""
-    from simulator.study.annual.year import hourly
+    from simulator.study.annual.coefficients import hourly
 
     n = len(heads.index)
     h = yl.d.shape[0]

@@ -55,30 +55,13 @@ import numpy as np
 from simulator.errors import UserError
 from simulator.study.annual import heads as AH
 from simulator.study.inputs import sky_patches as SP
+from simulator.study.annual.coefficients import Coefficients, _sqrt_psd, hourly, replicate_years
 from simulator.study.trace.groups import derive_seed
 
 __all__ = ["AnnualResult", "GlareYear", "run_annual", "sun_patch_levels", "Coefficients", "hourly", "replicate_years"]
 
 #: CIE overcast sky horizontal illuminance the daylight factor is read at (any value: DF is a ratio)
 _DF_SKY_LX = 10000.0
-
-
-@dataclass
-class Coefficients:
-    """Per sensor, the photometric daylight coefficients of the sky's patches (146 slots) and of the lamp groups.
-
-    ``dir``/``ind`` (S, 146) with covariances (S, 146, 146); ``lamp`` (S, G) with (S, G, G)."""
-
-    dir: np.ndarray
-    dir_cov: np.ndarray
-    ind: np.ndarray
-    ind_cov: np.ndarray
-    lamp: np.ndarray
-    lamp_cov: np.ndarray
-    lamp_names: list
-    samples: np.ndarray
-    sun: np.ndarray | None = None  #: (S, B) traced sun per bin less its exact direct part, for the authored sun
-    sun_var: np.ndarray | None = None  #: (S, B) its variance
 
 
 def sun_patch_levels(sun_dir: np.ndarray, sun_lx: np.ndarray, k: int, l_dome: float) -> np.ndarray:
@@ -104,36 +87,6 @@ def sky_levels_of(skies, l_dome: float, ground_reflectance: float) -> np.ndarray
     return d
 
 
-def hourly(co: Coefficients, d: np.ndarray, q: np.ndarray, sun_direct: np.ndarray, stderr: bool = True,
-           sun_bin: np.ndarray | None = None, sun_scale: np.ndarray | None = None, cone: np.ndarray | None = None):  # fmt: skip
-    """Hourly readings (H, S) and their standard errors (see the module's Notes).
-
-    ``cone`` (S,) marks cone photosensors: their *direct* coefficients hold
-    the surfaces they see lit directly (the engine's direct component of a
-    radiance meter is its first hit's light), so the sun in patches ``q``
-    enters their direct coefficients too (and ``sun_direct`` holds only a
-    sun inside the cone). With ``sun_bin`` (H,) and ``sun_scale`` (H,): the
-    sun's light apart from ``sun_direct`` is the traced bin's coefficient
-    times the hour's E_n over the authored sun's (``q`` is then 0)."""
-    dq = d + q
-    mean = d @ co.dir.T + dq @ co.ind.T + sun_direct
-    if cone is not None and cone.any():
-        mean[:, cone] += q @ co.dir[cone].T
-    traced = sun_bin is not None and co.sun is not None
-    if traced:
-        on = sun_bin >= 0
-        mean[on] += co.sun[:, sun_bin[on]].T * sun_scale[on, None]
-    if not stderr:
-        return mean, None
-    var = np.zeros_like(mean)
-    for s in range(co.dir.shape[0]):
-        dd = dq if (cone is not None and cone[s]) else d
-        var[:, s] = np.sum((dd @ co.dir_cov[s]) * dd, axis=1) + np.sum((dq @ co.ind_cov[s]) * dq, axis=1)
-    if traced:
-        var[on] += co.sun_var[:, sun_bin[on]].T * sun_scale[on, None] ** 2
-    return mean, np.sqrt(np.maximum(var, 0.0))
-
-
 def sun_bins(sun_dir: np.ndarray, lit: np.ndarray, bin_deg: float) -> tuple[np.ndarray, list]:
     """Each lit hour's sun-position bin (−1 where unlit) and each bin's traced sun ``(azimuth, elevation)``.
 
@@ -156,27 +109,6 @@ def sun_bins(sun_dir: np.ndarray, lit: np.ndarray, bin_deg: float) -> tuple[np.n
         m /= np.linalg.norm(m)
         suns.append((float(np.mod(np.degrees(np.arctan2(m[0], m[1])), 360.0)), float(np.degrees(np.arcsin(m[2])))))
     return out, suns
-
-
-def _sqrt_psd(c: np.ndarray) -> np.ndarray:
-    """A with A Aᵀ = c for a covariance (negative eigenvalues from rounding set to 0), per leading index."""
-    w, v = np.linalg.eigh(c)
-    return v * np.sqrt(np.maximum(w, 0.0))[..., None, :]
-
-
-def replicate_years(co: Coefficients, replicates: int, seed: int):
-    """Yield ``replicates`` coefficient sets redrawn from N(ĉ, C) per sensor (a fixed seed)."""
-    rng = np.random.default_rng(seed)
-    ad, ai = _sqrt_psd(co.dir_cov), _sqrt_psd(co.ind_cov)
-    al = _sqrt_psd(co.lamp_cov) if co.lamp.shape[1] else None
-    for _ in range(replicates):
-        zd = rng.standard_normal(co.dir.shape)
-        zi = rng.standard_normal(co.ind.shape)
-        zl = rng.standard_normal(co.lamp.shape)
-        lamp = co.lamp + (np.einsum("sgk,sk->sg", al, zl) if al is not None else 0.0)
-        sun = None if co.sun is None else co.sun + np.sqrt(np.maximum(co.sun_var, 0.0)) * rng.standard_normal(co.sun.shape)
-        yield Coefficients(co.dir + np.einsum("spk,sk->sp", ad, zd), co.dir_cov, co.ind + np.einsum("spk,sk->sp", ai, zi), co.ind_cov,
-                           lamp, co.lamp_cov, co.lamp_names, co.samples, sun, co.sun_var)  # fmt: skip
 
 
 @dataclass
