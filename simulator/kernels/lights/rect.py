@@ -20,8 +20,7 @@ k = cos²α, w₀ = corner − p, a_0 = w₀·a, a_u = ex·a, a_v = ey·a,
 b_u = w₀·ex, b_v = w₀·ey. The lines u = u₀ tangent to it are those of its
 dual conic C = adj M: C11 − 2u₀·C13 + u₀²·C33 = 0, so the ellipse spans
 u ∈ (C13 ± √(C13² − C11·C33))/C33, and v likewise with C22, C23
-(J. Richter-Gebert, "Perspectives on Projective Geometry", 2011, §9: dual
-conics). The cone cuts an ellipse, bounded, when it lies wholly on the
+(docs/REFERENCES.md §Light samples in a narrow field). The cone cuts an ellipse, bounded, when it lies wholly on the
 light's side of p, a·ez > sin α; elsewhere the window is the whole light.
 """
 
@@ -177,7 +176,7 @@ def sample_field(l: LightRec, p: wp.vec3, n: wp.vec3, a: wp.vec3, cos_f: float, 
     ``FIELD_CANDIDATES`` such candidates x_j one picked with probability ∝ r(x_j)/p(x_j) (resampled
     importance sampling toward r, L being the same over the light). The picked y carries the weight
     W = (1/r(y))·(1/M)·Σ r(x_j)/p(x_j) in place of 1/p(y): E[g(y)·W] = ∫ g dω over the window for any g
-    that is 0 where r is (Talbot et al. 2005), so value = L·cosθ·W keeps every estimate that weighs it
+    that is 0 where r is (docs/REFERENCES.md §Light samples in a narrow field), so value = L·cosθ·W keeps every estimate that weighs it
     unbiased, and one shadow ray reads M candidates' worth of the response's spread over the light.
     Its ``pdf`` is p(y), the uniform window's density, which MIS weighs (any weights that sum to 1 with
     the directions' own keep the sum unbiased). Nothing where the window is empty or r is 0 on every
