@@ -435,8 +435,9 @@ def _rect_reading(light: Light, resp, power: float = 1.0, whole: bool = False) -
 @pytest.mark.parametrize("method", ["light", "mis", "bsdf"])
 def test_narrow_head_under_a_rect_light_partly_in_its_field(resp, method):
     """A 10° head looking up at a 1.2 m × 0.3 m RectLight (4000 cd/m², 2 m up, its centre 0.25 m and
-    0.1 m aside, so its field holds part of it) reads L·∫ r dω over the light (docs/REFERENCES.md §Sensor
-    models; _rect_reading, by quadrature: 196.0 W/m² for the cone, 175.5 W/m² for the half-power head):
+    0.1 m aside, so its field holds part of it) reads L·∫ r dω over the light
+    (docs/REFERENCES.md §Sensor models; by quadrature in _rect_reading: 196.0 W/m² for the cone, 175.5
+    W/m² for the half-power head):
     by light samples drawn toward r in the field (light; for the cosⁿ head over the whole light, which has
     no edge outside which r is 0), by those and the directions drawn by r under MIS (mis: the cosⁿ head's
     window where r ≥ 0.01, the rest the directions'), and by the directions alone (bsdf). Within 4

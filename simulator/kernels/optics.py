@@ -59,7 +59,7 @@ class OpticsRec:
     cond: wp.array(dtype=float)  # (rows × (cols + 1)): conditional CDFs over φ bins
     row_mu: wp.array(dtype=float)  # (rows,): cos of each θ bin's top (its smaller θ)
     row_dmu: wp.array(dtype=float)  # (rows,): cos θ_j − cos θ_{j+1}, > 0
-    cos_field: float  # cos of the field's half-angle for light samples at the head (≤ 0: none; see optics_field)
+    cos_field: float  # cos of the field's half-angle for light samples at the head (< 0.5: a wide head, see optics_narrow)
     field_exact: int  # 1: r = 0 past the field (a table's last knot); 0: r is only small there (cosⁿ)
 
 
