@@ -12,15 +12,19 @@ load-independent) and the samples a 95 % half-width of ±1 % needs, n₁ % = (1.
 of a narrow head's to the cosine's. The estimator is the same for all (``--method``; ``path`` by
 default, the engine's plain paths: the guide's pilot would otherwise be learnt from the first sensors).
 
-``--decompose`` splits each narrow head's variance per sample in two. With its directions drawn by its
-response (p = r/∫r dω) a sample is Y = ∫r dω · L̂(ω), L̂ the path's estimate of the radiance arriving
-along ω, so Var Y = (∫r dω)²·(Var_p L(ω) + E_p Var(L̂ | ω)): the first part is all that any choice of
-the head's first direction (its response times a guide toward the bright surfaces it sees, or MIS with
-the light sampler) can remove; the second is the paths' own, after their first hit. The first part is
-measured by ``--directions`` directions drawn by r on the host and the engine's one-direction radiance
-meter along each (``--dir-samples`` samples): Var_p L = the spread of those readings less their mean
-squared standard error. The script prints that share of the head's variance, and the largest factor
-by which a perfect first-direction sampler could cut it, 1/(1 − share).
+``--decompose`` splits each narrow head's variance per sample, one path a sample (no split), in three.
+The head's sample is D + I: D its direct light (its light samples, drawn toward r within its field, and
+the emitters its first direction meets, combined by MIS), I the light reflected on the way (read with
+``component = "direct"`` and ``"indirect"``, ``--samples`` each). With that direction drawn by r
+(p = r/∫r dω) I = ∫r dω · L̂_r(ω), L̂_r the path's estimate of the reflected radiance L_r arriving along
+ω, so Var I = (∫r dω)²·(Var_p L_r(ω) + E_p Var(L̂_r | ω)): the first part is all that a better choice of
+the head's first direction could remove from I; the second is the paths' own after their first hit,
+which a narrow head, its single first hit the whole estimate, pays in full. Var_p L_r is measured by
+``--directions`` directions drawn by r on the host and the engine's one-direction radiance meter along
+each (``--dir-samples`` samples), less the emitters along each (the same meter over the stage with
+black surfaces): their spread less their mean squared standard error. The rest of Var I is the paths'.
+Each part is printed over the head's reading squared, so the three add up to one path's relative
+variance; ``v_run`` is the head's as run (with the engine's split, K paths a sample).
 """
 
 from __future__ import annotations
@@ -112,36 +116,53 @@ def _directions(resp, n: int, rng) -> np.ndarray:
     return np.array(out[:n])
 
 
-def decompose(rows: list[dict], method: str, seed: int, directions: int, dir_samples: int) -> list[dict]:
-    """Per point and narrow head: the share of its variance per sample that comes from its first direction
-    (see module docstring), with the standard error of that share from the directions' spread."""
+def decompose(rows: list[dict], method: str, seed: int, samples: int, directions: int, dir_samples: int) -> list[dict]:
+    """Per point and narrow head, its one-path variance per sample split in three (module docstring): the
+    direct part (the head's own light samples and the emitters its drawn directions meet), the indirect
+    part's first direction (Var_p of the reflected radiance L_r(ω) over the field), and the indirect paths'
+    own after their first hit. Each is a variance per sample over the head's reading squared (so the three
+    add up to the relative variance of one sample without the split)."""
+    from dataclasses import replace
+
     from simulator.engine.driver import Engine
     from simulator.scene.model import Sensor, SensorKind
     from simulator.scene.usd import load_stage
 
     out = []
     rng = np.random.default_rng(seed)
-    scenes = {}
-    for r in rows:
-        scene = scenes.setdefault(r["stage"], load_stage(ROOT / "stages" / r["stage"], light_units="photometric"))
-        n = np.array(r["normal"], float) / np.linalg.norm(r["normal"])
-        t = np.cross(n, [1.0, 0.0, 0.0] if abs(n[0]) < 0.9 else [0.0, 1.0, 0.0])
-        t /= np.linalg.norm(t)
-        frame = np.column_stack([t, np.cross(n, t), n])
+    for stage in dict.fromkeys(r["stage"] for r in rows):
+        scene = load_stage(ROOT / "stages" / stage, light_units="photometric")
+        # the same stage with black surfaces: a meter there reads only the emitters along its direction, L_e(ω)
+        black = replace(scene, geometry=replace(scene.geometry, albedo=np.zeros_like(scene.geometry.albedo)))
+        pts = [r for r in rows if r["stage"] == stage]
         for name, resp in heads().items():
-            d = _directions(resp, directions, rng) @ frame.T
-            sensors = [Sensor(f"d{j}", SensorKind.RADIANCE, np.array(r["position"], float), d[j]) for j in range(len(d))]
-            res = Engine(scene, sensors).run(method, samples=dir_samples, seed=seed)
-            lum, se = res.mean[:, 1], res.stderr[:, 1]
-            k = resp.integral_sr()
-            var_l = float(np.var(lum, ddof=1) - np.mean(se**2))
-            m, v = r[name][0], r[name][1]
-            total = v * m * m  # the head's variance per sample, lx²
-            share = k * k * var_l / total if total > 0 else float("nan")
-            # its standard error: the spread of (L − mean)² over the directions
-            share_se = k * k * float(np.std((lum - lum.mean()) ** 2, ddof=1)) / np.sqrt(len(lum)) / total if total > 0 else float("nan")
-            out.append({"stage": r["stage"], "position": r["position"], "head": name, "reading": m, "reading_dirs": k * float(lum.mean()),
-                        "share": share, "share_se": share_se})
+            sensors = [Sensor(f"{k}", SensorKind.IRRADIANCE, np.array(r["position"], float),
+                              np.array(r["normal"], float) / np.linalg.norm(r["normal"]), optics=resp)
+                       for k, r in enumerate(pts)]
+            eng = Engine(scene, sensors)
+            parts = {c: eng.run(method, samples=samples, seed=seed, component=c) for c in ("direct", "indirect")}
+            for k, r in enumerate(pts):
+                n = np.array(r["normal"], float) / np.linalg.norm(r["normal"])
+                t = np.cross(n, [1.0, 0.0, 0.0] if abs(n[0]) < 0.9 else [0.0, 1.0, 0.0])
+                t /= np.linalg.norm(t)
+                frame = np.column_stack([t, np.cross(n, t), n])
+                d = _directions(resp, directions, rng) @ frame.T
+                meters = [Sensor(f"d{j}", SensorKind.RADIANCE, np.array(r["position"], float), d[j]) for j in range(len(d))]
+                tot = Engine(scene, meters).run(method, samples=dir_samples, seed=seed)
+                emi = Engine(black, meters).run(method, samples=64, seed=seed)
+                lr = tot.mean[:, 1] - emi.mean[:, 1]  # the reflected radiance along each direction, cd/m²
+                se2 = tot.stderr[:, 1] ** 2 + emi.stderr[:, 1] ** 2
+                kk = resp.integral_sr()
+                m = r[name][0]
+                var = {c: parts[c].samples[k] * parts[c].stderr[k, 1] ** 2 for c in parts}
+                first = kk * kk * max(0.0, float(np.var(lr, ddof=1) - np.mean(se2)))
+                first_se = kk * kk * float(np.std((lr - lr.mean()) ** 2, ddof=1)) / np.sqrt(len(lr))
+                out.append({"stage": stage, "position": r["position"], "head": name, "reading": m,
+                            "direct": parts["direct"].mean[k, 1], "indirect": parts["indirect"].mean[k, 1],
+                            "indirect_dirs": kk * float(lr.mean()),
+                            "v_direct": var["direct"] / m**2, "v_first": first / m**2, "v_first_se": first_se / m**2,
+                            "v_paths": max(0.0, var["indirect"] - first) / m**2, "v_indirect": var["indirect"] / m**2,
+                            "v_run": r[name][1]})
     return out
 
 
@@ -178,12 +199,15 @@ def main(argv=None) -> int:
               + "   " + ", ".join(f"{a:.2f}, {b:.2f}" for a, b in ratios))
     print(f"largest samples ratio: {worst:.2f}")
     if args.decompose:
-        print(f"\nfirst direction's share of each head's variance per sample ({args.directions} directions drawn by r, "
-              f"{args.dir_samples} samples each; the best a first-direction sampler can do: 1/(1 − share))")
-        for d in decompose(rows, args.method, args.seed, args.directions, args.dir_samples):
-            print(f"{d['stage']:<16} {str(d['position']):<18} {d['head']:<15} reading {d['reading']:>9.4g} lx "
-                  f"(from the directions {d['reading_dirs']:>9.4g}) share {d['share']:>6.3f} ± {d['share_se']:.3f} "
-                  f"best cut {1.0 / max(1e-9, 1.0 - d['share']):>6.2f}×")
+        print(f"\none path's relative variance per sample (no split), in three: direct (the head's light samples and "
+              f"the emitters its directions meet; {args.samples} samples), the indirect part's first direction "
+              f"(Var_p L_r over {args.directions} directions drawn by r, {args.dir_samples} samples each) and its "
+              "paths after the first hit; v_run: the head's as run (the split's K paths a sample)")
+        for d in decompose(rows, args.method, args.seed, args.samples, args.directions, args.dir_samples):
+            print(f"{d['stage']:<16} {str(d['position']):<18} {d['head']:<15} reading {d['reading']:>9.4g} lx = direct "
+                  f"{d['direct']:>9.4g} + indirect {d['indirect']:>9.4g} (from the directions {d['indirect_dirs']:>9.4g}); "
+                  f"v direct {d['v_direct']:>7.3f}  first direction {d['v_first']:>7.3f} ± {d['v_first_se']:.3f}  "
+                  f"paths {d['v_paths']:>7.3f}  (indirect {d['v_indirect']:>7.3f}; v_run {d['v_run']:>7.3f})")
     return 0
 
 

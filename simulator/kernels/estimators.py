@@ -45,7 +45,7 @@ from typing import Any, Callable
 
 import warp as wp
 
-from simulator.scene.model import Sensor, SensorKind
+from simulator.scene.model import LightKind, Sensor, SensorKind
 
 from .group_tally import clear_group_sample, fold_group_sample, tally_group, tregenza_patch
 from .guide import glossy_mixture_factor, guide_fraction, guide_row, make_guided_step, mixture_factor, pdf_guide, tally_patch
@@ -53,6 +53,9 @@ from .light_pick import (LM_TO_W, LightPick, computed_at, is_delta, pick_light, 
                          tally_patch_pick, tally_pick)
 from .lights.emissive import pdf_at as emissive_pdf_at
 from .lights.emissive import sample_piece
+from .lights.base import empty_sample
+from .lights.rect import pdf_field as rect_pdf_field
+from .lights.rect import sample_field as rect_sample_field
 from .lights import (  # noqa: F401  (GuideRec, LightRec, SceneRec re-exported for the engine)
     RAY_INF,
     GuideRec,
@@ -92,7 +95,7 @@ from .curved import curve_covers
 from .glints import glint_pdf, glint_sample, glint_share
 from .surface_rec import GlintRec
 from .shaping import shaping_factor
-from .optics import optics_frame_x, optics_pdf, optics_to_world, optics_weight, sample_optics
+from .optics import optics_field, optics_frame_x, optics_narrow, optics_pdf, optics_to_world, optics_weight, sample_optics
 from .spectral import Reflection, hero_nodes, lane_response, spectral_contribution, spectral_row
 from .spectral_surfaces import (
     bsdf_lanes, coloured_row, lane_ratio, mirror_lanes, pass_through_traced, shadow_lanes, walk_before,
@@ -128,6 +131,8 @@ def trace_module(surfaces: bool) -> str:
 MAX_VERTICES = wp.constant(65536)
 # a radiance meter's ray reflected off more panes than this (two facing panes) is taken as absorbed
 MAX_MIRRORS = wp.constant(64)
+# a rect light: sampled within a narrow head's field at the head's own vertex (kernels.lights.rect.sample_field)
+_RECT_LIGHT = wp.constant(int(LightKind.RECT))
 
 # Russian roulette weight window: a path's throughput β never falls below
 # TraceParams.rr_threshold (see vertex_irradiance); the engine sets it per
@@ -569,13 +574,23 @@ def make_trace(surfaces: bool) -> Trace:
         img_prev = int(0)  # 1: the vertex before p ran the image-source connection (kernels.mirrors)
         # a sensor model's angular response r(ω) at the sensor's own vertex (kernels.optics; params.optics > 0,
         # depth 0): light samples weigh r(ω)/cosθ, the direction is drawn by r (pdf in every MIS weight),
-        # and the guide and glints, strategies of cosine vertices, are not drawn there
+        # and the guide and glints, strategies of cosine vertices, are not drawn there; a narrow head
+        # (f_on) draws a rect light's samples toward r, within its field (cos α = f_cos; −1: the whole
+        # light; kernels.optics.optics_field, kernels.lights.rect.sample_field)
         opt = params.optics
         opt_x = wp.vec3(1.0, 0.0, 0.0)
         rr_t = params.rr_threshold  # the roulette's threshold on β: a head's paths carry ∫r dω/π of a cosine's
+        f_on = int(0)
+        f_cos = float(-1.0)
         if opt > 0:
             opt_x = optics_frame_x(params.optics_x, n_in)
             rr_t = params.rr_threshold * (scene.optics[opt - 1].integral * INV_PI)
+            both = int(0)  # light samples and directions drawn by r, combined by MIS
+            if params.mis != 0 and params.bsdf != 0:
+                both = 1
+            if optics_narrow(scene.optics[opt - 1]):
+                f_on = 1
+                f_cos = optics_field(scene.optics[opt - 1], both)
         # a glossy vertex's shading normal (kernels.glossy.vertex_normal; n elsewhere), and whether it has one of
         # its own (sh: its rays then leave past the face they head into, kernels.glossy.spawn_origin)
         ns = n_in
@@ -651,7 +666,13 @@ def make_trace(surfaces: bool) -> Trace:
                         if li != pk.li:
                             continue
                         sel = pk.prob
-                    ls = sample_light(scene, li, p, ns, u)  # geometry from the true point; only rays start at o
+                    ls = empty_sample()  # geometry from the true point; only rays start at o
+                    if o_on != 0 and f_on != 0 and scene.lights[li].kind == _RECT_LIGHT:  # toward r, in its field
+                        fd = rect_sample_field(scene.lights[li], p, n, n, f_cos, scene.optics[opt - 1], opt_x, rng)
+                        ls = fd.s
+                        rng = fd.rng
+                    else:
+                        ls = sample_light(scene, li, p, ns, u)
                     ls.value = ls.value * (shaping_factor(scene.lights[li], -ls.wi) / sel)
                     if o_on != 0:  # the head reads L·r(ω): r(ω)/cosθ in place of the cosine ls.value carries
                         ls.value = ls.value * optics_weight(scene.optics[opt - 1], opt_x, n, ls.wi)
@@ -978,7 +999,12 @@ def make_trace(surfaces: bool) -> Trace:
                 if t > 0.0 and count and not computed_at(scene, params.mask_row, depth, li):
                     w = float(1.0)
                     if weigh:
-                        pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_light(scene, li, o, ns, wi, t, -1)
+                        pdf_one = float(0.0)
+                        if o_on != 0 and f_on != 0 and l.kind == _RECT_LIGHT:  # drawn within the head's field
+                            pdf_one = rect_pdf_field(l, p, n, f_cos, o + t * wi)
+                        else:
+                            pdf_one = pdf_light(scene, li, o, ns, wi, t, -1)
+                        pdf_l = pick_scale(scene, params, pk, li, p, n, depth) * pdf_one
                         w = power_heuristic(pdf_b, pdf_l)
                     elif (ia_prev != 0 and (mirror_now != 0 or delta != 0) and cur_face >= 0) if wp.static(surfaces) else False:
                         # past a flat mirror from a vertex that sampled this light in it: against that sample

@@ -59,6 +59,8 @@ class OpticsRec:
     cond: wp.array(dtype=float)  # (rows × (cols + 1)): conditional CDFs over φ bins
     row_mu: wp.array(dtype=float)  # (rows,): cos of each θ bin's top (its smaller θ)
     row_dmu: wp.array(dtype=float)  # (rows,): cos θ_j − cos θ_{j+1}, > 0
+    cos_field: float  # cos of the field's half-angle for light samples at the head (< 0.5: a wide head, see optics_narrow)
+    field_exact: int  # 1: r = 0 past the field (a table's last knot); 0: r is only small there (cosⁿ)
 
 
 @wp.struct
@@ -216,7 +218,32 @@ def optics_pdf(o: OpticsRec, x: wp.vec3, n: wp.vec3, wi: wp.vec3) -> float:
     return pdf_optics(o, optics_to_local(wi, x, n))
 
 
+@wp.func
+def optics_narrow(o: OpticsRec) -> bool:
+    """Whether light samples at the head's vertex are drawn toward its response (a rect light's,
+    kernels.lights.rect.sample_field): a field under 60° (wider heads gain little over the plain sample)."""
+    return o.cos_field >= 0.5
+
+
+@wp.func
+def optics_field(o: OpticsRec, mis: int) -> float:
+    """cos α of the cone within which a narrow head's light samples are drawn (a rect light's part in it,
+    kernels.lights.rect.field_window), or −1: over the whole light. A table head is 0 past its last knot,
+    so any estimator may leave the rest out; a cosⁿ head's r is only small past its field (r ≤
+    ``FIELD_RESPONSE``), so only where MIS (``mis`` ≠ 0) gives that rest to the directions drawn by r,
+    which reach every direction with r > 0."""
+    if o.field_exact == 0 and mis == 0:
+        return -1.0
+    return o.cos_field
+
+
 # ---------------------------------------------------------------- host
+
+#: a cosⁿ head's field for light samples: where r falls to this; past it (a share cos^{n+1}α ≈ FIELD_RESPONSE
+#: of ∫r dω) only the directions drawn by r reach a light (docs/DESIGN.md §Sensor models, narrow fields)
+FIELD_RESPONSE = 0.01
+#: a table head's field: its last knot, widened by this (radians) against float32 rounding of the window
+FIELD_MARGIN_RAD = 0.005
 
 
 def optics_record(response, keep: list) -> OpticsRec:
@@ -234,11 +261,14 @@ def optics_record(response, keep: list) -> OpticsRec:
         return out
 
     if response.kind == "power":
+        r.cos_field, r.field_exact = float(FIELD_RESPONSE ** (1.0 / float(response.exponent))), 0
         r.kind, r.exponent = 1, float(response.exponent)
         r.n_theta, r.n_phi, r.rows, r.cols, r.d_theta = 0, 1, 1, 1, 1.0
         r.theta = r.phi = r.values = r.marg = r.cond = r.row_mu = r.row_dmu = arr([0.0])
         return r
     t = response.sampling_tables()
+    r.cos_field = float(np.cos(min(np.pi / 2, np.radians(response.theta_deg[-1]) + FIELD_MARGIN_RAD)))
+    r.field_exact = 1
     r.kind, r.exponent = 0, 0.0
     r.n_theta, r.n_phi = len(response.theta_deg), len(response.phi_deg)
     r.theta = arr(np.radians(response.theta_deg))
