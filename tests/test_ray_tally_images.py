@@ -6,7 +6,7 @@ the light lies on the mirror's other side (a sun outside a window, seen from the
 reflection cannot reach the vertex. The tally (``count_rays``: what the split, roulette and hybrid
 pilots weigh as each strategy's cost, and ``probesim bench``'s rays) counts a try only once it
 casts a ray. On the glazed office the tries settled before any ray had been 4.2 of the 11.5 rays
-tallied per indirect path (docs/DESIGN.md §Glazed office: where its cost came from).
+tallied per indirect path (docs/DESIGN.md §The glazed office: where its cost came from).
 
 The stage (stages/glazing.usda): a zero-angle sun of E⊥ = 1000 lx at the zenith over a clear
 pane of ior 1.52 (z = 1 m), nothing else but a datasheet pane beside it in the same plane and
