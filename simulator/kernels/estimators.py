@@ -745,11 +745,12 @@ def make_trace(surfaces: bool) -> Trace:
                     for k in range(scene.n_mirror_planes + scene.n_curves):
                         if k >= scene.n_mirror_planes and (pm >= 1.0 or k - scene.n_mirror_planes == c_here):
                             continue  # a pure mirror's value would be 0 (no lobe but the delta); p's own curved mirror
-                        count_shadow_ray(scene, params)
                         u_im = wp.vec2(0.0, 0.0)
                         if is_cone_light(scene.lights[li]):  # drawn for the sun only: others keep their stream
                             u_im = wp.vec2(wp.randf(rng), wp.randf(rng))
                         im = image_source(scene, li, k, p, ns, o, u_im, sh)
+                        if im.traced != 0:  # tallied only where it cast a ray: most are settled before any (the
+                            count_shadow_ray(scene, params)  # light on the mirror's other side), at no cost
                         v = im.value
                         if o_on != 0:
                             v = v * optics_weight(scene.optics[opt - 1], opt_x, n, im.wi)
@@ -775,8 +776,9 @@ def make_trace(surfaces: bool) -> Trace:
                         for k in range(scene.n_mirror_planes):
                             if scene.plane_mirror[k] == 0:
                                 continue
-                            count_shadow_ray(scene, params)
                             im = area_image(scene, li, k, p, ns, o, wp.vec3(wp.randf(rng), wp.randf(rng), wp.randf(rng)), sh)
+                            if im.traced != 0:  # tallied only where it cast a ray (as above)
+                                count_shadow_ray(scene, params)
                             v = im.value
                             if v[0] > 0.0 or v[1] > 0.0:
                                 tint_m = tint

@@ -100,6 +100,7 @@ class ImageSample:
     pane: int  # 1: the mirror face is a pane's (its reflectance is the slab's, grey)
     pdf: float  # an area light's image sample: its solid-angle pdf at the receiver (0 for a delta light's image)
     tri: int  # the emissive triangle the light sample ends on, −1 for UsdLux lights
+    traced: int  # 1 once the connection casts a ray (the ray tally counts it then: kernels.rays.count_shadow_ray)
 
 
 @wp.func
@@ -123,6 +124,7 @@ def no_image(n: wp.vec3) -> ImageSample:
     out.wi = n
     out.pdf = 0.0
     out.tri = -1
+    out.traced = 0
     return out
 
 
@@ -172,6 +174,7 @@ def image_source(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp
     o_w = o
     if shaded != 0:
         o_w = spawn_origin(p, o, wi)
+    out.traced = 1
     # to the plane, through what passes light on the way, to a mirror face of plane k
     vis_in = float(1.0)
     start = float(0.0)
@@ -270,6 +273,7 @@ def curve_image(scene: SceneRec, li: int, c: int, p: wp.vec3, n: wp.vec3, o: wp.
     sph = scene.curve_sphere[c]
     if wp.dot(n, wp.vec3(sph[0], sph[1], sph[2]) - p) <= -sph[3]:
         return out  # the mirror lies wholly behind the receiver's plane
+    out.traced = 1
     cs = curve_solve(scene, c, o, tgt, point)
     if cs.ok == 0:
         return out
@@ -375,6 +379,7 @@ def area_image(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp.v
     o_w = o
     if shaded != 0:
         o_w = spawn_origin(p, o, wi)
+    out.traced = 1
     vis_in = float(1.0)
     start = float(0.0)
     face = int(-1)
