@@ -139,51 +139,6 @@ def exact_costs(scene: Scene, sensors: list[Sensor], records: list[list[int]]) -
             if tidx is not None:
                 blocked[w, r] |= tidx.cull(pl, count_only=True) > 0
     return out, blocked
-    trans = transmitting(scene.geometry)
-    tidx = occluder_index(scene, trans) if trans.any() else None
-    P = np.array([s.position for s in sensors], float)
-    N = np.array([s.normal for s in sensors], float)
-    N /= np.linalg.norm(N, axis=1, keepdims=True)
-    idx = occluder_index(scene)
-    for r in range(n_rec):
-        who = np.array([i for i, rs in enumerate(records) if r in rs], np.int64)
-        if not len(who):
-            continue
-        polys = record_polygons(scene, r)
-        if polys is None:  # a dome: five faces, each may hold what is above the horizon
-            pl = np.concatenate([N[who], np.einsum("sd,sd->s", N[who], P[who])[:, None]], axis=1)[:, None]
-            n_occ = idx.cull(pl, count_only=True) if idx.n else np.zeros(len(who), np.int64)
-            out[who, r] = 5 * EXACT_JOB_S + 1.5 * EXACT_OCCLUDER_S * n_occ
-            if tidx is not None:
-                blocked[who, r] = tidx.cull(pl, count_only=True) > 0
-            continue
-        for q in range(len(polys.cnt)):
-            V, c = polys.V[q], int(polys.cnt[q])
-            m = np.cross(V[1] - V[0], V[2] - V[0])
-            side = (P[who] - V[0]) @ m
-            sees = (np.abs(side) > 0) & (~polys.one_sided[q] | (side > 0))
-            sees &= np.any((V[:c][None] - P[who][:, None]) @ N[who][:, :, None] > 0, axis=(1, 2))
-            w = who[sees]
-            if not len(w):
-                continue
-            if polys.combine == "bound" and q == 1:
-                out[w, r] *= 2.0  # the outer polygon costs what the inner did
-                continue
-            if not idx.n:
-                out[w, r] += EXACT_JOB_S
-                continue
-            sd = np.where((P[w] - V[0]) @ m > 0, 1.0, -1.0)
-            order = np.concatenate([np.flatnonzero(sd > 0)[_morton_order(P[w][sd > 0])] if np.any(sd > 0) else np.zeros(0, int),
-                                    np.flatnonzero(sd < 0)[_morton_order(P[w][sd < 0])] if np.any(sd < 0) else np.zeros(0, int)])
-            n_pos = int(np.sum(sd > 0))
-            starts = np.r_[np.arange(0, n_pos, 32), np.arange(n_pos, len(w), 32)]
-            ends = np.r_[starts[1:], len(w)]
-            cp = cluster_planes(P[w][order], N[w][order], V, c, sd[order[starts]], starts, ends)
-            n_occ = idx.cull(cp, count_only=True)
-            out[w[order], r] += EXACT_JOB_S + EXACT_OCCLUDER_S * np.repeat(n_occ, ends - starts)
-            if tidx is not None:
-                blocked[w[order], r] |= np.repeat(tidx.cull(cp, count_only=True) > 0, ends - starts)
-    return out, blocked
 
 
 def _coverable(scene: Scene, culled: list[str]) -> tuple[list[int], list[int], str | None]:
