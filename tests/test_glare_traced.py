@@ -227,3 +227,41 @@ def test_bad_glare_input_is_one_line(tmp_path):
            name="prim.usda")  # fmt: skip
     with pytest.raises(UserError, match=r"/Eye.*probesim:sensor:evalglare: -b needs a value"):
         load_stage(tmp_path / "prim.usda", light_units="photometric", radiometric_spectrum="E")
+
+
+LAMP_AHEAD = '''def DomeLight "Sky"
+{
+    float inputs:intensity = 100
+}
+def RectLight "Lamp"
+{
+    float inputs:intensity = 5000
+    float inputs:width = 0.6
+    float inputs:height = 0.6
+    float3 xformOp:rotateXYZ = (-90, 0, 0)
+    double3 xformOp:translate = (0, 3, 0)
+    uniform token[] xformOpOrder = ["xformOp:translate", "xformOp:rotateXYZ"]
+}
+'''
+
+
+def test_a_lamps_ugr_counts_the_pixels_its_edge_covers_in_part(tmp_path):
+    """A 0.6 m square lamp of 5,000 cd/m² 3 m straight ahead (P = 1) in a uniform 100 cd/m² sky, at 1.4°
+    pixels (the lamp is 8 pixels across). A RectLight hides nothing, so the lamp's pixels read
+    L_s + L_d; its solid angle is the square's, ω = 4·asin(a²/(a² + 4d²)) (closed_forms.rect_solid_angle_centred,
+    docs/REFERENCES.md §Solid angle of a rectangle), and the background L_b = L_d·(1 − C/π), C = ∫cos dω over
+    the square (closed_forms.polygon_irradiance at unit radiance): UGR = 8·log10(0.25/L_b·(L_s + L_d)²·ω) =
+    27.33. The edge pixels the lamp covers in part read below evalglare's 2,000 cd/m² threshold and left the
+    source, so the source's L²ω read low (27.21 here, 0.13 below: more than 4σ); read by its parts
+    (core luminance × covered solid angle), UGR is within 4 standard errors + 0.02."""
+    stage = _stage(tmp_path, LAMP_AHEAD)
+    _, (r,) = _run(stage, [_view(resolution=(128, 128))], seed=3)
+    e = r.estimate
+    omega = float(cf.rect_solid_angle_centred(0.6, 0.6, 3.0))
+    square = np.array([[-0.3, 3.0, -0.3], [0.3, 3.0, -0.3], [0.3, 3.0, 0.3], [-0.3, 3.0, 0.3]])
+    c = float(cf.polygon_irradiance(1.0, square, np.zeros(3), np.array([0.0, 1.0, 0.0])))
+    lb = 100.0 * (1.0 - c / math.pi)
+    truth = 8.0 * math.log10(0.25 / lb * 5100.0**2 * omega)
+    assert len(e.sources) == 1
+    assert e.background_cd_m2 == pytest.approx(lb, rel=2e-3)
+    assert abs(e.ugr - truth) <= 4.0 * e.ugr_stderr + 0.02, (e.ugr, e.ugr_stderr, truth)
