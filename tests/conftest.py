@@ -1,4 +1,4 @@
-"""Fixtures that several test files share, so that an expensive run is made once per test session.
+"""Fixtures that several test files share, so that an expensive run is made once per pytest run.
 
 - ``office_guided``: the office's 1,464 guided readings against the stored
   reference, checked by tests/test_guide.py (the guide), tests/test_split.py

@@ -128,6 +128,100 @@ def no_image(n: wp.vec3) -> ImageSample:
     return out
 
 
+@wp.struct
+class MirrorPoint:
+    """Where a connection's ray from the receiver meets the mirror face it aims at (:func:`reach_mirror`)."""
+
+    face: int  # the mirror triangle, −1 where the ray meets none (or a matte face, or nothing passes)
+    ng: wp.vec3  # its geometric normal
+    t: float  # from the ray's origin to the mirror point
+    vis: float  # the share the faces passed on the way let through (panes, cut-outs)
+    m_off: wp.vec3  # the mirror point, offset to the receiver's side of the plane
+    cover: float  # the face's mirror share there: its coverage, or a translucent layer's gap 1 − c
+    pane: int  # the face's surface row's pane kind
+
+
+@wp.func
+def reach_mirror(scene: SceneRec, k: int, o: wp.vec3, wi: wp.vec3, pn: wp.vec3, side_x: float) -> MirrorPoint:
+    """Follow the ray (o, wi) through what passes light to a face of mirror plane ``k`` (normal ``pn``, the
+    receiver at signed distance ``side_x`` from it): the face, the share passed on the way, and the mirror
+    point's coverage (``face`` −1 where it gets there with nothing to reflect)."""
+    r = MirrorPoint()
+    r.face = -1
+    r.ng = pn
+    r.t = 0.0
+    r.vis = 1.0
+    r.m_off = o
+    r.cover = 0.0
+    r.pane = 0
+    vis_in = float(1.0)
+    start = float(0.0)
+    face = int(-1)
+    ng_m = pn
+    for j in range(MAX_PASSES):
+        if face < 0:
+            h = first_hit(scene, o + start * wi, wi, RAY_INF)
+            if h.face < 0:
+                return r
+            if scene.face_mirror[h.face] == k:
+                face = h.face
+                ng_m = h.ng
+                start = start + h.t
+            else:
+                if scene.surf_id[h.face] < 0:
+                    return r  # a matte face blocks it
+                q = o + (start + h.t) * wi
+                vis_in = vis_in * pass_factor(scene, h.face, wi, h.ng, q)
+                if vis_in <= 0.0:
+                    return r
+                start = start + h.t + offset_length(scene, q)
+    if face < 0:
+        return r
+    m = o + start * wi
+    srow = scene.surf[scene.surf_id[face]]
+    cover = coverage_at(scene, srow, face, m)
+    if srow.pane == 2:  # a translucent layer: its slab is the gap 1 − c, the share c its matte face (surfaces.pass_factor)
+        cover = 1.0 - cover
+    if cover <= 0.0:
+        return r
+    side_n = wp.where(side_x > 0.0, pn, -pn)
+    r.face = face
+    r.ng = ng_m
+    r.t = start
+    r.vis = vis_in
+    r.m_off = m + offset_length(scene, m) * side_n
+    r.cover = cover
+    r.pane = srow.pane
+    return r
+
+
+@wp.func
+def mirror_face_reflectance(scene: SceneRec, mp: MirrorPoint, wi: wp.vec3, cos_m: float) -> float:
+    """F of the mirror face at ``mp`` for the ray along ``wi``: a pane's slab reflects R(θ)
+    (kernels.surfaces.slab_rt; 0 off a closed pane's inner face), a metal or glossy face its mirror part."""
+    if mp.pane != 0:
+        return pane_rt(scene, mp.face, wi, mp.ng)[0]
+    return mirror_reflectance(face_bsdf(scene, mp.face), cos_m)
+
+
+@wp.func
+def image_found(out: ImageSample, wi: wp.vec3, mp: MirrorPoint, cos_m: float, refl: float, to_l: wp.vec3,
+                dist_l: float, vis: float) -> ImageSample:
+    """``out`` with the connection's geometry filled in (its value and pdf are the caller's)."""
+    out.wi = wi
+    out.face = mp.face
+    out.cos_m = cos_m
+    out.refl = refl
+    out.m_off = mp.m_off
+    out.to_l = to_l
+    out.dist_l = dist_l
+    out.vis = vis
+    out.t_m = mp.t
+    out.vis_in = mp.vis
+    out.pane = mp.pane
+    return out
+
+
 @wp.func
 def image_source(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp.vec3, u: wp.vec2,
                  shaded: int) -> ImageSample:
@@ -175,71 +269,28 @@ def image_source(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp
     if shaded != 0:
         o_w = spawn_origin(p, o, wi)
     out.traced = 1
-    # to the plane, through what passes light on the way, to a mirror face of plane k
-    vis_in = float(1.0)
-    start = float(0.0)
-    face = int(-1)
-    ng_m = pn
-    for j in range(MAX_PASSES):
-        if face < 0:
-            h = first_hit(scene, o_w + start * wi, wi, RAY_INF)
-            if h.face < 0:
-                return out
-            if scene.face_mirror[h.face] == k:
-                face = h.face
-                ng_m = h.ng
-                start = start + h.t
-            else:
-                if scene.surf_id[h.face] < 0:
-                    return out  # a matte face blocks it
-                q = o_w + (start + h.t) * wi
-                vis_in = vis_in * pass_factor(scene, h.face, wi, h.ng, q)
-                if vis_in <= 0.0:
-                    return out
-                start = start + h.t + offset_length(scene, q)
-    if face < 0:
+    mp = reach_mirror(scene, k, o_w, wi, pn, side_x)  # to a face of plane k, through what passes light
+    if mp.face < 0:
         return out
-    m = o_w + start * wi
-    srow = scene.surf[scene.surf_id[face]]
-    cover = coverage_at(scene, srow, face, m)
-    if srow.pane == 2:  # a translucent layer: its slab is the gap 1 − c, the share c its matte face (surfaces.pass_factor)
-        cover = 1.0 - cover
-    if cover <= 0.0:
-        return out
+    m = mp.m_off
     to_l = to_sun
     dist_l = float(RAY_INF)
     if l.kind == _POINT_M:
-        dl = l.position - m
+        dl = l.position - (o_w + mp.t * wi)
         dist_l = wp.length(dl)
         to_l = dl / dist_l
-    side_n = wp.where(side_x > 0.0, pn, -pn)
-    m_off = m + offset_length(scene, m) * side_n
-    vis = transmittance_along(scene, m_off, to_l, dist_l, -1)
+    vis = transmittance_along(scene, m, to_l, dist_l, -1)
     if vis <= 0.0:
         return out
     cos_m = wp.abs(dn)
-    refl = float(0.0)
-    if srow.pane != 0:  # a pane's slab reflects R(θ) (kernels.surfaces.slab_rt; 0 off a closed pane's inner face)
-        refl = pane_rt(scene, face, wi, ng_m)[0]
-    else:
-        refl = mirror_reflectance(face_bsdf(scene, face), cos_m)
-    e = vis_in * vis * cover * refl * cos_x
+    refl = mirror_face_reflectance(scene, mp, wi, cos_m)
+    e = mp.vis * vis * mp.cover * refl * cos_x
     if l.kind == _POINT_M:
         e = e * shaping_factor(l, -to_l) / (dist_img * dist_img)
     else:
         e = e * inv_pdf
-    out.wi = wi
+    out = image_found(out, wi, mp, cos_m, refl, to_l, dist_l, vis)
     out.value = e * l.emission
-    out.face = face
-    out.cos_m = cos_m
-    out.refl = refl
-    out.m_off = m_off
-    out.to_l = to_l
-    out.dist_l = dist_l
-    out.vis = vis
-    out.t_m = start
-    out.vis_in = vis_in
-    out.pane = srow.pane
     return out
 
 
@@ -380,63 +431,20 @@ def area_image(scene: SceneRec, li: int, k: int, p: wp.vec3, n: wp.vec3, o: wp.v
     if shaded != 0:
         o_w = spawn_origin(p, o, wi)
     out.traced = 1
-    vis_in = float(1.0)
-    start = float(0.0)
-    face = int(-1)
-    ng_m = pn
-    for j in range(MAX_PASSES):
-        if face < 0:
-            h = first_hit(scene, o_w + start * wi, wi, RAY_INF)
-            if h.face < 0:
-                return out
-            if scene.face_mirror[h.face] == k:
-                face = h.face
-                ng_m = h.ng
-                start = start + h.t
-            else:
-                if scene.surf_id[h.face] < 0:
-                    return out
-                q = o_w + (start + h.t) * wi
-                vis_in = vis_in * pass_factor(scene, h.face, wi, h.ng, q)
-                if vis_in <= 0.0:
-                    return out
-                start = start + h.t + offset_length(scene, q)
-    if face < 0:
+    mp = reach_mirror(scene, k, o_w, wi, pn, side_x)
+    if mp.face < 0:
         return out
-    m = o_w + start * wi
-    srow = scene.surf[scene.surf_id[face]]
-    cover = coverage_at(scene, srow, face, m)
-    if srow.pane == 2:  # a translucent layer: its slab is the gap 1 − c
-        cover = 1.0 - cover
-    if cover <= 0.0:
-        return out
-    side_n = wp.where(side_x > 0.0, pn, -pn)
-    m_off = m + offset_length(scene, m) * side_n
     dist_l = ls.dist - t_plane
-    vis = transmittance_along(scene, m_off, ls.wi, dist_l, ls.tri)
+    vis = transmittance_along(scene, mp.m_off, ls.wi, dist_l, ls.tri)
     if vis <= 0.0:
         return out
     cos_m = wp.abs(dn)
-    refl = float(0.0)
-    if srow.pane != 0:
-        refl = pane_rt(scene, face, wi, ng_m)[0]
-    else:
-        refl = mirror_reflectance(face_bsdf(scene, face), cos_m)
+    refl = mirror_face_reflectance(scene, mp, wi, cos_m)
     l = scene.lights[li]
-    out.wi = wi
-    out.value = ls.value * (vis_in * vis * cover * refl * shaping_factor(l, -ls.wi))
+    out = image_found(out, wi, mp, cos_m, refl, ls.wi, dist_l, vis)
+    out.value = ls.value * (mp.vis * vis * mp.cover * refl * shaping_factor(l, -ls.wi))
     out.pdf = ls.pdf
     out.tri = ls.tri
-    out.face = face
-    out.cos_m = cos_m
-    out.refl = refl
-    out.m_off = m_off
-    out.to_l = ls.wi
-    out.dist_l = dist_l
-    out.vis = vis
-    out.t_m = start
-    out.vis_in = vis_in
-    out.pane = srow.pane
     return out
 
 

@@ -101,6 +101,17 @@ def _da_map_png(ares, zone: str, da_lx: float, chosen: list[str]) -> bytes:
                     _plan(ares, ids), marks)  # fmt: skip
 
 
+
+def _day_hour_axes(ax, days) -> None:
+    """Label a day-of-year × hour-of-day map's axes: about 12 day ticks, hours 0–23 (LST)."""
+    step = max(1, len(days) // 12)
+    ax.set_xticks(range(0, len(days), step))
+    ax.set_xticklabels([str(int(d)) for d in days[::step]])
+    ax.set_yticks([0, 6, 12, 18, 23])
+    ax.tick_params(labelsize=9)
+    ax.set_xlabel("day of year (days analysed)", fontsize=9)
+    ax.set_ylabel("hour of day (LST)", fontsize=9)
+
 def _temporal_png(grid: np.ndarray, days: np.ndarray, title: str, label: str, vmax: float | None = None,
                   grey: str = "hours not analysed") -> bytes:
     from matplotlib.figure import Figure
@@ -112,13 +123,7 @@ def _temporal_png(grid: np.ndarray, days: np.ndarray, title: str, label: str, vm
     ax = fig.subplots()
     im = ax.imshow(grid, origin="lower", aspect="auto", interpolation="nearest", cmap=cmap, vmin=0.0,
                    vmax=vmax, extent=(-0.5, len(days) - 0.5, -0.5, 23.5))  # fmt: skip
-    step = max(1, len(days) // 12)
-    ax.set_xticks(range(0, len(days), step))
-    ax.set_xticklabels([str(int(d)) for d in days[::step]])
-    ax.set_yticks([0, 6, 12, 18, 23])
-    ax.tick_params(labelsize=9)
-    ax.set_xlabel("day of year (days analysed)", fontsize=9)
-    ax.set_ylabel("hour of day (LST)", fontsize=9)
+    _day_hour_axes(ax, days)
     ax.set_title(f"{title}\n(grey: {grey})", fontsize=10)
     cb = fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02)
     cb.set_label(label, fontsize=9)
@@ -231,13 +236,7 @@ def _state_png(ares) -> bytes:
     ax = fig.subplots()
     im = ax.imshow(g, origin="lower", aspect="auto", interpolation="nearest", cmap=cmap,
                    norm=BoundaryNorm(np.arange(n + 1) - 0.5, n), extent=(-0.5, len(days) - 0.5, -0.5, 23.5))  # fmt: skip
-    step = max(1, len(days) // 12)
-    ax.set_xticks(range(0, len(days), step))
-    ax.set_xticklabels([str(int(d)) for d in days[::step]])
-    ax.set_yticks([0, 6, 12, 18, 23])
-    ax.tick_params(labelsize=9)
-    ax.set_xlabel("day of year (days analysed)", fontsize=9)
-    ax.set_ylabel("hour of day (LST)", fontsize=9)
+    _day_hour_axes(ax, days)
     ax.set_title(f"shades {ares.shading.variant_set}: the state each hour ({ares.shading.rule})\n(grey: hours not analysed)", fontsize=10)
     cb = fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02, ticks=range(n))
     cb.ax.set_yticklabels(ares.states, fontsize=8)
@@ -259,13 +258,7 @@ def _glare_png(ares, v: int) -> bytes:
     ax = fig.subplots()
     im = ax.imshow(grid, origin="lower", aspect="auto", interpolation="nearest", cmap=cmap, norm=BoundaryNorm(bounds, len(_DGP_CLASSES)),
                    extent=(-0.5, len(days) - 0.5, -0.5, 23.5))  # fmt: skip
-    step = max(1, len(days) // 12)
-    ax.set_xticks(range(0, len(days), step))
-    ax.set_xticklabels([str(int(d)) for d in days[::step]])
-    ax.set_yticks([0, 6, 12, 18, 23])
-    ax.tick_params(labelsize=9)
-    ax.set_xlabel("day of year (days analysed)", fontsize=9)
-    ax.set_ylabel("hour of day (LST)", fontsize=9)
+    _day_hour_axes(ax, days)
     ax.set_title(f"view {g.views[v]}: {g.index_name.upper()} every occupied hour\n(grey: hours not occupied or not analysed)", fontsize=10)
     cb = fig.colorbar(im, ax=ax, fraction=0.046, pad=0.02, ticks=[0.175, 0.375, 0.425, 0.725])
     cb.ax.set_yticklabels([f"{n} (< {b:.2f})" if b < 1 else f"{n} (≥ 0.45)" for b, n, _ in _DGP_CLASSES], fontsize=8)
