@@ -51,8 +51,8 @@ def _unit_rows(v: np.ndarray) -> np.ndarray:
     return np.divide(v, n, out=np.zeros_like(v), where=n > 0)
 
 
-def _face_normals(points: np.ndarray, counts: np.ndarray, indices: np.ndarray) -> np.ndarray:
-    """Unit Newell normal of each polygon (F, 3), along its winding (zero for a degenerate face)."""
+def _face_areas(points: np.ndarray, counts: np.ndarray, indices: np.ndarray) -> np.ndarray:
+    """Newell area vector of each polygon (F, 3), along its winding (zero for fewer than three corners)."""
     out = np.zeros((len(counts), 3))
     starts = np.cumsum(counts) - counts
     for n in np.unique(counts):
@@ -61,7 +61,12 @@ def _face_normals(points: np.ndarray, counts: np.ndarray, indices: np.ndarray) -
             continue
         faces = np.flatnonzero(counts == n)
         out[faces] = _newell_normal(points[indices[starts[faces][:, None] + np.arange(n)]])
-    return _unit_rows(out)
+    return out
+
+
+def _face_normals(points: np.ndarray, counts: np.ndarray, indices: np.ndarray) -> np.ndarray:
+    """Unit Newell normal of each polygon (F, 3), along its winding (zero for a degenerate face)."""
+    return _unit_rows(_face_areas(points, counts, indices))
 
 
 def _per_face_corners(values: np.ndarray, counts: np.ndarray) -> np.ndarray:
@@ -78,16 +83,8 @@ def _is_flat(corner: np.ndarray, face_normal: np.ndarray, counts: np.ndarray) ->
 
 def smooth_vertex_normals(points: np.ndarray, counts: np.ndarray, indices: np.ndarray) -> np.ndarray:
     """Area-weighted vertex normals (P, 3): at each point the sum of its faces' Newell area vectors, unit."""
-    area = np.zeros((len(counts), 3))
-    starts = np.cumsum(counts) - counts
-    for n in np.unique(counts):
-        n = int(n)
-        if n < 3:
-            continue
-        faces = np.flatnonzero(counts == n)
-        area[faces] = _newell_normal(points[indices[starts[faces][:, None] + np.arange(n)]])
     acc = np.zeros((len(points), 3))
-    np.add.at(acc, indices, _per_face_corners(area, counts))
+    np.add.at(acc, indices, _per_face_corners(_face_areas(points, counts, indices), counts))
     return _unit_rows(acc)
 
 
