@@ -265,3 +265,19 @@ def test_a_lamps_ugr_counts_the_pixels_its_edge_covers_in_part(tmp_path):
     assert len(e.sources) == 1
     assert e.background_cd_m2 == pytest.approx(lb, rel=2e-3)
     assert abs(e.ugr - truth) <= 4.0 * e.ugr_stderr + 0.02, (e.ugr, e.ugr_stderr, truth)
+
+
+def test_a_disk_lamps_ugr_is_its_closed_form(tmp_path):
+    """The same with a DiskLight of radius 0.3 m: ω = 2π(1 − d/√(d² + r²)), C = π·r²/(d² + r²) (a disk seen on
+    its axis, sin²α·π), L_b = L_d·(1 − C/π): UGR = 26.49; within 4 standard errors + 0.02."""
+    stage = _stage(tmp_path, LAMP_AHEAD.replace('RectLight "Lamp"', 'DiskLight "Lamp"').replace(
+        "    float inputs:width = 0.6\n    float inputs:height = 0.6\n", "    float inputs:radius = 0.3\n"))
+    _, (r,) = _run(stage, [_view(resolution=(128, 128))], seed=3)
+    e = r.estimate
+    rad, d = 0.3, 3.0
+    omega = 2.0 * math.pi * (1.0 - d / math.hypot(d, rad))
+    lb = 100.0 * (1.0 - rad * rad / (d * d + rad * rad))
+    truth = 8.0 * math.log10(0.25 / lb * 5100.0**2 * omega)
+    assert len(e.sources) == 1
+    assert e.background_cd_m2 == pytest.approx(lb, rel=2e-3)
+    assert abs(e.ugr - truth) <= 4.0 * e.ugr_stderr + 0.02, (e.ugr, e.ugr_stderr, truth)
