@@ -10,12 +10,13 @@ office as authored, or the layer over it with the lamps alone) this writes a
 config of one irradiance sensor at the eye facing the view direction (E_v is
 that sensor's reading) and runs ``benchmarks/peer_mitsuba.py`` on it in its
 replica mode (each renderer's pooled mean over ``--replicas`` independent
-renders, compared with z = Δ/√(σ_p² + σ_m²)). ``--sky-split`` instead reads
-the window view under the sky alone (sun and lamps off) in two parts: the
-direct light (Mitsuba's path tracer at depth 2, probesim's ``exact``) and the
+renders, compared with z = Δ/√(σ_p² + σ_m²)). ``--split`` instead reads
+the window view under one light group alone (``--split sky``, ``sun`` or ``lamps``) in two parts:
+the direct light (Mitsuba's path tracer at depth 2, probesim's ``exact``) and the
 rest (Mitsuba's full depth less its direct part; probesim's ``indirect``
 component), each Mitsuba figure the mean of 6 renders of 2²⁰ samples with its
-standard error. Needs the optional extra ``peer`` and Dr.Jit's libLLVM (see
+standard error. ``--sun-check`` reads the converted sun on the outdoor ground against its
+closed form, at three distances of its disc and five sample counts in one render. Needs the optional extra ``peer`` and Dr.Jit's libLLVM (see
 peer_mitsuba.py).
 """
 
@@ -32,7 +33,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
 
-SKY_ONLY = """#usda 1.0
+ALONE = """#usda 1.0
 (
     subLayers = [@{office}@]
     defaultPrim = "Office"
@@ -41,14 +42,16 @@ SKY_ONLY = """#usda 1.0
 )
 over "Office"
 {{
-    over "Sun" (active = false) {{}}
-    over "Lights" (active = false) {{}}
+{off}
 }}
 """
+#: the office's light prims each split keeps (the others are deactivated)
+SPLITS = {"sky": ("Sky", "WindowPortal"), "sun": ("Sun",), "lamps": ("Lights",)}
 
 
-def sky_split(tmp: Path) -> None:
-    """The window view under the sky alone: direct and interreflected light from each renderer."""
+def light_split(tmp: Path, alone: str) -> None:
+    """The window view under one light group alone (``SPLITS``): direct and interreflected light from each
+    renderer."""
     import mitsuba as mi
     import numpy as np
     import peer_mitsuba as P
@@ -60,9 +63,11 @@ def sky_split(tmp: Path) -> None:
 
     mi.set_variant("llvm_ad_mono")
     eye, d, _ = G.VIEWS["window"]
-    stage = tmp / "sky_only.usda"
-    stage.write_text(SKY_ONLY.format(office=(ROOT / "stages" / "office.usda").as_posix()))
-    cfg = tmp / "sky.toml"
+    stage = tmp / f"{alone}_only.usda"
+    off = "\n".join(f'    over "{p}" (active = false) {{}}' for k, keep in SPLITS.items() if k != alone for p in keep
+                    if p not in SPLITS[alone])  # fmt: skip
+    stage.write_text(ALONE.format(office=(ROOT / "stages" / "office.usda").as_posix(), off=off))
+    cfg = tmp / f"{alone}.toml"
     cfg.write_text(f'stage = "{stage.as_posix()}"\n[[sensor]]\nname = "eye"\nkind = "irradiance"\n'
                    f'position = {list(eye)}\nnormal = {list(d)}\n')  # fmt: skip
     c = load_config(cfg)
@@ -80,11 +85,49 @@ def sky_split(tmp: Path) -> None:
 
     (md, md_se), (mt, mt_se) = mitsuba(2), mitsuba(-1)
     eng = Engine(scene, sensors)
-    ex = eng.run("exact", samples=16, seed=3)
-    ind = eng.run("path", samples=1 << 18, seed=3, component="indirect")
-    print(f"window view, sky alone: direct Mitsuba {md:.1f} ± {md_se:.1f} lx, probesim exact {ex.mean[0, 1]:.2f} lx; "
+    # the sky's direct light computed (exact); the sun's and the lamps' sampled with their standard error
+    ex = eng.run("exact", samples=16, seed=3) if alone == "sky" else eng.run("path", samples=1 << 18, seed=3, component="direct")
+    ind = eng.run("path", samples=1 << 21, seed=3, component="indirect")
+    print(f"window view, {alone} alone: direct Mitsuba {md:.1f} ± {md_se:.1f} lx, probesim {ex.mean[0, 1]:.2f} ± "
+          f"{ex.stderr[0, 1]:.2f} lx; "
           f"interreflected Mitsuba {mt - md:.1f} ± {np.hypot(mt_se, md_se):.1f} lx, probesim "
           f"{ind.mean[0, 1]:.1f} ± {ind.stderr[0, 1]:.1f} lx")  # fmt: skip
+
+
+def sun_check(tmp: Path) -> None:
+    """The sun alone on the office's outdoor ground, 15 m out from the wall (irradiance sensor facing up, 1 mm
+    above it), Mitsuba at depth 2 against the closed form E⊥·sin(elevation) = 80,000 lx · sin 30° = 40,000 lx:
+    at each distance of the sun's disc (the conversion's parallax) and at each sample count in one render
+    (the film's float32 sums)."""
+    import mitsuba as mi
+    import peer_mitsuba as P
+
+    from simulator.config import load_config
+    from simulator.pipeline import collect_sensors, load_scene
+
+    mi.set_variant("llvm_ad_mono")
+    stage = tmp / "sun_only.usda"
+    off = "\n".join(f'    over "{p}" (active = false) {{}}' for k, keep in SPLITS.items() if k != "sun" for p in keep)
+    stage.write_text(ALONE.format(office=(ROOT / "stages" / "office.usda").as_posix(), off=off))
+    cfg = tmp / "ground.toml"
+    cfg.write_text(f'stage = "{stage.as_posix()}"\n[[sensor]]\nname = "ground"\nkind = "irradiance"\n'
+                   'position = [-15.0, 2.0, 0.001]\nnormal = [0.0, 0.0, 1.0]\n')  # fmt: skip
+    c = load_config(cfg)
+    scene = load_scene(c)
+    sensors = collect_sensors(c, scene)
+    full, far0, pass0 = P.mitsuba_scene, P.SUN_DISTANCE_M, P.MAX_PASS_SPP
+    P.mitsuba_scene = lambda *a, **k: {**full(*a, **k), "integrator": {"type": "path", "max_depth": 2}}
+    try:
+        for far in (1.0e3, 1.0e5, 1.0e6):
+            P.SUN_DISTANCE_M = far
+            v = P.run_mitsuba(scene, sensors, 1 << 16, 0.005, 600)[0][0]
+            print(f"sun disc {far / 1000:,.0f} km off, 2^16 samples: {v:,.1f} lx, {v / 40000.0 - 1:+.3%} against 40,000 lx")
+        P.SUN_DISTANCE_M, P.MAX_PASS_SPP = far0, 1 << 30
+        for e in (14, 16, 18, 20, 22):
+            v = P.run_mitsuba(scene, sensors, 1 << e, 0.005, 600)[0][0]
+            print(f"one render of 2^{e} samples: {v:,.1f} lx, {v / 40000.0 - 1:+.3%}")
+    finally:
+        P.mitsuba_scene, P.SUN_DISTANCE_M, P.MAX_PASS_SPP = full, far0, pass0
 
 
 def main() -> int:
@@ -95,12 +138,16 @@ def main() -> int:
     ap.add_argument("--views", default="window,luminaires,sun")
     ap.add_argument("--probesim-samples", type=int, nargs=2, default=[65536, 262144])
     ap.add_argument("--mitsuba-spp", type=int, nargs=2, default=[262144, 1048576])
-    ap.add_argument("--sky-split", action="store_true", help="the window view under the sky alone, in two parts")
+    ap.add_argument("--split", choices=sorted(SPLITS), help="the window view under this light group alone, in two parts")
+    ap.add_argument("--sun-check", action="store_true", help="the conversion's sun on the outdoor ground against its closed form")
     a = ap.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        if a.sky_split:
-            sky_split(tmp)
+        if a.sun_check:
+            sun_check(tmp)
+            return 0
+        if a.split:
+            light_split(tmp, a.split)
             return 0
         for name in a.views.split(","):
             eye, d, lighting = G.VIEWS[name]

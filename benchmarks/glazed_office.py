@@ -1,8 +1,9 @@
 """The glazed office against the open one, each read with its default estimator.
 
 Reads the office's 1,464 work-plane and wall sensors (configs/office_bench.toml)
-with the stage's ``window`` variant ``open`` (an open opening, all matte) and
-``glazed`` (a pane of ior 1.52 in the opening, a GGX floor of roughness 0.4),
+with the stage's ``window`` variant ``open`` (an open opening, all matte) beside
+``pane`` (a pane of ior 1.52 in the opening) and ``glazed`` (the pane and a GGX floor
+of roughness 0.4),
 each with the plan's estimator (``auto``: both ``guided``), at a fixed budget
 and seed. For each it prints the RMS relative standard error of the
 illuminance over the sensors, the CPU seconds of the run (the guide's pilot
@@ -17,16 +18,21 @@ and two load-free figures of the cost of a given error:
 - relative variance × rays: mean over the sensors of stderr²·n/mean², times
   the rays traced per sample (a separate counted run).
 
-and the ratio glazed / open of each. ``--path`` also reads the glazed office
-with plain paths.
+and the ratio of each to the open window's. ``--path`` also reads the glazed office
+with plain paths. ``--fixed-k K`` instead times each window's samples at one split K
+(CPU µs per sample, relative variance per sample, rays tallied per sample), beside the
+open window traced with the surface-model kernels; ``--perf DIR`` adds where the time
+goes, per kernel function (Linux ``perf``).
 
     PYTHONPATH=. python benchmarks/glazed_office.py --samples 256 --seed 1
+    PYTHONPATH=. python benchmarks/glazed_office.py --fixed-k 7 --samples 128 --perf /tmp/perf
 """
 
 from __future__ import annotations
 
 import argparse
 import dataclasses
+import re
 import time
 from pathlib import Path
 
@@ -76,13 +82,116 @@ def measure(window: str, samples: int, seed: int, method: str = "auto") -> dict:
             "relvar_rays": relvar * rays_per_sample}  # fmt: skip
 
 
+def per_sample(window: str, samples: int, k: int, perf_dir: Path | None = None) -> dict:
+    """CPU µs per irradiance sample at a fixed split K (``guided``, its guide built first), the relative
+    variance per sample and the rays tallied per sample. ``open+surfaces`` reads the open window with the
+    kernels compiled with the surface model (docs/DESIGN.md §Trace variants), so that it and ``pane`` run
+    the same machine code. With ``perf_dir``, ``perf record`` samples the timed run and the kernels'
+    functions are named from their object files' symbol tables (``perf-PID.map``)."""
+    from simulator.config.loader import load_config
+    from simulator.pipeline import collect_sensors, config_engine, load_scene
+    from simulator.plan.planner import make_plan
+    from simulator.scene.model import SensorKind
+
+    cfg = load_config(ROOT / "configs" / "office_bench.toml")
+    cfg = dataclasses.replace(cfg, variants={**cfg.variants, "window": window.split("+")[0]})
+    scene = load_scene(cfg)
+    sensors = [s for s in collect_sensors(cfg, scene) if s.kind != SensorKind.PROBE]
+    plan = make_plan(scene, sensors, "guided")
+    engine = config_engine(cfg, scene, sensors)
+    engine.split_indirect = k
+    if window.endswith("+surfaces"):
+        forced = property(lambda self: self._K.trace_for(1))  # this engine only
+        engine.__class__ = type("SurfaceKernelsEngine", (type(engine),), {"trace_variant": forced})
+    engine.set_light_mask(plan.light_mask([l.name for l in scene.lights]))
+    engine.ensure_guide(1, np.arange(len(sensors)), -1)
+    engine.run("guided", samples=16, seed=1)  # kernels loaded, pilots done
+    rec = _perf_start(window, perf_dir) if perf_dir else None
+    t0 = time.process_time()
+    res = engine.run("guided", samples=samples, seed=2)
+    cpu_s = time.process_time() - t0
+    breakdown = _perf_stop(rec, cpu_s / (samples * len(sensors)) * 1e6) if rec else None
+    rel = res.stderr[:, 1] / res.mean[:, 1]
+    engine.run("guided", samples=32, seed=9, count_rays=True)
+    return {"window": window, "us": cpu_s / (samples * len(sensors)) * 1e6, "relvar": float(np.mean(rel**2 * res.samples)),
+            "rays": engine.rays_traced / (32 * len(sensors)), "perf": breakdown}  # fmt: skip
+
+
+def _perf_start(window: str, perf_dir: Path):
+    """Write this process's perf map of the loaded CPU kernel modules and start ``perf record`` on it."""
+    import gc
+    import os
+    import re
+    import subprocess
+
+    import warp as wp
+
+    runtime = wp._src.context.runtime
+    lines = []
+    for o in gc.get_objects():
+        if type(o).__name__ != "ModuleExec" or o.device.is_cuda or not o.binary_path:
+            continue
+        nm = subprocess.run(["nm", "-C", "-S", str(o.binary_path)], capture_output=True, text=True).stdout.splitlines()
+        for name in list(o.kernel_hooks):
+            addr = runtime.llvm.wp_lookup(o.handle.encode(), (name + "_cpu_forward").encode())
+            entry = [ln for ln in nm if ln.endswith(name + "_cpu_forward")]
+            if not addr or not entry:
+                continue
+            base = addr - int(entry[0].split()[0], 16)
+            for ln in nm:
+                m = re.match(r"([0-9a-f]+) ([0-9a-f]+) [tT] (\S+?)\(", ln)
+                if m:
+                    lines.append(f"{base + int(m.group(1), 16):x} {int(m.group(2), 16):x} {m.group(3)}")
+            break
+    Path(f"/tmp/perf-{os.getpid()}.map").write_text("\n".join(lines) + "\n")
+    perf_dir.mkdir(parents=True, exist_ok=True)
+    data = perf_dir / f"{window}.data"
+    proc = subprocess.Popen(["perf", "record", "-F", "999", "-o", str(data), "-p", str(os.getpid())],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)  # fmt: skip
+    time.sleep(1.0)
+    return proc, data
+
+
+def _perf_stop(rec, us_per_sample: float) -> list[tuple[str, float]]:
+    """Stop ``perf record``; the functions' shares of the timed run as µs per sample (largest first)."""
+    import signal
+    import subprocess
+
+    proc, data = rec
+    proc.send_signal(signal.SIGINT)
+    proc.wait()
+    out = subprocess.run(["perf", "report", "-i", str(data), "--no-children", "--sort", "symbol", "--stdio"],
+                         capture_output=True, text=True).stdout  # fmt: skip
+    rows = []
+    for ln in out.splitlines():
+        m = re.match(r"\s+([0-9.]+)%\s+\[[.k]\]\s+(\S+)", ln) if not ln.startswith("#") else None
+        if m:
+            rows.append((m.group(2)[:48], float(m.group(1)) / 100.0 * us_per_sample))
+    return rows[:8]
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--samples", type=int, default=256)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--path", action="store_true", help="also read the glazed office with plain paths")
+    ap.add_argument("--windows", nargs="+", default=["pane", "glazed"], choices=["pane", "glazed"],
+                    help="the variants read beside the open window (default: both)")  # fmt: skip
+    ap.add_argument("--fixed-k", type=int, metavar="K",
+                    help="instead: CPU µs per sample at split K, the open window also with the surface-model kernels")
+    ap.add_argument("--perf", type=Path, metavar="DIR", help="with --fixed-k: perf record each timed run into DIR "
+                    "and print where its time goes (needs Linux perf)")  # fmt: skip
     a = ap.parse_args()
-    rows = [measure("open", a.samples, a.seed), measure("glazed", a.samples, a.seed)]
+    if a.fixed_k:
+        rows = [per_sample(w, a.samples, a.fixed_k, a.perf) for w in ["open", "open+surfaces", *a.windows]]
+        print(f"split K = {a.fixed_k}, {a.samples} samples per sensor, 1,464 sensors, guided")
+        for r in rows:
+            print(f"{r['window']:<14} {r['us']:6.1f} CPU µs per sample, relative variance {r['relvar']:.4f}, "
+                  f"{r['rays']:.2f} rays tallied per sample, relvar × µs {r['relvar'] * r['us']:.2f}")  # fmt: skip
+            for name, us in r["perf"] or []:
+                print(f"    {us:6.2f} µs  {name}")
+        return
+    rows = [measure(w, a.samples, a.seed) for w in ["open", *a.windows]]
     if a.path:
         rows.append(measure("glazed", a.samples, a.seed, "path"))
     print(f"{'window':<8} {'method':<8} {'RMS se':>8} {'CPU s':>8} {'CPU s to 1%':>12} {'pilot once':>11} {'relvar':>8} "
@@ -90,10 +199,12 @@ def main() -> None:
     for r in rows:
         print(f"{r['window']:<8} {r['methods']:<8} {r['rms']:>8.2%} {r['cpu_s']:>8.2f} {r['cpu_to_1pct_s']:>12.1f} "
               f"{r['pilot_once_s']:>11.1f} {r['relvar']:>8.3f} {r['rays']:>7.2f} {r['relvar_rays']:>12.3f}")  # fmt: skip
-    o, g = rows[0], rows[1]
-    print(f"glazed / open ({a.samples} samples, seed {a.seed}): {g['cpu_to_1pct_s'] / o['cpu_to_1pct_s']:.2f}x CPU seconds "
-          f"to 1% RMS ({g['pilot_once_s'] / o['pilot_once_s']:.2f}x with the pilot once), "
-          f"{g['relvar_rays'] / o['relvar_rays']:.2f}x relative variance x rays")  # fmt: skip
+    o = rows[0]
+    for g in rows[1 : 1 + len(a.windows)]:
+        print(f"{g['window']} / open ({a.samples} samples, seed {a.seed}): {g['cpu_to_1pct_s'] / o['cpu_to_1pct_s']:.2f}x CPU "
+              f"seconds to 1% RMS ({g['pilot_once_s'] / o['pilot_once_s']:.2f}x with the pilot once), "
+              f"{g['relvar_rays'] / o['relvar_rays']:.2f}x relative variance x rays, "
+              f"{g['cpu_s'] / o['cpu_s']:.2f}x CPU seconds per run")  # fmt: skip
 
 
 if __name__ == "__main__":

@@ -3,8 +3,8 @@
 Converts a probesim run config's scene to Mitsuba 3 (triangles with their
 Lambertian albedo, both faces reflecting; RectLights as area-emitting
 rectangles; a uniform DomeLight as a constant emitter; a DistantLight as a
-directional emitter of its normal illuminance; emissive triangles as area
-emitters) and each irradiance sensor to a small white Lambertian disk proxy
+directional emitter of its normal illuminance, or with an angle as an emitting
+disc 1,000 km off that subtends it; emissive triangles as area emitters) and each irradiance sensor to a small white Lambertian disk proxy
 (radius ``--proxy-m``) seen by a ``radiancemeter`` 1 mm above it (E = π·L),
 all meters in one ``batch`` sensor, so one render reads every sensor. Both are read at a ladder of
 budgets against the config's stored reference (configs/references/NAME.csv,
@@ -106,8 +106,8 @@ def mitsuba_scene(scene, sensors, spp: int, proxy_m: float, tmp: Path, bsdf_of=N
         elif kind == 4 and l.half_angle <= 0:  # delta distant: its normal illuminance, toward −ez
             d[f"light_{j}"] = {"type": "directional", "direction": (-l.frame[:, 2]).tolist(),
                                "irradiance": {"type": "spectrum", "value": float(l.emission[1])}}  # fmt: skip
-        elif kind == 4:  # a sun's disc: an emitting disk 1 km off toward +ez subtending its angle (its penumbrae)
-            far = 1000.0
+        elif kind == 4:  # a sun's disc: an emitting disk 1,000 km off toward +ez subtending its angle (its penumbrae)
+            far = SUN_DISTANCE_M
             centre = g.points.mean(axis=0) + far * l.frame[:, 2]
             disc = T().look_at(origin=centre.tolist(), target=(centre - l.frame[:, 2]).tolist(),
                                up=[0, 0, 1] if abs(l.frame[2, 2]) < 0.9 else [0, 1, 0]) @ T().scale(float(far * np.tan(l.half_angle)))
@@ -140,19 +140,37 @@ def mitsuba_scene(scene, sensors, spp: int, proxy_m: float, tmp: Path, bsdf_of=N
     return d
 
 
+#: how far off the sun's disc stands: far enough that its parallax is negligible (a point d m from the scene's
+#: centre sees the disc d/far rad off the sun's direction; the office's outdoor ground under its 40,000 lx
+#: sun, Mitsuba at depth 2 against that closed form: +4.4% at 1 km, +0.04% at 100 km, −0.009% at 1,000 km,
+#: ``benchmarks/glare_ev_mitsuba.py --sun-check``)
+SUN_DISTANCE_M = 1.0e6
+
+#: most samples per pixel in one Mitsuba render: its film sums a pixel's samples in float32, which read a
+#: 40,000 lx sun on the ground −0.009% off at 2^14 and 2^16 samples, +0.05% at 2^18, −0.10% at 2^20 and
+#: −2.0% at 2^22 (``glare_ev_mitsuba.py --sun-check``); larger budgets are rendered in passes of at most
+#: this many, averaged in float64
+MAX_PASS_SPP = 1 << 16
+
+
 def run_mitsuba(scene, sensors, spp: int, proxy_m: float, seed: int, bsdf_of=None) -> tuple[np.ndarray, float]:
-    """(readings in lx, cd/m² for radiance sensors; wall seconds of the renders) at ``spp`` samples per sensor."""
+    """(readings in lx, cd/m² for radiance sensors; wall seconds of the renders) at ``spp`` samples per sensor
+    (``spp`` a multiple of :data:`MAX_PASS_SPP` above it)."""
     import mitsuba as mi
 
     from simulator.scene.model import SensorKind
 
+    passes = -(-spp // MAX_PASS_SPP)
     with tempfile.TemporaryDirectory() as tmp:
-        ms = mi.load_dict(mitsuba_scene(scene, sensors, spp, proxy_m, Path(tmp), bsdf_of))
+        ms = mi.load_dict(mitsuba_scene(scene, sensors, spp // passes, proxy_m, Path(tmp), bsdf_of))
         t0 = time.perf_counter()
-        img = np.asarray(mi.render(ms, spp=spp, seed=seed)).reshape(-1)  # every meter in one pass
+        img = np.zeros(len(sensors))
+        for k in range(passes):  # every meter in each pass; the passes averaged in float64
+            img += np.asarray(mi.render(ms, spp=spp // passes, seed=seed * 65536 + k), dtype=np.float64).reshape(-1)[: len(sensors)]
+        img /= passes
         wall = time.perf_counter() - t0
     scale = np.array([1.0 if s.kind == SensorKind.RADIANCE else np.pi for s in sensors])  # E = π·L off the proxy
-    return scale * img[: len(sensors)].astype(np.float64), wall
+    return scale * img, wall
 
 
 def run_probesim(cfg, scene, sensors, samples: int, seed: int, engine, plan=None) -> tuple[np.ndarray, float]:
