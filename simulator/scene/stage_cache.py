@@ -162,7 +162,7 @@ def cached_stage(read, path, light_units: str, radiometric_spectrum, variants: d
         return scene, None
     e = _Entry(copy.deepcopy(scene), next(_serial), identity)
     _entries.put(key, e, size=nbytes)
-    stage_disk.save(key, scene, identity, usd_version(), RACY_NS)
+    stage_disk.save(key, scene, identity, usd_version())
     return scene, e.token
 
 

@@ -49,7 +49,7 @@ import sys
 import tempfile
 import time
 
-__all__ = ["MAX_ENTRY_BYTES", "MAX_BYTES", "FORMAT", "file_identity", "folder", "load", "save", "process_started_ns"]
+__all__ = ["MAX_ENTRY_BYTES", "MAX_BYTES", "FORMAT", "file_identity", "folder", "load", "save"]
 
 #: an entry bigger than this is not written (bytes)
 MAX_ENTRY_BYTES = 1 << 26
@@ -160,33 +160,6 @@ def load(selection: str):
     return scene, {p: tuple(v) for p, v in identity.items()}, usd_version
 
 
-def _started_ns() -> int:
-    """When this process began, in ns since the epoch, rounded down to the second before (Linux: from
-    ``/proc``); elsewhere, or if that cannot be read, when probesim was imported."""
-    try:
-        with open("/proc/self/stat", "rb") as f:
-            fields = f.read().rsplit(b")", 1)[1].split()
-        ticks = int(fields[19])  # field 22, starttime: clock ticks after boot
-        with open("/proc/stat", "rb") as f:
-            btime = next(int(line.split()[1]) for line in f if line.startswith(b"btime "))
-        return (btime - 1) * 1_000_000_000 + ticks * 1_000_000_000 // os.sysconf("SC_CLK_TCK")
-    except (OSError, ValueError, IndexError, StopIteration, AttributeError):
-        import simulator
-
-        return simulator._LOADED_NS
-
-
-def process_started_ns() -> int:
-    """:func:`_started_ns`, read once."""
-    global _STARTED
-    if _STARTED is None:
-        _STARTED = _started_ns()
-    return _STARTED
-
-
-_STARTED = None
-
-
 def _code_identity() -> dict | None:
     """The identity of every module file the process has loaded (its source, or the archive it came
     from); None if one cannot be stat'ed."""
@@ -209,18 +182,20 @@ def _code_identity() -> dict | None:
     return out
 
 
-def save(selection: str, scene, identity: dict, usd_version: str, racy_ns: int) -> bool:
+def save(selection: str, scene, identity: dict, usd_version: str) -> bool:
     """Write ``scene`` (read for ``selection``; its files' ``identity``) as an entry; whether it was
     written. Nothing is written if the folder is off or cannot be written, if a code file changed within
-    ``racy_ns`` before the process began, or if the entry would exceed :data:`MAX_ENTRY_BYTES`."""
+    :data:`simulator.cache_path.RACY_NS` before the process began, or if the entry would exceed
+    :data:`MAX_ENTRY_BYTES`."""
     d = folder()
     if d is None:
         return False
     code = _code_identity()
     if code is None:
         return False
-    settled = process_started_ns() - racy_ns
-    if any(v[2] > settled for v in code.values()):
+    from simulator.cache_path import settled_before_start
+
+    if not settled_before_start(code.values()):
         return False
     context = _context(selection)
     try:
