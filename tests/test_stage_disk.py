@@ -376,41 +376,34 @@ def _settle_package():
         time.sleep(wait)
 
 
-PROBE = """
-import sys
-from simulator.commands.cli import main
-from simulator.engine import kernel_hashes
-restored = []
-restore = kernel_hashes.restore
-kernel_hashes.restore = lambda m, dim: restored.append(restore(m, dim)) or restored[-1]
-rc = main(["run", sys.argv[1], "-o", sys.argv[2], "-q"])
-print(rc, "pxr" in sys.modules, any(restored))
-"""
-
-
 def test_whole_runs_read_the_same_bytes_with_and_without_the_caches(tmp_path):
-    """The office's desk sensor (traced) in new processes: caches off, then a first run with them that
-    writes them, then one that uses them (no pxr imported, the trace module's hash restored). The CSV
-    is the same bytes in all three but for the ``seconds`` column."""
+    """``probesim run`` of the office's desk sensor (traced) in new processes: caches off, then a first run
+    with them that writes them, then one that uses them (``pxr`` never imported, the trace module's kept
+    hash used: its entry not written again). The CSV is the same bytes in all three but for ``seconds``."""
     _settle_package()
     cfg = tmp_path / "desk.toml"
     cfg.write_text(CONFIG.format(stage=(ROOT / "stages" / "office.usda").as_posix())
                    .replace("position = [0, 0, 0]", "position = [2.0, 2.0, 0.8]").replace("samples = 16", "samples = 64"))
     env = {k: v for k, v in os.environ.items()}
     env["PYTHONPATH"] = os.pathsep.join([str(ROOT), env.get("PYTHONPATH", "")])
+    cache = tmp_path / "cache"
 
-    def run(name: str, cache: str) -> tuple[list, str]:
+    def run(name: str, folder: str) -> tuple[list, bool]:
         out = tmp_path / f"{name}.csv"
-        proc = subprocess.run([sys.executable, "-c", PROBE, str(cfg), str(out)], env={**env, cache_path.ENV: cache},
-                              capture_output=True, text=True, check=True, cwd=tmp_path)  # fmt: skip
+        proc = subprocess.run([sys.executable, "-X", "importtime", "-m", "simulator", "run", str(cfg), "-o", str(out), "-q"],
+                              env={**env, cache_path.ENV: folder}, capture_output=True, text=True, check=True,
+                              cwd=tmp_path)  # fmt: skip
         rows = list(csv.reader(io.StringIO(out.read_text())))
         k = rows[0].index("seconds")
-        return [r[:k] + r[k + 1 :] for r in rows], proc.stdout.strip().splitlines()[-1].split()
+        imported = {line.rsplit("|", 1)[-1].strip() for line in proc.stderr.splitlines() if line.startswith("import time:")}
+        return [r[:k] + r[k + 1 :] for r in rows], "pxr" in imported
 
-    cache = str(tmp_path / "cache")
-    off, said_off = run("off", "")
-    first, said_first = run("first", cache)
-    second, said_second = run("second", cache)
-    assert said_off == ["0", "True", "False"] and said_first == ["0", "True", "False"]
-    assert said_second == ["0", "False", "True"]
+    off, pxr_off = run("off", "")
+    first, pxr_first = run("first", str(cache))
+    (entry,) = (cache / "warp").glob("*.json")
+    written = entry.stat()
+    second, pxr_second = run("second", str(cache))
+    assert pxr_off and pxr_first and not pxr_second
+    again = entry.stat()
+    assert (again.st_ino, again.st_mtime_ns) == (written.st_ino, written.st_mtime_ns)
     assert off == first == second

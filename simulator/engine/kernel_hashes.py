@@ -45,7 +45,7 @@ import sys
 import tempfile
 import weakref
 
-from .device import warp
+from .device import CHECKED_WARP, warp
 
 __all__ = ["FORMAT", "MAX_ENTRIES", "WARP_VERSIONS", "restore", "keep", "forget", "restored"]
 
@@ -58,7 +58,7 @@ SUBDIR = "warp"
 #: the Warp versions whose hashing :func:`restore` reproduces (what a hash sets besides the hash itself:
 #: each kernel's hash, grid stride, ``wp.tid()`` dimension and launch-extent gate; tests/test_kernel_hashes.py
 #: checks it against Warp's own); another Warp hashes every module itself until checked
-WARP_VERSIONS = ("1.19.",)
+WARP_VERSIONS = CHECKED_WARP
 #: the fields of Warp's ModuleHasher that restore() fills; a Warp whose hasher has others is not served
 _HASHER_FIELDS = frozenset({"kernel_hashes", "function_hashes", "functions_in_progress", "unique_kernels", "hash"})
 
