@@ -12,6 +12,9 @@ kernel. Which variant a stage gets is read from the engine.
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -109,3 +112,21 @@ def test_full_probe_kernel_gives_the_same_bits_on_a_matte_stage(quickstart, monk
     np.testing.assert_array_equal(full.radiance, matte.radiance)
     np.testing.assert_array_equal(full.integrals, matte.integrals)
     np.testing.assert_array_equal(full.delta, matte.delta)
+
+
+ORDER = """
+import sys
+from simulator.engine import kernel_modules as KM
+for flag in sys.argv[1:]:
+    KM.trace_module(flag == "1")
+print(KM.trace_module(False).module.get_module_hash(1).hex())
+"""
+
+
+def test_a_variants_hash_does_not_depend_on_the_other():
+    """Each variant is built on first use: the all-matte module's hash (what finds its object file in
+    Warp's cache) is the same whether the full variant was built before it, after it or not at all."""
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]))
+    hashes = {subprocess.run([sys.executable, "-c", ORDER, *order], env=env, capture_output=True, text=True,
+                             check=True).stdout.strip() for order in (["0"], ["1", "0"], ["0", "1"])}  # fmt: skip
+    assert len(hashes) == 1
