@@ -149,3 +149,21 @@ def test_an_empty_cache_path_keeps_nothing(matte, monkeypatch):
     assert not KH.keep(matte.module, DIM)
     matte.module.mark_modified()
     assert not KH.restore(matte.module, DIM)
+
+
+def test_the_key_follows_what_the_kernels_capture(matte, monkeypatch):
+    """A value a factory built the kernels from (the variant's flag, captured by the trace functions)
+    is in the key: the two variants' captures differ only by it, and another value is another key."""
+    m = matte.module
+    kernels = m._get_live_kernels()
+    captured = KH._captured(kernels)
+    flags = {c[3] for c in captured if c[1] == "surfaces"}
+    assert flags == {"False"}
+    full = KH._captured(KM.trace_module(True).module._get_live_kernels())
+    assert [c for c in full if c[1] != "surfaces"] == [c for c in captured if c[1] != "surfaces"]
+    options = m.resolve_options(wp.config, block_dim=DIM)
+    code = KH._code()
+    key = KH._key(m, DIM, options, kernels, code)
+    flipped = [(*c[:3], "True") if c[1] == "surfaces" else c for c in captured]
+    monkeypatch.setattr(KH, "_captured", lambda ks: flipped)
+    assert KH._key(m, DIM, options, kernels, code) != key

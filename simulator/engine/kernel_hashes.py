@@ -20,6 +20,9 @@ did). So a hash is kept under a key made of
 - Warp's, numpy's and Python's versions;
 - the module's name, the block size it is loaded with, its resolved
   options (as Warp hashes them), and its kernels' keys and options;
+- the values its kernels capture from the functions that built them, and
+  that the Warp functions they capture capture in turn (a kernel a factory
+  builds from a value known only at run time: the trace variants' flag);
 
 and is used (:func:`restore`) only where Warp's own layout is the one it
 was taken from: it is written (:func:`keep`) only from a hash Warp itself
@@ -108,9 +111,42 @@ def _code() -> list:
             _tree(os.path.dirname(os.path.abspath(wp.__file__)), ("_src",))]  # fmt: skip
 
 
+_PLAIN = (bool, int, float, str, bytes, type(None))
+
+
+def _captured(kernels: list) -> list:
+    """The values the kernels capture from the functions that made them, and those the Warp functions
+    they capture capture in turn (closure cells, recursively): a kernel or function a factory builds
+    from a value known only at run time hashes differently for another value, with the same source.
+    Plain values by ``repr``, anything else by its type's name (its source is in the key)."""
+    out, seen = [], set()
+    stack = [k.func for k in kernels]
+    while stack:
+        f = stack.pop()
+        if id(f) in seen or not hasattr(f, "__code__"):
+            continue
+        seen.add(id(f))
+        for name, cell in zip(f.__code__.co_freevars, f.__closure__ or ()):
+            try:
+                v = cell.cell_contents
+            except ValueError:  # not yet bound
+                continue
+            if getattr(v, "adj", None) is not None and callable(getattr(v, "func", None)):  # a Warp function
+                stack.append(v.func)
+                out.append((f.__qualname__, name, "function", getattr(v, "key", "")))
+            elif isinstance(v, _PLAIN) or (isinstance(v, tuple) and all(isinstance(x, _PLAIN) for x in v)):
+                out.append((f.__qualname__, name, "value", repr(v)))
+            else:
+                if callable(v) and hasattr(v, "__code__"):
+                    stack.append(v)
+                out.append((f.__qualname__, name, "object", type(v).__qualname__))
+    return sorted(out)
+
+
 def _key(module, block_dim: int, options: dict, kernels: list, code: list) -> str:
     desc = [FORMAT, module.name, block_dim, [f"{k}:{options[k]}" for k in sorted(options)],
-            sorted([k.key, [f"{o}:{k.options[o]}" for o in sorted(k.options)]] for k in kernels), code]  # fmt: skip
+            sorted([k.key, [f"{o}:{k.options[o]}" for o in sorted(k.options)]] for k in kernels), _captured(kernels),
+            code]  # fmt: skip
     return hashlib.sha256(json.dumps(desc, default=repr).encode()).hexdigest()
 
 

@@ -131,6 +131,13 @@ def load(selection: str):
     """``(scene, identity, usd_version)`` kept for ``selection`` if its entry is whole and every file
     it depends on (the stage's and the code's) stats as it did; else None. ``identity`` maps the stage's
     files to their :func:`file_identity` (what the in-process cache watches)."""
+    try:
+        return _load(selection)
+    except Exception:  # a folder or working folder gone, any other failure: the stage is read instead
+        return None
+
+
+def _load(selection: str):
     d = folder()
     if d is None:
         return None
@@ -139,19 +146,18 @@ def load(selection: str):
     try:
         with open(path, "rb") as f:
             blob = f.read()
-    except OSError:
+    except OSError:  # none kept
         return None
-    try:
-        n = len(_MAGIC)
-        if blob[:n] != _MAGIC or hashlib.sha256(blob[n + 32 :]).digest() != blob[n : n + 32]:
-            return None
-        fmt, ctx, identity, code, usd_version, scene_bytes = _loads(blob[n + 32 :])
-        if fmt != FORMAT or ctx != context or not _same(identity) or not _same(code):
-            return None
-        scene = _loads(scene_bytes)
-    except Exception:  # a damaged or foreign entry (any error its bytes can raise): read the stage instead
-        return None
-    if type(scene).__name__ != "Scene" or not isinstance(usd_version, str):
+    n = len(_MAGIC)
+    if blob[:n] != _MAGIC or hashlib.sha256(blob[n + 32 :]).digest() != blob[n : n + 32]:
+        return None  # not an entry, or not whole
+    fmt, ctx, identity, code, usd_version, scene_bytes = _loads(blob[n + 32 :])
+    if fmt != FORMAT or ctx != context or not _same(identity) or not _same(code):
+        return None  # another layout or selection, or a file of the stage or of the code changed
+    from simulator.scene.model import Scene
+
+    scene = _loads(scene_bytes)
+    if not isinstance(scene, Scene) or not isinstance(usd_version, str):
         return None
     try:
         os.utime(path)  # recently used: eviction removes the least recently used first
@@ -187,6 +193,13 @@ def save(selection: str, scene, identity: dict, usd_version: str) -> bool:
     written. Nothing is written if the folder is off or cannot be written, if a code file changed within
     :data:`simulator.cache_path.RACY_NS` before the process began, or if the entry would exceed
     :data:`MAX_ENTRY_BYTES`."""
+    try:
+        return _save(selection, scene, identity, usd_version)
+    except Exception:  # a folder that cannot be written, a working folder gone: kept in memory only
+        return False
+
+
+def _save(selection: str, scene, identity: dict, usd_version: str) -> bool:
     d = folder()
     if d is None:
         return False
@@ -198,29 +211,23 @@ def save(selection: str, scene, identity: dict, usd_version: str) -> bool:
     if not settled_before_start(code.values()):
         return False
     context = _context(selection)
-    try:
-        scene_bytes = pickle.dumps(scene, protocol=5)
-        body = pickle.dumps((FORMAT, context, identity, code, usd_version, scene_bytes), protocol=5)
-    except Exception:  # a reading with something pickle cannot write: kept in memory only
-        return False
+    scene_bytes = pickle.dumps(scene, protocol=5)  # a reading pickle cannot write raises: kept in memory only
+    body = pickle.dumps((FORMAT, context, identity, code, usd_version, scene_bytes), protocol=5)
     if len(body) > MAX_ENTRY_BYTES:
         return False
+    d.mkdir(parents=True, exist_ok=True, mode=0o700)
+    fd, tmp = tempfile.mkstemp(dir=d, prefix=".", suffix=".part")
     try:
-        d.mkdir(parents=True, exist_ok=True, mode=0o700)
-        fd, tmp = tempfile.mkstemp(dir=d, prefix=".", suffix=".part")
+        with os.fdopen(fd, "wb") as f:
+            f.write(_MAGIC + hashlib.sha256(body).digest() + body)
+        os.replace(tmp, _entry_path(d, context))  # whole or not at all
+    except BaseException:
         try:
-            with os.fdopen(fd, "wb") as f:
-                f.write(_MAGIC + hashlib.sha256(body).digest() + body)
-            os.replace(tmp, _entry_path(d, context))
-        except BaseException:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
-            raise
-        _evict(d)
-    except OSError:
-        return False
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+    _evict(d)
     return True
 
 
