@@ -167,3 +167,15 @@ def test_the_key_follows_what_the_kernels_capture(matte, monkeypatch):
     flipped = [(*c[:3], "True") if c[1] == "surfaces" else c for c in captured]
     monkeypatch.setattr(KH, "_captured", lambda ks: flipped)
     assert KH._key(m, DIM, options, kernels, code) != key
+
+
+def test_the_kernels_read_nothing_but_their_source():
+    """The key holds the kernels' source, not the environment: no kernel module reads an environment
+    variable (a constant taken from one would change the code under the same key)."""
+    import re
+    from pathlib import Path
+
+    kernels = Path(KM.__file__).resolve().parents[1] / "kernels"
+    reads = re.compile(r"\bos\.environ\b|\bgetenv\s*\(|\bfrom os import\b")
+    readers = [p.name for p in kernels.rglob("*.py") if reads.search(p.read_text())]
+    assert len(list(kernels.rglob("*.py"))) > 20 and readers == []
