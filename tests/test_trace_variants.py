@@ -130,3 +130,12 @@ def test_a_variants_hash_does_not_depend_on_the_other():
     hashes = {subprocess.run([sys.executable, "-c", ORDER, *order], env=env, capture_output=True, text=True,
                              check=True).stdout.strip() for order in (["0"], ["1", "0"], ["0", "1"])}  # fmt: skip
     assert len(hashes) == 1
+
+
+def test_asking_for_a_variants_module_again_keeps_its_hash():
+    """The engine asks for its variant's module at each load (the trace, then a probe's): its options are
+    set once, so asking again does not make Warp hash the module again."""
+    module = KM.trace_module(False).module
+    module.get_module_hash(1)
+    hasher = module.hashers[1]
+    assert KM.trace_module(False).module.hashers.get(1) is hasher

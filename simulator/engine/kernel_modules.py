@@ -144,11 +144,12 @@ def is_cached(km: KernelModule, device: str = "cpu", use_kept: bool = True) -> b
     dev = _device(device)
     m = km.module
     dim = _variant(m, dev)
+    # the hash a former process computed for this very code, if kept (nothing where Warp hashed it already)
+    restored = use_kept and wp.config.cache_kernels and kernel_hashes.restore(m, dim)
     if (dev.context, dim) in m.execs and m.execs[(dev.context, dim)].module_hash == m.get_module_hash(dim):
         return True
     if not wp.config.cache_kernels:
         return False
-    restored = use_kept and kernel_hashes.restore(m, dim)  # the hash a former process computed for this code
     try:
         files = _cache_files(m, dev, dim)
     except (AttributeError, TypeError):  # a Warp whose Module names its files otherwise: say nothing, Warp still compiles

@@ -122,7 +122,10 @@ def trace_module(surfaces: bool) -> str:
     (docs/DESIGN.md §Kernel modules). The ``@wp.func``s stay in this module; a kernel's module
     holds the code of every function it calls."""
     name = f"{__name__}.trace_{'surfaces' if surfaces else 'matte'}"
-    wp.set_module_options({"enable_backward": False, "optimization_level": TRACE_OPTIMIZATION_LEVEL}, module=name)
+    options = {"enable_backward": False, "optimization_level": TRACE_OPTIMIZATION_LEVEL}
+    current = wp.get_module_options(name)
+    if any(current.get(k) != v for k, v in options.items()):  # setting them drops the module's hash: once
+        wp.set_module_options(options, module=name)
     return name
 
 # A path whose every bounce survives Russian roulette with probability ρ < 1
