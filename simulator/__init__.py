@@ -12,6 +12,12 @@ Heavy modules (Warp, USD) load on first use, so ``import simulator`` is cheap.
 
 __version__ = "0.1.0"
 
+import time as _time
+
+#: when the package began loading (ns since the epoch): every probesim module this process runs was read
+#: after it (the disk stage cache trusts only code last modified before, simulator.scene.stage_disk)
+_LOADED_NS = _time.time_ns()
+
 __all__ = ["__version__", "load_config", "run", "RunConfig", "RunOutput", "Scene", "Sensor", "Light", "UserError"]
 
 _LAZY = {

@@ -153,7 +153,7 @@ def _versions() -> dict:
     import numpy
 
     from simulator.engine.driver import warp_version
-    from simulator.scene.usd import usd_version
+    from simulator.scene.stage_cache import usd_version  # without pxr where the stage came from disk
 
     return {
         "probesim": __version__,

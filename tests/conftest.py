@@ -1,4 +1,5 @@
-"""Fixtures that several test files share, so that an expensive run is made once per pytest run.
+"""Fixtures that several test files share, so that an expensive run is made once per pytest run, and
+the test run's own cache folder (``PROBESIM_CACHE_PATH``).
 
 - ``office_guided``: the office's 1,464 guided readings against the stored
   reference, checked by tests/test_guide.py (the guide), tests/test_split.py
@@ -9,7 +10,11 @@
 
 from __future__ import annotations
 
+import atexit
 import csv
+import os
+import shutil
+import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -17,6 +22,13 @@ import numpy as np
 import pytest
 
 CONFIGS = Path(__file__).resolve().parents[1] / "configs"
+
+# What probesim keeps across processes (stage readings, Warp module hashes: simulator.cache_path) goes
+# to a folder of the test run's own, removed at exit, never to the user's cache; the processes the
+# tests start inherit it. Tests of those caches set a folder of their own.
+_CACHE = tempfile.mkdtemp(prefix="probesim-test-cache-")
+os.environ["PROBESIM_CACHE_PATH"] = _CACHE
+atexit.register(shutil.rmtree, _CACHE, ignore_errors=True)
 
 
 @dataclass(frozen=True)

@@ -12,11 +12,15 @@ kernel. Which variant a stage gets is read from the engine.
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
+from simulator.engine import kernel_modules as KM
 from simulator.engine.driver import Engine
 from simulator.kernels import estimators as K
 from simulator.kernels import probe as KP
@@ -48,8 +52,8 @@ def quickstart():
 def test_all_matte_stage_gets_the_matte_kernels(quickstart):
     engine = Engine(quickstart, quickstart_sensors()[:1])
     assert engine.scene_rec.surfaces == 0
-    assert engine.trace_variant is K.TRACES[False] and not engine.trace_variant.surfaces
-    assert KP.probe_kernel_for(engine.scene_rec.surfaces) is KP.PROBE_KERNELS[False]
+    assert engine.trace_variant is K.make_trace(False) and not engine.trace_variant.surfaces
+    assert KP.probe_kernel_for(engine.scene_rec.surfaces) is KP.make_probe_kernel(False)
 
 
 @pytest.mark.parametrize("name", ["glazing", "cutout", "mirror_reflector"])
@@ -58,23 +62,30 @@ def test_stage_with_surfaces_gets_the_full_kernels(name):
     scene = load_stage(ROOT / "stages" / f"{name}.usda")
     engine = Engine(scene, [Sensor("s", SensorKind.IRRADIANCE, np.zeros(3), np.array([0.0, 0.0, 1.0]))])
     assert engine.scene_rec.surfaces == 1
-    assert engine.trace_variant is K.TRACES[True] and engine.trace_variant.surfaces
-    assert KP.probe_kernel_for(engine.scene_rec.surfaces) is KP.PROBE_KERNELS[True]
+    assert engine.trace_variant is K.make_trace(True) and engine.trace_variant.surfaces
+    assert KP.probe_kernel_for(engine.scene_rec.surfaces) is KP.make_probe_kernel(True)
 
 
 def test_variants_are_built_once_and_apart():
-    """Both variants exist from import on (so the module's hash is fixed before it loads), distinct,
-    and asking for one again returns the same kernels (Warp's cache then serves them)."""
-    assert K.make_trace(False) is K.TRACES[False] and K.make_trace(True) is K.TRACES[True]
-    assert K.TRACES[False].estimate_kernel is not K.TRACES[True].estimate_kernel
-    assert KP.make_probe_kernel(False) is KP.PROBE_KERNELS[False]
-    assert KP.PROBE_KERNELS[False] is not KP.PROBE_KERNELS[True]
+    """A variant's module holds its estimator, piece-table and probe kernels once the engine's way of
+    loading it (``kernel_modules.trace_module``) has built it; the two variants are distinct, and asking
+    for one again returns the same kernels (Warp's cache then serves them)."""
+    for flag in (False, True):
+        module = KM.trace_module(flag).module
+        t = K.trace_for(int(flag))
+        assert K.make_trace(flag) is t and t.surfaces == flag
+        assert KP.probe_kernel_for(int(flag)) is KP.make_probe_kernel(flag)
+        assert {k.key for k in module._get_live_kernels()} == {
+            t.estimate_kernel.key, t.piece_table_kernel.key, KP.make_probe_kernel(flag).key}
+    assert K.trace_for(0).estimate_kernel is not K.trace_for(1).estimate_kernel
+    assert KP.make_probe_kernel(False) is not KP.make_probe_kernel(True)
 
 
 def _full_kernels(monkeypatch):
     """Make every engine launch the full variant, whatever the stage."""
-    monkeypatch.setattr(K, "trace_for", lambda surfaces: K.TRACES[True])
-    monkeypatch.setattr(KP, "probe_kernel_for", lambda surfaces: KP.PROBE_KERNELS[True])
+    full = K.trace_for(1)
+    monkeypatch.setattr(K, "trace_for", lambda surfaces: full)
+    monkeypatch.setattr(KP, "probe_kernel_for", lambda surfaces: KP.make_probe_kernel(True))
 
 
 @pytest.mark.parametrize("method", ["path", "guided", "mis"])
@@ -101,3 +112,30 @@ def test_full_probe_kernel_gives_the_same_bits_on_a_matte_stage(quickstart, monk
     np.testing.assert_array_equal(full.radiance, matte.radiance)
     np.testing.assert_array_equal(full.integrals, matte.integrals)
     np.testing.assert_array_equal(full.delta, matte.delta)
+
+
+ORDER = """
+import sys
+from simulator.engine import kernel_modules as KM
+for flag in sys.argv[1:]:
+    KM.trace_module(flag == "1")
+print(KM.trace_module(False).module.get_module_hash(1).hex())
+"""
+
+
+def test_a_variants_hash_does_not_depend_on_the_other():
+    """Each variant is built on first use: the all-matte module's hash (what finds its object file in
+    Warp's cache) is the same whether the full variant was built before it, after it or not at all."""
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]))
+    hashes = {subprocess.run([sys.executable, "-c", ORDER, *order], env=env, capture_output=True, text=True,
+                             check=True).stdout.strip() for order in (["0"], ["1", "0"], ["0", "1"])}  # fmt: skip
+    assert len(hashes) == 1
+
+
+def test_asking_for_a_variants_module_again_keeps_its_hash():
+    """The engine asks for its variant's module at each load (the trace, then a probe's): its options are
+    set once, so asking again does not make Warp hash the module again."""
+    module = KM.trace_module(False).module
+    module.get_module_hash(1)
+    hasher = module.hashers[1]
+    assert KM.trace_module(False).module.hashers.get(1) is hasher

@@ -12,7 +12,7 @@ import sys
 import time
 
 from simulator import __version__
-from simulator.commands.startup import lean_start, resume_collections
+from simulator.commands.startup import end_lean, lean_start, resume_collections
 from simulator.engine.methods import METHODS
 from simulator.errors import UserError
 
@@ -308,11 +308,23 @@ def _say_compiles() -> None:
 
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
-    # a short command given on the process's own command line (argv None): start it lean
+    # a short command given on the process's own command line (argv None): start it lean, and end it so
     lean = argv is None and args.command in ("run", "plan") and lean_start()
+    code = _command(args, lean)
+    if lean:
+        end_lean(code)  # returns only where the process must end the usual way
+    return code
+
+
+def _command(args, lean: bool) -> int:
+    """Run the parsed command; its exit status."""
     try:
         if args.command in TRACING:
             _say_compiles()
+        if lean and args.command == "run":  # a fresh process imports each kernel module once: no re-import to scan for
+            from simulator.engine.device import skip_reload_scan
+
+            skip_reload_scan()
         if args.command == "warmup":
             from simulator.commands.warmup import main_warmup
 

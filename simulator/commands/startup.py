@@ -16,15 +16,22 @@ start-up longer without doing anything for the run:
   take CPU time from the stage reader and from Warp's worker threads. A
   fresh process starts with one BLAS thread unless ``OPENBLAS_NUM_THREADS``
   is set (the products compute every element the same way on one thread).
+
+And one thing makes its end longer: tearing the interpreter down frees every
+object those modules made, one by one (about 0.03 s of a one-sensor run,
+after its files are written). :func:`end_lean` ends such a process at once
+instead, once its output is flushed and what would run at exit has run.
 """
 
 from __future__ import annotations
 
+import atexit
 import gc
 import os
 import sys
+import threading
 
-__all__ = ["lean_start", "resume_collections"]
+__all__ = ["lean_start", "resume_collections", "end_lean"]
 
 
 def lean_start() -> bool:
@@ -43,3 +50,30 @@ def resume_collections() -> None:
     if not gc.isenabled():
         gc.freeze()
         gc.enable()
+
+
+def end_lean(code: int) -> None:
+    """End a process :func:`lean_start` started, with exit status ``code``, without tearing the interpreter
+    down: standard output and error are flushed and the functions registered to run at exit are run, as
+    a normal exit would, then the process ends (the system reclaims its memory at once). Returns, so
+    that the caller exits the usual way, where that could lose anything: a thread other than the main
+    one still running and not a daemon (a normal exit waits for it), output that cannot be flushed, or
+    a Python without the exit hook to call."""
+    run_exit_functions = getattr(atexit, "_run_exitfuncs", None)
+    if run_exit_functions is None:
+        return
+    main = threading.main_thread()
+    if threading.current_thread() is not main or any(t is not main and t.is_alive() and not t.daemon
+                                                     for t in threading.enumerate()):
+        return
+    try:
+        sys.stdout.flush()
+        sys.stderr.flush()
+    except (OSError, ValueError):  # a closed or broken stream: the usual exit reports it as it always did
+        return
+    run_exit_functions()
+    try:
+        sys.stdout.flush()
+        sys.stderr.flush()
+    finally:
+        os._exit(code)

@@ -20,7 +20,8 @@ from simulator.scene.emitters import element_index, emitter_cuts, emitter_pieces
 from simulator.scene.model import Scene, Sensor
 from simulator.scene.patches import patch_layout, source_rows
 
-__all__ = ["warp", "warp_version", "cuda_available", "resolve_device", "models_surfaces", "DeviceScene"]
+__all__ = ["CHECKED_WARP", "warp", "skip_reload_scan", "warp_version", "cuda_available", "resolve_device", "models_surfaces",
+           "DeviceScene"]
 
 _wp = None
 
@@ -76,11 +77,58 @@ def cpu_compiler_flags(default: str | None) -> str | None:
     return re.sub(r"(-mllvm[= ]-inline-cold-callsite-threshold=)\d+", rf"\g<1>{cold}", flags)
 
 
+#: the Warp versions whose internals probesim reaches past the public API were checked against (a module's
+#: hash and the bookkeeping its functions' definitions do: :func:`skip_reload_scan`,
+#: :mod:`simulator.engine.kernel_hashes`); another Warp is used only through what it documents
+CHECKED_WARP = ("1.19.",)
+
+_reload_scan = True  # whether Warp notes the module dependencies of probesim's kernel functions (see skip_reload_scan)
+_KERNELS = "simulator.kernels"
+
+
+def skip_reload_scan() -> None:
+    """Spare a process that never imports a kernel module twice (a fresh ``probesim run`` or ``plan``) the
+    scan Warp makes of every ``@wp.func`` and kernel as it is defined, for probesim's kernel modules.
+
+    The scan walks the function's syntax tree once more to note which other Warp modules it calls
+    into. Warp reads those notes only when a Python module is imported again under a new loader, to
+    unload the modules that depend on it (a developer's reload); it does not enter a module's hash,
+    its code or its loading. On the all-matte trace variant's functions it is about 0.04 s of a
+    run's start (docs/DESIGN.md §Start-up of a small run). Other modules, and probesim's in any
+    process that did not ask (a notebook, the API), are scanned as always; so is every module under a
+    Warp this was not checked against (:data:`CHECKED_WARP`)."""
+    global _reload_scan
+    _reload_scan = False
+    if _wp is not None:
+        _skip_scan(_wp)
+
+
+def _skip_scan(wp) -> None:
+    try:
+        from warp._src.context import Module
+    except ImportError:
+        return
+    scan = getattr(Module, "_find_references", None)
+    if scan is None or getattr(scan, "skips", None) == _KERNELS or not wp.config.version.startswith(CHECKED_WARP):
+        return
+
+    def _find_references(self, adj):
+        if self.name == _KERNELS or self.name.startswith(_KERNELS + "."):
+            return None
+        return scan(self, adj)
+
+    _find_references.skips = _KERNELS
+    Module._find_references = _find_references
+
+
 def warp():
     """The ``warp`` module, imported and initialised once, quietly."""
     global _wp
     if _wp is None:
         import warp as wp
+
+        if not _reload_scan:
+            _skip_scan(wp)
 
         wp.config.quiet = True
         wp.config.log_level = 30  # warnings and errors only: no banner, no per-module load lines

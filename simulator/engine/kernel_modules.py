@@ -28,6 +28,7 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import dataclass
 from typing import Callable
 
+from . import kernel_hashes
 from .device import resolve_device, warp
 
 __all__ = ["KernelModule", "CompileProgress", "trace_module", "analytic_module", "every_module", "is_cached",
@@ -85,13 +86,14 @@ def report_compiles_to(reporter: Callable[[CompileProgress], None] | None) -> No
 
 def trace_module(surfaces: bool) -> KernelModule:
     """The module of one trace variant: estimator and probe kernels (``kernels.estimators.make_trace``,
-    ``kernels.probe.make_probe_kernel``). Both kernels are defined before the module is hashed: the
-    probe module is imported here, so the module's hash (and its cache entry) is the same whether or
-    not the run reads a probe."""
+    ``kernels.probe.make_probe_kernel``). Both are built here on first use, before the module can be
+    hashed, so the module's hash (and its cache entry) is the same whether or not the run reads a
+    probe; the other variant is not built (docs/DESIGN.md §Start-up of a small run)."""
     wp = warp()
     from simulator.kernels import estimators as K
-    from simulator.kernels import probe as KP  # noqa: F401  (defines the variant's probe kernel in its module)
+    from simulator.kernels import probe as KP
 
+    KP.make_probe_kernel(bool(surfaces))  # and with it the variant's trace (make_trace)
     label = "trace (surface model)" if surfaces else "trace (all-matte stages)"
     return KernelModule(label, wp.get_module(K.trace_module(surfaces)))
 
@@ -131,14 +133,19 @@ def _variant(module, dev) -> int:
     return _resolve_launch_block_dim(dev, None)
 
 
-def is_cached(km: KernelModule, device: str = "cpu") -> bool:
+def is_cached(km: KernelModule, device: str = "cpu", use_kept: bool = True) -> bool:
     """Whether loading ``km`` on ``device`` needs no compile: already loaded in this process, or its
     object file and metadata are in Warp's kernel cache under its current hash (the test
-    ``Module.load`` makes before compiling; hashing the module is its first step anyway)."""
+    ``Module.load`` makes before compiling; hashing the module is its first step anyway). The hash
+    is the one a former process kept for exactly this code and configuration where there is one
+    (:mod:`.kernel_hashes`; not with ``use_kept`` False), and only if its object file is there: else
+    Warp's own."""
     wp = warp()
     dev = _device(device)
     m = km.module
     dim = _variant(m, dev)
+    # the hash a former process computed for this very code, if kept (nothing where Warp hashed it already)
+    restored = use_kept and wp.config.cache_kernels and kernel_hashes.restore(m, dim)
     if (dev.context, dim) in m.execs and m.execs[(dev.context, dim)].module_hash == m.get_module_hash(dim):
         return True
     if not wp.config.cache_kernels:
@@ -146,8 +153,17 @@ def is_cached(km: KernelModule, device: str = "cpu") -> bool:
     try:
         files = _cache_files(m, dev, dim)
     except (AttributeError, TypeError):  # a Warp whose Module names its files otherwise: say nothing, Warp still compiles
+        if restored:
+            kernel_hashes.forget(m)
         return True
-    return all(os.path.exists(f) for f in files)
+    if all(os.path.exists(f) for f in files):
+        if not restored:
+            kernel_hashes.keep(m, dim)
+        return True
+    if restored:  # nothing is compiled under a kept hash: Warp hashes the module itself
+        kernel_hashes.forget(m)
+        return is_cached(km, device, use_kept=False)
+    return False
 
 
 def _cache_files(m, dev, dim: int) -> tuple[str, str]:
@@ -219,4 +235,6 @@ def load(modules: list[KernelModule], device: str = "cpu", workers: int | None =
     finally:
         stop.set()
         ticker.join()
+    for km in missing:  # compiled under the hash Warp computed: kept for later processes
+        kernel_hashes.keep(km.module, _variant(km.module, dev))
     return labels

@@ -122,7 +122,10 @@ def trace_module(surfaces: bool) -> str:
     (docs/DESIGN.md §Kernel modules). The ``@wp.func``s stay in this module; a kernel's module
     holds the code of every function it calls."""
     name = f"{__name__}.trace_{'surfaces' if surfaces else 'matte'}"
-    wp.set_module_options({"enable_backward": False, "optimization_level": TRACE_OPTIMIZATION_LEVEL}, module=name)
+    options = {"enable_backward": False, "optimization_level": TRACE_OPTIMIZATION_LEVEL}
+    current = wp.get_module_options(name)
+    if any(current.get(k) != v for k, v in options.items()):  # setting them drops the module's hash: once
+        wp.set_module_options(options, module=name)
     return name
 
 # A path whose every bounce survives Russian roulette with probability ρ < 1
@@ -510,11 +513,11 @@ def make_trace(surfaces: bool) -> Trace:
     engine launches the matte variant where ``SceneRec.surfaces`` is 0
     (:func:`trace_for`).
 
-    Both variants are built at import (:data:`TRACES`, in a fixed order);
-    each variant's kernels live in a Warp module of their own
-    (:func:`trace_module`), so a run compiles and loads only its stage's
-    and Warp's kernel cache serves each (docs/DESIGN.md §Trace variants,
-    §Kernel modules)."""
+    Each variant is built on first use (:func:`trace_for`);
+    its kernels live in a Warp module of their own (:func:`trace_module`),
+    so a run defines, compiles and loads only its stage's and Warp's kernel
+    cache serves each (docs/DESIGN.md §Trace variants, §Kernel modules,
+    §Start-up of a small run)."""
     guided_step = make_guided_step(surfaces)
     lights_seen_along = make_lights_seen_along(surfaces)
 
@@ -1444,13 +1447,15 @@ def make_trace(surfaces: bool) -> Trace:
                  piece_table_kernel)
 
 
-#: the two trace variants, all-matte (False) and with the surface model (True), built in this order at import
-TRACES = {flag: make_trace(flag) for flag in (False, True)}
-
-
 def trace_for(surfaces: int) -> Trace:
-    """The trace variant for a stage whose ``SceneRec.surfaces`` is ``surfaces``: the matte one for 0."""
-    return TRACES[surfaces != 0]
+    """The trace variant for a stage whose ``SceneRec.surfaces`` is ``surfaces``: the matte one for 0.
+
+    Built on first use (:func:`make_trace` keeps it), so a run defines the functions of its stage's
+    variant only. Its module also holds the variant's probe kernel, which must be defined before the
+    module is hashed: the engine loads a variant through ``engine.kernel_modules.trace_module``,
+    which defines both. Each variant is a module of its own, and its hash does not depend on whether,
+    or in which order, the other was built (the path functions' keys and sources are the same)."""
+    return make_trace(surfaces != 0)
 
 
 # ---------------------------------------------------------------- analytic

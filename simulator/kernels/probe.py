@@ -399,10 +399,7 @@ def make_probe_kernel(surfaces: bool):
     return probe_kernel
 
 
-#: the probe kernel of each trace variant (:data:`.estimators.TRACES`), built in this order at import
-PROBE_KERNELS = {flag: make_probe_kernel(flag) for flag in (False, True)}
-
-
 def probe_kernel_for(surfaces: int):
-    """The probe kernel for a stage whose ``SceneRec.surfaces`` is ``surfaces`` (:func:`.estimators.trace_for`)."""
-    return PROBE_KERNELS[surfaces != 0]
+    """The probe kernel for a stage whose ``SceneRec.surfaces`` is ``surfaces`` (:func:`.estimators.trace_for`),
+    built with its trace variant on first use."""
+    return make_probe_kernel(surfaces != 0)

@@ -28,7 +28,7 @@ Outside the stage
 Outside every lit room
     The stage's closed shells (connected components of the welded
     triangles whose every edge is shared by an even number of them,
-    :func:`simulator.scene.usd.enclosures.closed_shells`) that are opaque
+    :func:`simulator.scene.enclosures.closed_shells`) that are opaque
     (every face matte: no pane, cut-out or modelled surface) and hold a
     light inside them (the parity rule on the light's centre). A sensor
     outside every one of them sees none of their lights' light.
@@ -166,7 +166,7 @@ class _Topology:
         self.lo, self.hi = self.tris.min(axis=1), self.tris.max(axis=1)
         self.shells = None
         if g.n_triangles <= MAX_TRIANGLES:
-            from simulator.scene.usd.enclosures import closed_shells
+            from simulator.scene.enclosures import closed_shells
 
             self.shells = closed_shells(g.points, g.triangles)
         self.in_shell = np.zeros(g.n_triangles, bool)

@@ -22,6 +22,11 @@ given cannot change what later runs read. The cache holds the
 :data:`MAX_ENTRIES` most recently used stages (at most :data:`MAX_BYTES` of
 arrays in all; none bigger than :data:`MAX_ENTRY_BYTES`); :func:`clear`
 empties it.
+
+A reading it keeps is also written to disk (:mod:`simulator.scene.stage_disk`),
+validated there as strictly and besides by the code that made it, so that the
+first run of a new process skips the reader when nothing changed; a process
+with no reading in memory asks there before reading.
 """
 
 from __future__ import annotations
@@ -39,9 +44,11 @@ from itertools import count
 import numpy as np
 
 from simulator.memo import Kept
+from simulator.scene import stage_disk
+from simulator.scene.stage_disk import file_identity
 
 __all__ = ["MAX_ENTRIES", "MAX_BYTES", "MAX_ENTRY_BYTES", "RACY_NS", "cached_stage", "clear", "stats", "file_identity",
-           "file_sha256"]
+           "file_sha256", "usd_version"]
 
 #: stages kept (least recently used dropped first)
 MAX_ENTRIES = 4
@@ -55,7 +62,7 @@ RACY_NS = 2_000_000_000
 
 _entries = Kept(MAX_ENTRIES, MAX_BYTES)  # selection -> _Entry, sized by its array bytes
 _serial = count(1)
-_counts = {"hits": 0, "reads": 0}
+_counts = {"hits": 0, "reads": 0, "disk_hits": 0}
 _opened = threading.local()  # .files: the paths Python opened while this thread reads a stage
 
 
@@ -87,15 +94,6 @@ def _ensure_hook() -> None:
     if not _hooked:
         sys.addaudithook(_audit)
         _hooked = True
-
-
-def file_identity(path: str) -> tuple | None:
-    """``(size, inode, mtime_ns, ctime_ns)`` of a file, or None if it cannot be stat'ed."""
-    try:
-        st = os.stat(path)
-    except OSError:
-        return None
-    return (st.st_size, st.st_ino, st.st_mtime_ns, st.st_ctime_ns)
 
 
 def _selection(path, light_units, radiometric_spectrum, variants, time_code) -> str:
@@ -136,6 +134,14 @@ def cached_stage(read, path, light_units: str, radiometric_spectrum, variants: d
     if e is not None:
         _counts["hits"] += 1
         return copy.deepcopy(e.scene), e.token
+    on_disk = stage_disk.load(key)
+    if on_disk is not None:
+        scene, identity, read_by = on_disk
+        _counts["disk_hits"] += 1
+        _read_by["usd"] = read_by
+        e = _Entry(copy.deepcopy(scene), next(_serial), identity)
+        _entries.put(key, e, size=_array_bytes(scene))
+        return scene, e.token
     _ensure_hook()
     began_ns = time.time_ns()
     _opened.files = set()
@@ -156,6 +162,7 @@ def cached_stage(read, path, light_units: str, radiometric_spectrum, variants: d
         return scene, None
     e = _Entry(copy.deepcopy(scene), next(_serial), identity)
     _entries.put(key, e, size=nbytes)
+    stage_disk.save(key, scene, identity, usd_version())
     return scene, e.token
 
 
@@ -179,6 +186,20 @@ def file_sha256(path) -> str:
     return digest
 
 
+_read_by = {}  # "usd": the OpenUSD version that made the reading taken from disk
+
+
+def usd_version() -> str:
+    """The OpenUSD version of the stage reader: asked of ``pxr`` once it is loaded; before that, the
+    version that made a reading taken from disk (the same ``pxr`` files: the entry checks them), so a
+    run whose stage came from disk does not import ``pxr`` for its run record."""
+    if "pxr" not in sys.modules and "usd" in _read_by:
+        return _read_by["usd"]
+    from simulator.scene.usd import usd_version as asked
+
+    return asked()
+
+
 def clear() -> None:
     """Forget every kept stage and file digest."""
     _entries.clear()
@@ -186,5 +207,6 @@ def clear() -> None:
 
 
 def stats() -> dict:
-    """``{"hits", "reads", "entries"}``: uses of a kept stage, fresh readings, stages kept now."""
+    """``{"hits", "reads", "disk_hits", "entries"}``: uses of a kept stage, fresh readings, readings taken
+    from disk (:mod:`simulator.scene.stage_disk`), stages kept now."""
     return {**_counts, "entries": len(_entries)}

@@ -297,11 +297,11 @@ def solid_sides(points: np.ndarray, triangles: np.ndarray, prim: np.ndarray, pan
 
     The pane faces of each prim are welded by position, split into connected
     components, and a component is closed when every edge is shared by an
-    even number of its triangles (as :mod:`simulator.scene.usd.enclosures`
+    even number of its triangles (as :mod:`simulator.scene.enclosures`
     finds enclosures); its orientation is the sign of its signed volume
     Σ p0·(p1 × p2)/6.
     """
-    from simulator.scene.usd.enclosures import _closed_components, _components, _welded
+    from simulator.scene.enclosures import _closed_components, _components, _welded
 
     side = np.zeros(len(triangles), np.int8)
     faces = np.flatnonzero(pane)
@@ -544,7 +544,7 @@ def curved_mirrors(geometry, shaded: np.ndarray | None) -> CurvedMirrors:
 
 def _curved_mirrors(g, shaded: np.ndarray | None) -> CurvedMirrors:
     """:func:`curved_mirrors`, found afresh."""
-    from simulator.scene.usd.enclosures import _closed_components, _components, _welded
+    from simulator.scene.enclosures import _closed_components, _components, _welded
 
     face_curve = np.full(g.n_triangles, -1, np.int32)
     if shaded is None:

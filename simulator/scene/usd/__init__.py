@@ -226,7 +226,7 @@ from simulator.scene.usd.geometry import MAX_SPHERE_FACES, SPHERE_SEGMENTS, TESS
 from simulator.scene.usd.geometry import _GeometryBuilder, _read_gprim
 from simulator.scene.usd.animation import note_animated
 from simulator.scene.usd.diagnostics import PxrDiagnostics
-from simulator.scene.usd.enclosures import sealed_light
+from simulator.scene.enclosures import sealed_light
 from simulator.scene.usd.instancers import _read_instancer
 from simulator.scene.usd.lights import DOME_TEXTURE_FORMATS, _is_supported_light, _read_light, _require_light  # noqa: F401
 from simulator.scene.usd.materials import DEFAULT_ALBEDO, _finish_warnings
@@ -416,7 +416,7 @@ def _sources(stage: Usd.Stage, ctx: _Context, lights: list[Light]) -> tuple[str,
 def _refuse_sealed_light(ctx: _Context, geometry: Geometry, lights: list[Light]) -> None:
     """Refuse light sealed in a closed albedo-1 surface: nothing absorbs it, every reading there diverges.
 
-    See :mod:`.enclosures`. Lights at infinity (distant, dome) are outside everything.
+    See :mod:`simulator.scene.enclosures`. Lights at infinity (distant, dome) are outside everything.
     """
     if not ctx.white:
         return

@@ -360,7 +360,7 @@ def _finish_warnings(ctx: _Context) -> None:
     unlimited), finite but meaningless and slow (measured: a closed 4 m
     albedo-1 cube around a sphere light read 26,964 lx where albedo 0.99
     reads 44 lx, at 65,536 rays per sample). Light sealed in a watertight
-    albedo-1 surface is refused (:mod:`.enclosures`); the warning covers
+    albedo-1 surface is refused (:mod:`simulator.scene.enclosures`); the warning covers
     the enclosures that check cannot see.
     """
     if ctx.coloured:
