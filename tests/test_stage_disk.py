@@ -28,6 +28,7 @@ from simulator import cache_path
 from simulator.plan import cache as plan_cache
 from simulator.reference.closed_forms import rect_irradiance_parallel
 from simulator.scene import stage_cache, stage_disk
+from test_warm_runs import TEXTURED  # a wall whose albedo is a texture file
 
 ROOT = Path(__file__).resolve().parents[1]
 TOL = 1e-9  # relative: the exact estimator's float64 sums against the closed form
@@ -151,49 +152,6 @@ def test_an_edited_sublayer_is_read_afresh(tmp_path, disk):
     _age(tmp_path / "over.usda")
     got = _fresh_process_reading(cfg)
     assert abs(got - _expected_lx(1000.0)) <= TOL * _expected_lx(1000.0)
-
-
-TEXTURED = """#usda 1.0
-(
-    metersPerUnit = 1
-    upAxis = "Z"
-)
-
-def RectLight "Lamp"
-{
-    float inputs:intensity = 1000
-    double3 xformOp:translate = (0, 0, 2)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def Material "M"
-{
-    token outputs:surface.connect = </M/S.outputs:surface>
-    def Shader "S"
-    {
-        uniform token info:id = "UsdPreviewSurface"
-        color3f inputs:diffuseColor.connect = </M/T.outputs:rgb>
-        token outputs:surface
-    }
-    def Shader "T"
-    {
-        uniform token info:id = "UsdUVTexture"
-        asset inputs:file = @wall.png@
-        token inputs:sourceColorSpace = "raw"
-        color3f outputs:rgb
-    }
-}
-
-def Mesh "Wall" (
-    prepend apiSchemas = ["MaterialBindingAPI"]
-)
-{
-    int[] faceVertexCounts = [3]
-    int[] faceVertexIndices = [0, 1, 2]
-    point3f[] points = [(-1, -1, 1), (1, -1, 1), (0, 1, 1)]
-    rel material:binding = </M>
-}
-"""
 
 
 def test_an_edited_texture_is_read_afresh(tmp_path, disk):

@@ -45,7 +45,6 @@ import hashlib
 import json
 import os
 import sys
-import tempfile
 import weakref
 
 from .device import CHECKED_WARP, warp
@@ -232,7 +231,7 @@ def keep(module, block_dim: int) -> bool:
         kernels = _servable(module)
         if kernels is None or any(h.kernel_hashes.get(k) is None for k in kernels):
             return False
-        from simulator.cache_path import settled_before_start
+        from simulator.cache_path import settled_before_start, write_atomic
 
         code = _code()
         if not settled_before_start(ident[1:] for tree in code[3:] for ident in tree):
@@ -240,18 +239,7 @@ def keep(module, block_dim: int) -> bool:
         key = _key(module, block_dim, module.resolved_options[block_dim], kernels, code)
         entry = {"format": FORMAT, "key": key, "module": module.name, "hash": h.hash.hex(),
                  "kernels": {k.key: h.kernel_hashes[k].hex() for k in kernels}}  # fmt: skip
-        d.mkdir(parents=True, exist_ok=True, mode=0o700)
-        fd, tmp = tempfile.mkstemp(dir=d, prefix=".", suffix=".part")
-        try:
-            with os.fdopen(fd, "w", encoding="utf-8") as f:
-                json.dump(entry, f)
-            os.replace(tmp, d / f"{key[:40]}.json")
-        except BaseException:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
-            raise
+        write_atomic(d, f"{key[:40]}.json", json.dumps(entry).encode("utf-8"))
         _evict(d)
     except Exception:  # a folder that cannot be written: nothing kept, nothing else changes
         return False

@@ -46,7 +46,6 @@ import json
 import os
 import pickle
 import sys
-import tempfile
 import time
 
 __all__ = ["MAX_ENTRY_BYTES", "MAX_BYTES", "FORMAT", "file_identity", "folder", "load", "save"]
@@ -206,7 +205,7 @@ def _save(selection: str, scene, identity: dict, usd_version: str) -> bool:
     code = _code_identity()
     if code is None:
         return False
-    from simulator.cache_path import settled_before_start
+    from simulator.cache_path import settled_before_start, write_atomic
 
     if not settled_before_start(code.values()):
         return False
@@ -215,18 +214,8 @@ def _save(selection: str, scene, identity: dict, usd_version: str) -> bool:
     body = pickle.dumps((FORMAT, context, identity, code, usd_version, scene_bytes), protocol=5)
     if len(body) > MAX_ENTRY_BYTES:
         return False
-    d.mkdir(parents=True, exist_ok=True, mode=0o700)
-    fd, tmp = tempfile.mkstemp(dir=d, prefix=".", suffix=".part")
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(_MAGIC + hashlib.sha256(body).digest() + body)
-        os.replace(tmp, _entry_path(d, context))  # whole or not at all
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
+    path = _entry_path(d, context)
+    write_atomic(path.parent, path.name, _MAGIC + hashlib.sha256(body).digest() + body)  # whole or not at all
     _evict(d)
     return True
 
