@@ -152,6 +152,54 @@ def test_replicas_scatter_as_the_recombined_covariance():
         assert np.all((q > lo) & (q < hi)), (q, lo, hi)
 
 
+def test_a_small_budget_is_cut_into_batches_whose_covariance_is_right():
+    """16 samples per sensor (fewer than two blocks of 32): the run draws them in 8 batches of 2 (the
+    same samples), so every recombined reading has a finite standard error where one block left the
+    whole covariance infinite (a study's every error NaN). R = 30 replicas (seeds 400…429): for the CIE
+    overcast and clear skies Σ_r (dᵀÊ_r − dᵀĒ)² / dᵀC̄d is χ²(R − 1) if the 7-degree-of-freedom
+    batch-means covariance is unbiased: inside its two-sided 1e-4 quantiles for each sensor and
+    channel (12 tests)."""
+    scene, sensors = _office_sky_and_sensors()
+    lg, pb = _split()
+    eng = Engine(scene, sensors)
+    reps = [eng.run_groups("path", LightGroups(lg, 146, patch_base=pb), samples=16, seed=400 + k) for k in range(30)]
+    assert all(np.isfinite(r.group_cov).all() for r in reps)
+    m = np.stack([r.group_mean for r in reps])
+    c_bar = np.mean([r.group_cov for r in reps], axis=0)
+    a, h = math.radians(250.0), math.radians(30.0)
+    sun = np.array([math.sin(a) * math.cos(h), math.cos(a) * math.cos(h), math.sin(h)])
+    lo, hi = stats.chi2.ppf([5e-5, 1 - 5e-5], len(reps) - 1)
+    for d in (np.r_[sp.sky_weights("overcast", None), 0.0], np.r_[sp.sky_weights(12, sun), 0.0]):
+        x = np.einsum("g,rgsc->rsc", d, m)
+        ss = ((x - x.mean(axis=0)) ** 2).sum(axis=0)
+        q = ss / np.einsum("g,scgh,h->sc", d, c_bar, d)
+        assert np.all((q > lo) & (q < hi)), (q, lo, hi)
+
+
+def test_an_unlit_group_of_unknown_error_adds_nothing_and_unknown_stays_infinite():
+    """A group whose covariance is unknown (inf: one batch) adds nothing to a recombination that
+    leaves it unlit (its weight 0 times inf is 0, not NaN): d = (2, 1, 0) reads 2·2 + 3 = 7 with the lit
+    groups' own variance dᵀCd = 2²·1 + 2·2·1·(−0.25) + 1²·0.5 = 3.5. Lit, the error is inf, never NaN;
+    both in the engine's stopping rule (``_recombined``) and in a study's recombination
+    (``GroupReadings.combine``)."""
+    from simulator.engine.driver import _recombined
+    from simulator.study.trace.groups import GroupReadings
+
+    cov = np.array([[1.0, -0.25, np.inf], [-0.25, 0.5, np.inf], [np.inf, np.inf, np.inf]])[None, None]  # (S, C, G, G)
+    mean = np.array([[[2.0, 3.0, 5.0]]])  # (S, C, G)
+    levels = np.array([[2.0, 1.0, 0.0], [1.0, 0.0, 1.0]])
+    val, se = _recombined(mean, cov, levels)
+    want = 2.0**2 * 1.0 + 2 * 2.0 * 1.0 * (-0.25) + 1.0**2 * 0.5  # dᵀCd over the lit groups 0 and 1
+    assert abs(val[0, 0] - 7.0) <= 1e-12 and abs(se[0, 0] - math.sqrt(want)) <= 1e-12 * math.sqrt(want)
+    assert np.isinf(se[0, 1])
+    gr = GroupReadings(["a", "b", "c"], np.transpose(mean, (2, 0, 1)), np.sqrt(np.abs(np.diagonal(cov, axis1=2, axis2=3))).transpose(2, 0, 1),
+                       cov, np.full((3, 1), 16), np.zeros(3))  # fmt: skip
+    m, e = gr.combine({"a": 2.0, "b": 1.0})
+    assert abs(m[0, 0] - 7.0) <= 1e-12 and abs(e[0, 0] - math.sqrt(want)) <= 1e-12 * math.sqrt(want)
+    m, e = gr.combine({"a": 1.0, "c": 1.0})
+    assert np.isinf(e[0, 0])
+
+
 def test_kernel_patch_index_is_the_python_twin():
     """``tregenza_patch`` (the kernels') and :func:`sky_patches.patch_index` give the same patch for
     20000 random directions over the whole sphere (below the horizon: 145 in both), except within

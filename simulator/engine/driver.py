@@ -31,7 +31,7 @@ from simulator.engine.methods import (
     COMPONENTS, GUIDED_METHODS, HYBRID_METHODS, LIGHT_PICK_MODES, METHOD_FLAGS, light_pick_rule, rr_pilot_choice,
     rr_threshold_rule,
 )
-from simulator.engine.stats import GroupBatchStats, GroupStats, RunningStats, z_for_confidence
+from simulator.engine.stats import GroupBatchStats, GroupStats, RunningStats, lit_variance, z_for_confidence
 from simulator.engine.scenario_split import (
     MAX_PILOT_GROUPS, neyman_split, pass_split, pilot_groups, scenario_relative_variances,
 )
@@ -47,6 +47,9 @@ __all__ = [
 
 #: samples one kernel thread draws for one sensor (a block)
 BLOCK = 32
+#: batches a fixed budget of fewer than 2·BLOCK samples per sensor is cut into, for the light groups'
+#: batch-means covariance (GroupBatchStats): smaller blocks, the same samples
+MIN_GROUP_BATCHES = 8
 #: samples per launch in a batch: big enough to amortise the launch, small
 #: enough that the progress bar and time limit are checked often
 SAMPLES_PER_LAUNCH = 1 << 18
@@ -817,8 +820,10 @@ class Engine:
 
     # ------------------------------------------------------------ sensors
 
-    def _launch(self, params, sensor_ids: np.ndarray, first: np.ndarray, count: np.ndarray, tally: bool = False):
-        """Draw count[i] samples of sensor_ids[i], starting at sample first[i].
+    def _launch(self, params, sensor_ids: np.ndarray, first: np.ndarray, count: np.ndarray, tally: bool = False,
+                block: int = BLOCK):  # fmt: skip
+        """Draw count[i] samples of sensor_ids[i], starting at sample first[i], ``block`` per kernel thread
+        (each sample has its own random stream, so the split changes no sample).
 
         Returns (sensors, counts, means, m2s, non_finite, response_means,
         response_m2s, group_means, group_m2s) for the batch: the responses are
@@ -828,12 +833,12 @@ class Engine:
         instead each kernel thread's sensor and its pick tally, (threads × 2 ×
         L) vec2."""
         wp = warp()
-        nblk = (count + BLOCK - 1) // BLOCK
+        nblk = (count + block - 1) // block
         t_sensor = np.repeat(sensor_ids, nblk).astype(np.int32)
         starts = np.repeat(np.cumsum(nblk) - nblk, nblk)
         within = np.arange(len(t_sensor)) - starts
-        t_first = (np.repeat(first, nblk) + within * BLOCK).astype(np.int32)
-        t_count = np.minimum(BLOCK, np.repeat(first + count, nblk) - t_first).astype(np.int32)
+        t_first = (np.repeat(first, nblk) + within * block).astype(np.int32)
+        t_count = np.minimum(block, np.repeat(first + count, nblk) - t_first).astype(np.int32)
         n = len(t_sensor)
         rec = self._dev.rec
         with wp.ScopedDevice(self.device):
@@ -1249,14 +1254,21 @@ class Engine:
             per = max(BLOCK, SAMPLES_PER_LAUNCH // max(n_run, 1))
             want = np.minimum(want, per)
 
+        # batch means need batches: a fixed budget too small for two whole blocks per sensor is cut into
+        # MIN_GROUP_BATCHES smaller ones (one block of 16 samples left every sky patch's error infinite)
+        block = BLOCK
+        if isinstance(gstats, GroupBatchStats) and not adaptive and cap < 2 * BLOCK:
+            block = max(1, cap // MIN_GROUP_BATCHES)
+
         def step(ids, first, count):
             parts = [(ids, first, count)]
             if gstats is not None:
                 width = groups.state_width()
-                parts = _split_batch(ids, first, count, max(1, GROUP_STATE_BYTES // (16 * width)) * BLOCK)
+                parts = _split_batch(ids, first, count, max(1, GROUP_STATE_BYTES // (16 * width)) * block, block)
             for p_ids, p_first, p_count in parts:
                 tb = time.perf_counter()
-                sens, cnt, mean, m2, bad, r_mean, r_m2, g_mean, g_m2 = self._launch(params, p_ids, p_first, p_count)
+                sens, cnt, mean, m2, bad, r_mean, r_m2, g_mean, g_m2 = self._launch(params, p_ids, p_first, p_count,
+                                                                                     block=block)  # fmt: skip
                 dt = time.perf_counter() - tb
                 stats.merge(sens, cnt, mean, m2)
                 if rstats is not None:
@@ -1587,10 +1599,13 @@ def _recombined(mean: np.ndarray, cov: np.ndarray, levels: np.ndarray) -> tuple[
     from group means (S, C, G) and covariance (S, C, G, G); both (S, J·C), the stopping rule's channels."""
     d = np.asarray(levels, np.float64)
     val = np.einsum("jg,scg->sjc", d, mean)
-    with np.errstate(invalid="ignore"):
+    if np.isfinite(cov).all():
         var = np.einsum("jg,scgh,jh->sjc", d, cov, d)
+    else:  # a group whose error is unknown (inf) counts only where it is lit: an unlit one adds 0, not 0·inf
+        var = np.stack([lit_variance(dj, cov) for dj in d], axis=1)
     se = np.sqrt(np.where(np.isnan(var), np.inf, np.maximum(var, 0.0)))
     return val.reshape(len(val), -1), se.reshape(len(se), -1)
+
 
 
 @contextmanager
@@ -1608,17 +1623,17 @@ def _fields_set(rec, **values):
             setattr(rec, name, value)
 
 
-def _split_batch(ids: np.ndarray, first: np.ndarray, count: np.ndarray, max_samples: int) -> list[tuple]:
+def _split_batch(ids: np.ndarray, first: np.ndarray, count: np.ndarray, max_samples: int, block: int = BLOCK) -> list[tuple]:
     """A batch ``(ids, first, count)`` cut into launches of at most ``max_samples`` samples (a multiple
-    of ``BLOCK``), each sensor at most once per launch, samples in order (the random streams are
-    per sample, so the cut changes no sample)."""
+    of ``block``, the samples per kernel thread), each sensor at most once per launch, samples in order
+    (the random streams are per sample, so the cut changes no sample)."""
     out, cur, room = [], ([], [], []), max_samples
     for i, f, c in zip(ids, first, count):
         f, c = int(f), int(c)
         while c > 0:
             take = min(c, room)
             cur[0].append(i), cur[1].append(f), cur[2].append(take)
-            f, c, room = f + take, c - take, room - -(-take // BLOCK) * BLOCK
+            f, c, room = f + take, c - take, room - -(-take // block) * block
             if room <= 0:
                 out.append(cur)
                 cur, room = ([], [], []), max_samples

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["RunningStats", "GroupStats", "GroupBatchStats", "Z95", "z_for_confidence"]
+__all__ = ["RunningStats", "GroupStats", "GroupBatchStats", "Z95", "lit_variance", "z_for_confidence"]
 
 #: two-sided 95% normal quantile, for confidence half-widths
 Z95 = 1.959963984540054
@@ -282,3 +282,11 @@ class GroupBatchStats:
             c /= (n * (b - 1.0))[:, None, None, None]
         c[few] = np.inf
         return c
+
+
+def lit_variance(d: np.ndarray, cov: np.ndarray) -> np.ndarray:
+    """dᵀCd over the groups lit in ``d`` (G,) only, from the covariance (..., G, G): inf where a lit
+    group's is; 0 when none is lit."""
+    lit = np.flatnonzero(d)
+    with np.errstate(invalid="ignore"):
+        return np.einsum("g,...gh,h->...", d[lit], cov[..., lit[:, None], lit[None, :]], d[lit])

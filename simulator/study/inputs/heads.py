@@ -184,6 +184,7 @@ def combine_heads(gr, levels: dict, ids, heads: HeadFactors, ch: int, mean: np.n
     candidate indices, ``mean``/``stderr`` (S, 2) its recombined readings (channel ``ch``, the study's
     quantity, is replaced for the modelled sensors: the head's optics value, and the first channel's
     relative standard error on it)."""
+    from simulator.engine.stats import lit_variance
     from simulator.study.trace.groups import level_of
 
     where = {int(i): k for k, i in enumerate(heads.index)}
@@ -200,7 +201,9 @@ def combine_heads(gr, levels: dict, ids, heads: HeadFactors, ch: int, mean: np.n
             w = d * sig[:, c]
             x.append(float(w @ gr.mean[:, row, ch]))
             if c == 0:
-                var0 = float(w @ gr.cov[row, ch] @ w)
+                cov = gr.cov[row, ch]
+                var0 = float(w @ cov @ w) if np.isfinite(cov).all() else float(lit_variance(w, cov))
         v = model.optics_value(x)
         mean[row, ch] = v
-        stderr[row, ch] = np.sqrt(max(var0, 0.0)) / x[0] * v if x[0] > 0 else 0.0
+        var0 = np.inf if np.isnan(var0) else max(var0, 0.0)  # an unknown error stays inf, never NaN
+        stderr[row, ch] = np.sqrt(var0) / x[0] * v if x[0] > 0 else 0.0

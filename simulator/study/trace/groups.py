@@ -158,10 +158,15 @@ class GroupReadings:
     def combine(self, levels: dict[str, float]) -> tuple[np.ndarray, np.ndarray]:
         """Readings ``(mean, stderr)``, each (S, 2), of the dimming vector ``levels``
         (group name → level; groups not named are off)."""
+        from simulator.engine.stats import lit_variance
+
         d = np.array([level_of(levels, n) for n in self.names])
         mean = np.einsum("g,gsc->sc", d, self.mean)
-        var = np.einsum("g,scgh,h->sc", d, self.cov, d)
-        return mean, np.sqrt(np.maximum(var, 0.0))
+        if np.isfinite(self.cov).all():
+            var = np.einsum("g,scgh,h->sc", d, self.cov, d)
+        else:  # a group whose error is unknown (inf) counts only where it is lit; unknown stays inf, never NaN
+            var = lit_variance(d, self.cov)
+        return mean, np.sqrt(np.where(np.isnan(var), np.inf, np.maximum(var, 0.0)))
 
 
 def group_scene(scene: Scene, light_names: list[str]) -> Scene:
