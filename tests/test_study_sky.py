@@ -121,14 +121,16 @@ def test_the_bundled_daylight_study_is_one_trace():
 
 
 @pytest.mark.parametrize("old, new, key", [
-    ("samples = 64", "samples = 32", "simulation.samples"),
+    ("samples = 64", "samples = 1", "simulation.samples"),
     ("samples = 64", "samples = 64\nrel_error = 0.05\nmax_samples = 32", "simulation.max_samples"),
 ])  # fmt: skip
 def test_a_patch_sky_needs_two_batches_for_its_errors(tmp_path, old, new, key):
-    """A sky split into patches estimates its covariance from batch means of
-    32 samples over B − 1 degrees of freedom: at 32 samples a sensor has one
-    batch and every error of the year would be undefined (nan), so the study
-    is refused in one line naming the key, and nothing is written."""
+    """A sky split into patches estimates its covariance from batch means over
+    B − 1 degrees of freedom: one sample per sensor (a fixed budget under two
+    blocks is cut into smaller batches, but one sample is one batch), or an
+    adaptive run capped at one block of 32, leaves every error of the year
+    undefined, so the study is refused in one line naming the key, and
+    nothing is written."""
     assert old in SKY
     with pytest.raises(UserError) as e:
         study, p = _study(tmp_path, SKY.replace(old, new, 1))

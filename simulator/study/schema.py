@@ -633,7 +633,7 @@ class Study(_Model):
 
 
 #: Samples in one kernel block (``simulator.engine.driver.BLOCK``): a sky split into patches
-#: estimates its covariance from block means, so a sensor needs two blocks for any error at all.
+#: estimates its covariance from block means, so an adaptive run needs two blocks for any error at all.
 SAMPLES_PER_BLOCK = 32
 
 
@@ -641,16 +641,17 @@ def _check_patch_batches(study: "Study", split: set) -> None:
     """A sky traced as patches needs at least two batches per sensor, or its errors cannot be estimated.
 
     The patches' covariance is the batch-means estimate over B − 1 degrees of
-    freedom (``simulator.engine.stats.GroupBatchStats``): at ``samples`` ≤ 32
-    every sensor has one batch, B − 1 = 0, and every hourly error, DF error and
-    control score error would be undefined (``nan``)."""
+    freedom (``simulator.engine.stats.GroupBatchStats``). A fixed budget under
+    two blocks is drawn in smaller batches (``driver.MIN_GROUP_BATCHES``), so
+    only one sample per sensor leaves B − 1 = 0; an adaptive run's batches are
+    whole blocks, so its ``max_samples`` must allow two. Either way every hourly
+    error, DF error and control score error would otherwise be undefined."""
     if not split:
         return
     sim = study.simulation
-    if sim.rel_error is None and sim.samples <= SAMPLES_PER_BLOCK:
-        raise _RefError("simulation.samples", f"a sky split into patches (group {sorted(split)[0]!r}) needs more than "
-                        f"{SAMPLES_PER_BLOCK} samples per sensor (two batches of {SAMPLES_PER_BLOCK}) to estimate its "
-                        f"errors; got {sim.samples}")  # fmt: skip
+    if sim.rel_error is None and sim.samples < 2:
+        raise _RefError("simulation.samples", f"a sky split into patches (group {sorted(split)[0]!r}) needs at least "
+                        f"2 samples per sensor (two batches) to estimate its errors; got {sim.samples}")  # fmt: skip
     if sim.rel_error is not None and sim.max_samples is not None and sim.max_samples <= SAMPLES_PER_BLOCK:
         raise _RefError("simulation.max_samples", f"a sky split into patches (group {sorted(split)[0]!r}) needs more "
                         f"than {SAMPLES_PER_BLOCK} samples per sensor to estimate its errors; got {sim.max_samples}")
