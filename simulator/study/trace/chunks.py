@@ -37,7 +37,7 @@ from simulator.study.inputs.sun import sun_direction, sun_frame
 __all__ = ["ChunkSpec", "ChunkStore", "compute_chunk", "atomic_write", "make_chunks", "StudyInterrupted"]
 
 #: bump when a change to the tracing would change a chunk's numbers
-CHUNK_FORMAT = 5
+CHUNK_FORMAT = 6
 
 
 class StudyInterrupted(Exception):
