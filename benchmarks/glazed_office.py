@@ -22,7 +22,8 @@ and the ratio of each to the open window's. ``--path`` also reads the glazed off
 with plain paths. ``--fixed-k K`` instead times each window's samples at one split K
 (CPU µs per sample, relative variance per sample, rays tallied per sample), beside the
 open window traced with the surface-model kernels; ``--perf DIR`` adds where the time
-goes, per kernel function (Linux ``perf``).
+goes, per kernel function (Linux ``perf``). ``--queries`` times single ray queries
+from the work plane toward the window and in cosine directions, open and pane.
 
     PYTHONPATH=. python benchmarks/glazed_office.py --samples 256 --seed 1
     PYTHONPATH=. python benchmarks/glazed_office.py --fixed-k 7 --samples 128 --perf /tmp/perf
@@ -170,6 +171,33 @@ def _perf_stop(rec, us_per_sample: float) -> list[tuple[str, float]]:
     return rows[:8]
 
 
+def query_costs(window: str, n: int = 400_000) -> list[tuple[str, float, float]]:
+    """CPU ns per ray query (``first_hit`` and the BVH query alone, least of 5 launches, one worker) of
+    n rays to infinity from the work plane (z 0.8 m): toward points uniform in the window opening, and
+    in cosine directions; with the share of them that meet a face."""
+    from simulator.config.loader import load_config
+    from simulator.engine.ray_profile import cast, time_queries
+    from simulator.pipeline import collect_sensors, config_engine, load_scene
+    from simulator.scene.model import SensorKind
+
+    rng = np.random.default_rng(1)
+    o = np.c_[rng.uniform(0.5, 5.5, n), rng.uniform(0.5, 3.5, n), np.full(n, 0.8)]
+    to_window = np.c_[np.zeros(n), rng.uniform(0.6, 3.4, n), rng.uniform(0.9, 2.3, n)] - o
+    to_window /= np.linalg.norm(to_window, axis=1)[:, None]
+    u1, u2 = rng.random(n), rng.random(n)
+    cosine = np.c_[np.sqrt(u1) * np.cos(2 * np.pi * u2), np.sqrt(u1) * np.sin(2 * np.pi * u2), np.sqrt(1 - u1)]
+    cfg = load_config(ROOT / "configs" / "office_bench.toml")
+    cfg = dataclasses.replace(cfg, variants={**cfg.variants, "window": window})
+    scene = load_scene(cfg)
+    engine = config_engine(cfg, scene, [s for s in collect_sensors(cfg, scene) if s.kind != SensorKind.PROBE][:4])
+    out = []
+    for name, d in (("toward the window", to_window), ("cosine", cosine)):
+        t = np.full(n, 1e30)
+        first_hit_s, bvh_s = time_queries(engine, o, d, t, repeats=5)
+        out.append((name, first_hit_s / n * 1e9, float(np.mean(cast(engine, o, d, t).face >= 0))))
+    return out
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--samples", type=int, default=256)
@@ -181,7 +209,13 @@ def main() -> None:
                     help="instead: CPU µs per sample at split K, the open window also with the surface-model kernels")
     ap.add_argument("--perf", type=Path, metavar="DIR", help="with --fixed-k: perf record each timed run into DIR "
                     "and print where its time goes (needs Linux perf)")  # fmt: skip
+    ap.add_argument("--queries", action="store_true", help="instead: CPU ns per ray query, open and pane windows")
     a = ap.parse_args()
+    if a.queries:
+        for w in ("open", "pane"):
+            for name, ns, hit in query_costs(w):
+                print(f"{w:<6} rays {name:<18} {ns:6.1f} CPU ns per query, {hit:.1%} meet a face")
+        return
     if a.fixed_k:
         rows = [per_sample(w, a.samples, a.fixed_k, a.perf) for w in ["open", "open+surfaces", *a.windows]]
         print(f"split K = {a.fixed_k}, {a.samples} samples per sensor, 1,464 sensors, guided")
