@@ -88,7 +88,7 @@ from .surfaces import ABSORB, MIRROR, mirror, transmittance_along
 from .bsdf import Bsdf, bsdf_f, bsdf_pdf, bsdf_sample, lobe_weights, mirror_reflectance
 from .glossy import face_bsdf, is_glossy, is_shaded, mirror_share, spawn_origin, vertex_normal
 from .mirrors import (
-    ImageSample, area_image, area_image_mirror_prob, has_area_image, has_image, image_light_pdf, image_source,
+    ImageSample, area_image, area_image_mirror_prob, has_area_image, has_image, image_light_pdf, image_may_exist, image_source,
     is_cone_light, mirror_event_prob,
 )
 from .curved import curve_covers
@@ -751,6 +751,8 @@ def make_trace(surfaces: bool) -> Trace:
                         u_im = wp.vec2(0.0, 0.0)
                         if is_cone_light(scene.lights[li]):  # drawn for the sun only: others keep their stream
                             u_im = wp.vec2(wp.randf(rng), wp.randf(rng))
+                        if k < scene.n_mirror_planes and not image_may_exist(scene, li, k, p):
+                            continue  # the light is on the plane's other side: no image, settled without the call
                         im = image_source(scene, li, k, p, ns, o, u_im, sh)
                         if im.traced != 0:  # tallied only where it cast a ray: most are settled before any (the
                             count_shadow_ray(scene, params)  # light on the mirror's other side), at no cost
