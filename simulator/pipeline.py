@@ -265,6 +265,9 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True, sensors: l
         from simulator.plan.planner import with_optics
 
         plan = with_optics(plan, scene, twins)
+    if sim.rel_error is None and sim.samples == 1 and any(sp.method not in ("analytic", "exact") for sp in plan.sensors):
+        misplaced.append("simulation.samples = 1: one sample per sensor gives no standard error (its stderr columns "
+                         "read inf); draw 2 or more")  # fmt: skip
     reason = "per-sensor plan (see plan)" if sim.method == "auto" else "as requested"
     probes_method = None
     if probes or any(s.kind == SensorKind.GLARE for s in sensors):  # no closed form: one method for the run

@@ -315,3 +315,26 @@ def test_bundled_studies_raise_no_placement_warning(path):
     study, p = load_study(path)
     scene = load_stage((p.parent / study.stage).resolve(), light_units=study.light_units)
     assert candidate_warnings(scene, study.candidates, build_candidates(scene, study.candidates, path), path) == []
+
+
+def test_one_sample_per_sensor_is_named_and_reads_an_infinite_error():
+    """One sample per sensor carries no standard error: the traced readings' stderr is inf (never 0 or
+    a guess) and the run says so in one warning naming the key; a run whose every reading has a closed
+    form (configs/point.toml) needs no samples and says nothing."""
+    import dataclasses
+
+    from simulator.config import load_config
+    from simulator.pipeline import run
+
+    lines = []
+    cfg = load_config(ROOT / "configs" / "furnace.toml")
+    cfg = dataclasses.replace(cfg, simulation=dataclasses.replace(cfg.simulation, samples=1, rel_error=None))
+    out = run(cfg, log=lines.append, write=False)
+    assert any(l.startswith("warning: simulation.samples = 1:") for l in lines), lines
+    errors = [r.values["irradiance_stderr_W_m2"] for r in out.rows if "irradiance_stderr_W_m2" in r.values]
+    assert len(errors) == 7 and all(np.isinf(e) for e in errors)  # the furnace's seven irradiance and patch rows
+    lines = []
+    cfg = load_config(ROOT / "configs" / "point.toml")
+    run(dataclasses.replace(cfg, simulation=dataclasses.replace(cfg.simulation, samples=1, rel_error=None)), log=lines.append,
+        write=False)  # fmt: skip
+    assert not any("simulation.samples = 1" in l for l in lines)
