@@ -2,7 +2,8 @@
 
 ``python benchmarks/first_run.py [CONFIG] [--trees DIR ...] [--rounds N]`` (from a checkout;
 CONFIG defaults to configs/quickstart.toml). Every step is the command line in a new process
-with ``WARP_CACHE_PATH`` pointed at a kernel cache of its own, as a fresh install has:
+with ``WARP_CACHE_PATH`` pointed at a kernel cache of its own and ``PROBESIM_CACHE_PATH`` at an
+empty folder of probesim's own cache, as a fresh install has:
 
 1. ``probesim run CONFIG`` on an empty cache (the first run: it compiles what it needs);
 2. the same run again on that cache (a second run: every module cached);
@@ -73,7 +74,9 @@ def main(argv=None) -> int:
             ]
             for name, command, which in steps:
                 for t in trees:
-                    env = dict(os.environ, PYTHONPATH=t, WARP_CACHE_PATH=caches[t][which])
+                    # probesim's own cache (stage readings, kept kernel hashes) beside Warp's, as empty as it
+                    env = dict(os.environ, PYTHONPATH=t, WARP_CACHE_PATH=caches[t][which],
+                               PROBESIM_CACHE_PATH=caches[t][which] + "_probesim")  # fmt: skip
                     load = os.getloadavg()[0]
                     wall, cpu, err = _timed([sys.executable, "-m", "simulator", *command(t)], env, tmp)
                     where = "" if len(trees) == 1 else f" [{t}]"
