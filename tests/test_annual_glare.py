@@ -6,7 +6,6 @@ a pane as the kernels' shadow rays do (docs/REFERENCES.md §Thin slab).
 """
 
 import math
-from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -109,30 +108,15 @@ def test_the_host_rays_pass_a_pane_as_the_kernels_shadow_rays_do():
     """The glazed office (a clear pane of ior 1.52 in the window): the direct sun at work-plane points through
     the pane, the host's E_n·cos·T(θ) against an ordinary direct-light run of a delta sun (4σ and 1e-4 relative),
     for 6 sun positions; behind the blind (opaque) nothing."""
-    from simulator.config.loader import SimulationConfig
-    from simulator.engine.driver import Engine, load_kernels
-    from simulator.pipeline import run_plan
-    from simulator.plan.planner import make_plan
-    from simulator.scene.model import Light, LightKind
     from simulator.scene.usd import load_stage
     from simulator.study.annual.sunlight import direct_sun
-    from simulator.study.inputs.sun import sun_direction, sun_frame
-    from simulator.study.trace.groups import group_scene
+    from test_study_annual import host_sun_against_engine
 
     base = load_stage(ROOT / "stages" / "office.usda", light_units="photometric", radiometric_spectrum="E", variants={"window": "glazed"})
     sensors = [Sensor(f"s{i}", SensorKind.IRRADIANCE, np.array([x, y, 0.8]), np.array([0.0, 0.0, 1.0]))
                for i, (x, y) in enumerate((x, y) for x in (0.5, 1.5, 2.5, 3.5) for y in (1.0, 2.0, 3.0))]  # fmt: skip
     suns = [(250, 20), (270, 35), (290, 15), (230, 40), (270, 60), (260, 10)]
-    dirs = np.stack([sun_direction(a, e) for a, e in suns])
-    host = direct_sun(sensors, base, dirs, np.full(len(suns), 50000.0))
-    load_kernels("cpu")
-    sim = SimulationConfig(samples=16, seed=1, component="direct")
-    lit = 0
-    for k, d in enumerate(dirs):
-        sc = replace(group_scene(base, []), lights=[Light("/Sun", LightKind.DISTANT, np.zeros(3), sun_frame(d), (50000 / 683.0, 50000.0))])
-        r = run_plan(Engine(sc, sensors), make_plan(sc, sensors, sim.method, sim.component), sim)
-        np.testing.assert_allclose(r.mean[:, 1], host[k], rtol=1e-4, atol=1e-3 + 4 * float(r.stderr[:, 1].max()))
-        lit += int(np.sum(host[k] > 0))
+    dirs, lit = host_sun_against_engine(base, sensors, suns)
     assert lit > 10
     # through the pane the sun is T(θ) of what the open window passes
     from simulator.scene.surfaces import slab_rt

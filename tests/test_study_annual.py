@@ -440,35 +440,43 @@ def test_a_missing_weather_file_exits_2_with_one_line(tmp_path):
     assert not (tmp_path / "a.out" / "annual_hourly.csv").exists()
 
 
-def test_the_host_shadow_rays_read_the_suns_direct_light_as_the_engine_does():
-    """Direct light of a delta sun at office sensors (sunlit, shadowed and in the window's edge light)
-    for 12 sun positions: the host's exact E_n·cos·V against an ordinary direct-light run."""
+def host_sun_against_engine(base, sensors, suns) -> tuple[np.ndarray, int]:
+    """The host's exact direct sun E_n·cos·V(·T through panes) at ``sensors`` for each (azimuth, elevation)
+    of ``suns`` (deg, E_n = 50,000 lx), held to an ordinary direct-light run of a delta sun at each (1e-4
+    relative and 4σ); the suns' directions and the count of (sun, sensor) pairs the host finds lit."""
     from simulator.config.loader import SimulationConfig
     from simulator.engine.driver import Engine, load_kernels
     from simulator.pipeline import run_plan
     from simulator.plan.planner import make_plan
-    from simulator.scene.model import Light, LightKind, Sensor, SensorKind
-    from simulator.scene.usd import load_stage
-    from simulator.study.trace.groups import group_scene
-    from simulator.study.inputs.sun import sun_direction, sun_frame
+    from simulator.scene.model import Light, LightKind
     from simulator.study.annual.sunlight import direct_sun
+    from simulator.study.inputs.sun import sun_direction, sun_frame
+    from simulator.study.trace.groups import group_scene
+
+    dirs = np.stack([sun_direction(a, e) for a, e in suns])
+    host = direct_sun(sensors, base, dirs, np.full(len(suns), 50000.0))
+    load_kernels("cpu")
+    sim = SimulationConfig(samples=16, seed=1, component="direct")
+    for k, d in enumerate(dirs):
+        sc = replace(group_scene(base, []), lights=[Light("/Sun", LightKind.DISTANT, np.zeros(3), sun_frame(d), (50000 / 683.0, 50000.0))])
+        r = run_plan(Engine(sc, sensors), make_plan(sc, sensors, sim.method, sim.component), sim)
+        np.testing.assert_allclose(r.mean[:, 1], host[k], rtol=1e-4, atol=1e-3 + 4 * float(r.stderr[:, 1].max()))
+    return dirs, int(np.sum(host > 0))
+
+
+def test_the_host_shadow_rays_read_the_suns_direct_light_as_the_engine_does():
+    """Direct light of a delta sun at office sensors (sunlit, shadowed and in the window's edge light)
+    for 12 sun positions: the host's exact E_n·cos·V against an ordinary direct-light run."""
+    from simulator.scene.model import Sensor, SensorKind
+    from simulator.scene.usd import load_stage
 
     base = load_stage(ROOT / "stages" / "office.usda", light_units="photometric", radiometric_spectrum="E")
     xs = np.linspace(0.3, 5.7, 10)
     sensors = [Sensor(f"s{i}", SensorKind.IRRADIANCE, np.array([x, y, 0.8]), np.array([0.0, 0.0, 1.0]))
                for i, (x, y) in enumerate((x, y) for x in xs for y in (0.8, 2.0, 3.2))]  # fmt: skip
     suns = [(az, el) for az in (200, 230, 250, 270, 290, 310) for el in (12, 35)]
-    dirs = np.stack([sun_direction(a, e) for a, e in suns])
-    host = direct_sun(sensors, base, dirs, np.full(len(suns), 50000.0))
-    load_kernels("cpu")
-    sim = SimulationConfig(samples=16, seed=1, component="direct")
-    lit = 0
-    for k, d in enumerate(dirs):
-        sc = replace(group_scene(base, []), lights=[Light("/Sun", LightKind.DISTANT, np.zeros(3), sun_frame(d), (50000 / 683.0, 50000.0))])
-        r = run_plan(Engine(sc, sensors), make_plan(sc, sensors, sim.method, sim.component), sim)
-        np.testing.assert_allclose(r.mean[:, 1], host[k], rtol=1e-4, atol=1e-3 + 4 * float(r.stderr[:, 1].max()))
-        lit += int(np.sum(host[k] > 0))
-    assert 0 < lit < host.size  # some sunlit, some in shadow
+    _, lit = host_sun_against_engine(base, sensors, suns)
+    assert 0 < lit < len(suns) * len(sensors)  # some sunlit, some in shadow
 
 
 def test_the_bundled_annual_study_reads_its_derived_weather():
