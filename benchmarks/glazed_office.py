@@ -144,6 +144,7 @@ def _perf_start(window: str, perf_dir: Path):
                 if m:
                     lines.append(f"{base + int(m.group(1), 16):x} {int(m.group(2), 16):x} {m.group(3)}")
             break
+    # perf names code it cannot find in a file from this map, at the fixed place it reads (its JIT convention)
     Path(f"/tmp/perf-{os.getpid()}.map").write_text("\n".join(lines) + "\n")
     perf_dir.mkdir(parents=True, exist_ok=True)
     data = perf_dir / f"{window}.data"

@@ -48,7 +48,8 @@ __all__ = [
 #: samples one kernel thread draws for one sensor (a block)
 BLOCK = 32
 #: batches a fixed budget of fewer than 2·BLOCK samples per sensor is cut into, for the light groups'
-#: batch-means covariance (GroupBatchStats): smaller blocks, the same samples
+#: batch-means covariance (GroupBatchStats): smaller blocks, the same samples. B − 1 = 7 degrees of
+#: freedom put the error's own relative error near 1/sqrt(2(B − 1)) = 27% (stats.GroupBatchStats, Notes)
 MIN_GROUP_BATCHES = 8
 #: samples per launch in a batch: big enough to amortise the launch, small
 #: enough that the progress bar and time limit are checked often
