@@ -157,3 +157,48 @@ def test_a_killed_process_resumes_to_byte_identical_outputs(tmp_path):
     assert res.chunks_loaded >= n_at_kill and res.chunks_computed == res.chunks_total - res.chunks_loaded > 0
     _, long_a, summ_a = _run(path, tmp_path / "whole", mode="inprocess")
     assert long_a == long_b and summ_a == summ_b
+
+
+def test_chunks_another_build_traced_are_not_reused(tmp_path, monkeypatch):
+    """A study folder resumed by another build of probesim (any file of the package changed, or
+    another Warp or numpy) traces every chunk again and says how many it left unused: chunks of two
+    builds would agree only within their errors, and the study would no longer be the bytes of one
+    run whole. The same build reuses them all (above)."""
+    from simulator.study.trace import chunks
+
+    path = tiny_study(tmp_path)
+    _, long_a, _ = _run(path, tmp_path / "o", mode="inprocess")
+    monkeypatch.setattr(chunks, "code_digest", lambda: "another build")
+    res, long_b, _ = _run(path, tmp_path / "o", mode="inprocess")
+    assert (res.chunks_loaded, res.chunks_computed) == (0, 4)
+    assert [w for w in res.warnings if "another build of probesim" in w] == [
+        f"{tmp_path / 'o'}: 4 finished chunks in this folder were traced by another build of probesim and are not "
+        "reused (traced again where this study needs them)"]  # fmt: skip
+    assert long_b == long_a  # the same code really: the same bytes
+    res, _, _ = _run(path, tmp_path / "o", mode="inprocess")  # that build again: its own chunks reused
+    assert (res.chunks_loaded, res.chunks_computed) == (4, 0)
+
+
+def test_the_code_digest_follows_every_file_of_the_tree(tmp_path):
+    """tree_digest changes when a source, table or settings file is edited, added, removed or
+    renamed, and not for compiled caches or other files."""
+    from simulator.study.trace.chunks import tree_digest
+
+    (tmp_path / "pkg" / "sub").mkdir(parents=True)
+    (tmp_path / "pkg" / "a.py").write_text("x = 1\n")
+    (tmp_path / "pkg" / "sub" / "t.csv").write_text("1,2\n")
+    root = tmp_path / "pkg"
+    seen = {tree_digest(root)}
+    (root / "__pycache__").mkdir()
+    (root / "__pycache__" / "a.cpython-311.pyc").write_bytes(b"\0")
+    (root / "notes.txt").write_text("not code")
+    assert tree_digest(root) in seen
+    (root / "a.py").write_text("x = 2\n")
+    seen.add(tree_digest(root))
+    (root / "b.toml").write_text("k = 1\n")
+    seen.add(tree_digest(root))
+    (root / "sub" / "t.csv").rename(root / "t.csv")
+    seen.add(tree_digest(root))
+    (root / "b.toml").unlink()
+    seen.add(tree_digest(root))
+    assert len(seen) == 5

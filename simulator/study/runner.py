@@ -12,7 +12,7 @@ import numpy as np
 from simulator.errors import UserError
 from simulator.study.inputs.candidates import build_candidates, candidate_warnings
 from simulator.study.inputs.heads import combine_heads, head_factors
-from simulator.study.trace.chunks import ChunkStore, StudyInterrupted, chunk_scene, make_chunks, readings_of
+from simulator.study.trace.chunks import ChunkStore, StudyInterrupted, chunk_scene, make_chunks, readings_of, stale_chunks_note
 from simulator.study.trace.distributed import choose_mode, run_chunks
 from simulator.study.trace.groups import derive_seed, group_scene
 from simulator.study.figures.objectives import compliance, zone_figures
@@ -243,6 +243,8 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     if ugr_plan is not None:
         specs = specs + ugr_plan["specs"]
     store = ChunkStore(out_dir)
+    if (stale := store.other_code()) > 0:
+        warnings.append(stale_chunks_note(out_dir, stale))
     results: dict[str, dict] = {}
     for s in specs:
         r = store.load(s.id)

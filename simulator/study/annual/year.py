@@ -442,7 +442,7 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
     from simulator.study.annual.rays import textured_faces
     from simulator.study.figures.glare_views import views_of
     from simulator.study.inputs.candidates import build_candidates, candidate_warnings
-    from simulator.study.trace.chunks import ChunkStore
+    from simulator.study.trace.chunks import ChunkStore, stale_chunks_note
     from simulator.study.annual.climate import daylight_mask, hour_of_day, read_weather
     from simulator.study.trace.distributed import choose_mode, run_chunks
     from simulator.study.annual.metrics import zone_metrics
@@ -553,6 +553,9 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
              for st in states]  # fmt: skip
     specs = [s for p in plans for s in p.specs()]
     store = ChunkStore(out_dir)
+    if (stale := store.other_code()) > 0:
+        notes.append(f"warning: {stale_chunks_note(out_dir, stale)}")
+        log(f"warning: {stale_chunks_note(out_dir, stale)}")
     results = {s.id: r for s in specs if (r := store.load(s.id)) is not None}
     todo = [s for s in specs if s.id not in results]
     used_mode, n_workers = choose_mode(mode or study.compute.mode, scheduler or study.compute.scheduler, len(todo),

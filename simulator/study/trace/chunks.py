@@ -11,8 +11,12 @@ atomically (a temporary file in the same folder, flushed, then renamed), the
 chunk before the manifest entry that names it, so an interrupted study
 leaves only whole chunks behind. A chunk's id hashes everything its numbers
 depend on (stage bytes, variants, sun, the group's lights, the sensors, the
-trace settings, the seed); a study started again loads every chunk whose id
-is in the manifest with a matching file and computes only the rest.
+trace settings, the seed, and the code that traces it: :func:`code_digest`); a
+study started again loads every chunk whose id is in the manifest with a
+matching file and computes only the rest. Chunks another build of probesim
+traced are not reused (their numbers may differ within their errors, and a
+study mixing them would not be the same bytes as one run whole): the study
+says how many it left unused (:meth:`ChunkStore.other_code`).
 """
 
 from __future__ import annotations
@@ -34,10 +38,13 @@ from simulator.scene.model import LightKind, Sensor
 from simulator.study.trace.groups import GroupReadings, derive_seed, level_of, patch_names, trace_groups
 from simulator.study.inputs.sun import sun_direction, sun_frame
 
-__all__ = ["ChunkSpec", "ChunkStore", "compute_chunk", "atomic_write", "make_chunks", "StudyInterrupted"]
+__all__ = ["ChunkSpec", "ChunkStore", "code_digest", "stale_chunks_note", "compute_chunk", "atomic_write", "make_chunks", "StudyInterrupted"]
 
-#: bump when a change to the tracing would change a chunk's numbers
-CHUNK_FORMAT = 6
+#: the chunk file's and manifest's layout (the code's own changes are in :func:`code_digest`)
+CHUNK_FORMAT = 7
+
+#: the package's files a chunk's numbers can depend on: its code, and the tables and settings it ships
+_CODE_SUFFIXES = (".py", ".csv", ".toml")
 
 
 class StudyInterrupted(Exception):
@@ -85,6 +92,45 @@ def atomic_write(path: Path, data: bytes) -> None:
         raise
 
 
+@functools.lru_cache(maxsize=1)
+def code_digest() -> str:
+    """SHA-256 (hex, 20 digits) of the code that traces a chunk: the probesim package's files
+    (:func:`tree_digest`) and the versions of Warp and numpy. Any edit to the package counts, a
+    comment included: a chunk is reused only by the build that traced it."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    import simulator
+
+    h = hashlib.sha256(tree_digest(Path(simulator.__file__).resolve().parent).encode())
+    for dist in ("warp-lang", "numpy"):
+        try:
+            h.update(f";{dist}=={version(dist)}".encode())
+        except PackageNotFoundError:
+            h.update(f";{dist} not installed".encode())
+    return h.hexdigest()[:20]
+
+
+def tree_digest(root: Path) -> str:
+    """SHA-256 (hex) of every source file, table and settings file under ``root`` (suffixes
+    :data:`_CODE_SUFFIXES`, ``__pycache__`` left out): each one's path relative to ``root`` and its
+    bytes, length-prefixed, in path order, so a file edited, added, removed or renamed changes it."""
+    h = hashlib.sha256()
+    files = sorted(p for p in root.rglob("*") if p.suffix in _CODE_SUFFIXES and p.is_file() and "__pycache__" not in p.parts)
+    for p in files:
+        rel = p.relative_to(root).as_posix().encode()
+        data = p.read_bytes()
+        h.update(b"%d:%s%d:" % (len(rel), rel, len(data)))
+        h.update(data)
+    return h.hexdigest()
+
+
+def stale_chunks_note(out_dir, n: int) -> str:
+    """The study's one-line note on the chunks in ``out_dir`` another build traced (:meth:`ChunkStore.other_code`)."""
+    return (f"{out_dir}: {n} finished chunk{'s' if n != 1 else ''} in this folder "
+            f"{'were' if n != 1 else 'was'} traced by another build of probesim and {'are' if n != 1 else 'is'} "
+            "not reused (traced again where this study needs them)")  # fmt: skip
+
+
 def _sensor_text(s: Sensor) -> str:
     text = f"{s.name}|{int(s.kind)}|{s.position.tolist()}|{s.normal.tolist()}|{s.half_angle!r}"
     if "up" in s.spec.attributes and s.spec.name != "patch":  # a cylinder's axis
@@ -120,6 +166,7 @@ def make_chunks(trace_groups, sensors: list[Sensor], groups: dict[str, list[str]
             ident = {
                 "format": CHUNK_FORMAT, "stage": stage_sha, "light_units": light_units, "key": tg.key, "groups": gl,
                 "sensors": [_sensor_text(sensors[i]) for i in ids], "sim": sim, "seed": cseed, "levels": levels,
+                "code": code_digest(),
             }  # fmt: skip
             if split:
                 ident["sky_split"] = split
@@ -185,6 +232,12 @@ class ChunkStore:
             except (OSError, ValueError):
                 self.entries = {}  # unreadable manifest: recompute everything
 
+    def other_code(self) -> int:
+        """How many finished chunks in the store another build of probesim traced (an entry written
+        before the build was recorded counts as another's): a study never reuses them."""
+        me = code_digest()
+        return sum(1 for e in self.entries.values() if e.get("code") != me)
+
     def load(self, cid: str) -> dict | None:
         """A finished chunk's arrays, or None when it is missing or its file does not match the manifest."""
         e = self.entries.get(cid)
@@ -216,6 +269,6 @@ class ChunkStore:
         atomic_write(self.dir / name, data)
         self.entries[result["id"]] = {
             "file": name, "sha256": hashlib.sha256(data).hexdigest(), "wall_s": float(result["wall_s"]),
-            "host": result.get("host", ""), "pid": int(result.get("pid", 0)),
+            "host": result.get("host", ""), "pid": int(result.get("pid", 0)), "code": code_digest(),
         }  # fmt: skip
         atomic_write(self.manifest_path, json.dumps({"format": CHUNK_FORMAT, "chunks": self.entries}, indent=1, sort_keys=True).encode())
