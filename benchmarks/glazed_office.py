@@ -22,11 +22,15 @@ and the ratio of each to the open window's. ``--path`` also reads the glazed off
 with plain paths. ``--fixed-k K`` instead times each window's samples at one split K
 (CPU µs per sample, relative variance per sample, rays tallied per sample), beside the
 open window traced with the surface-model kernels; ``--perf DIR`` adds where the time
-goes, per kernel function (Linux ``perf``). ``--queries`` times single ray queries
+goes, per kernel function (Linux ``perf``), and ``--lines`` per source line (the kernels
+compiled with line tables, in their own cache under DIR; the Python lines of probesim's
+kernels and the lines of Warp's headers they inline, such as its BVH traversal), with
+each glazed window's lines against the open window's. ``--queries`` times single ray queries
 from the work plane toward the window and in cosine directions, open and pane.
 
     PYTHONPATH=. python benchmarks/glazed_office.py --samples 256 --seed 1
     PYTHONPATH=. python benchmarks/glazed_office.py --fixed-k 7 --samples 128 --perf /tmp/perf
+    PYTHONPATH=. python benchmarks/glazed_office.py --fixed-k 7 --samples 64 --windows pane --perf /tmp/perf --lines
 """
 
 from __future__ import annotations
@@ -83,12 +87,13 @@ def measure(window: str, samples: int, seed: int, method: str = "auto") -> dict:
             "relvar_rays": relvar * rays_per_sample}  # fmt: skip
 
 
-def per_sample(window: str, samples: int, k: int, perf_dir: Path | None = None) -> dict:
+def per_sample(window: str, samples: int, k: int, perf_dir: Path | None = None, lines: bool = False) -> dict:
     """CPU µs per irradiance sample at a fixed split K (``guided``, its guide built first), the relative
     variance per sample and the rays tallied per sample. ``open+surfaces`` reads the open window with the
     kernels compiled with the surface model (docs/DESIGN.md §Trace variants), so that it and ``pane`` run
     the same machine code. With ``perf_dir``, ``perf record`` samples the timed run and the kernels'
-    functions are named from their object files' symbol tables (``perf-PID.map``)."""
+    functions are named from their object files' symbol tables (``perf-PID.map``); with ``lines`` too,
+    each sample in the trace module is put on its source line (:func:`_line_shares`)."""
     from simulator.config.loader import load_config
     from simulator.pipeline import collect_sensors, config_engine, load_scene
     from simulator.plan.planner import make_plan
@@ -111,7 +116,7 @@ def per_sample(window: str, samples: int, k: int, perf_dir: Path | None = None) 
     t0 = time.process_time()
     res = engine.run("guided", samples=samples, seed=2)
     cpu_s = time.process_time() - t0
-    breakdown = _perf_stop(rec, cpu_s / (samples * len(sensors)) * 1e6) if rec else None
+    breakdown = _perf_stop(rec, cpu_s / (samples * len(sensors)) * 1e6, lines) if rec else None
     rel = res.stderr[:, 1] / res.mean[:, 1]
     engine.run("guided", samples=32, seed=9, count_rays=True)
     return {"window": window, "us": cpu_s / (samples * len(sensors)) * 1e6, "relvar": float(np.mean(rel**2 * res.samples)),
@@ -129,6 +134,7 @@ def _perf_start(window: str, perf_dir: Path):
 
     runtime = wp._src.context.runtime
     lines = []
+    trace = None  # the trace module's object file and where it was loaded (for --lines)
     for o in gc.get_objects():
         if type(o).__name__ != "ModuleExec" or o.device.is_cuda or not o.binary_path:
             continue
@@ -139,6 +145,8 @@ def _perf_start(window: str, perf_dir: Path):
             if not addr or not entry:
                 continue
             base = addr - int(entry[0].split()[0], 16)
+            if (".trace_matte" if window == "open" else ".trace_surfaces") in Path(o.binary_path).name:  # the one it runs
+                trace = (Path(o.binary_path), base)
             for ln in nm:
                 m = re.match(r"([0-9a-f]+) ([0-9a-f]+) [tT] (\S+?)\(", ln)
                 if m:
@@ -151,17 +159,20 @@ def _perf_start(window: str, perf_dir: Path):
     proc = subprocess.Popen(["perf", "record", "-F", "999", "-o", str(data), "-p", str(os.getpid())],
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)  # fmt: skip
     time.sleep(1.0)
-    return proc, data
+    return proc, data, trace
 
 
-def _perf_stop(rec, us_per_sample: float) -> list[tuple[str, float]]:
-    """Stop ``perf record``; the functions' shares of the timed run as µs per sample (largest first)."""
+def _perf_stop(rec, us_per_sample: float, lines: bool = False) -> list[tuple[str, float]] | dict[str, float]:
+    """Stop ``perf record``; the functions' shares of the timed run as µs per sample (largest first), or
+    with ``lines`` every source line's (:func:`_line_shares`)."""
     import signal
     import subprocess
 
-    proc, data = rec
+    proc, data, trace = rec
     proc.send_signal(signal.SIGINT)
     proc.wait()
+    if lines:
+        return _line_shares(data, trace, us_per_sample)
     out = subprocess.run(["perf", "report", "-i", str(data), "--no-children", "--sort", "symbol", "--stdio"],
                          capture_output=True, text=True).stdout  # fmt: skip
     rows = []
@@ -170,6 +181,67 @@ def _perf_stop(rec, us_per_sample: float) -> list[tuple[str, float]]:
         if m:
             rows.append((m.group(2)[:48], float(m.group(1)) / 100.0 * us_per_sample))
     return rows[:8]
+
+
+def _line_tables(perf_dir: Path) -> None:
+    """Have the kernels compiled with line tables, in a Warp cache of their own under ``perf_dir``: Warp's
+    C++ then carries ``#line`` directives to the Python source (``lineinfo``) and clang keeps them
+    (its front end's ``-debug-info-kind=line-tables-only``); the code is otherwise the same."""
+    import warp as wp
+
+    import simulator.engine.device as device
+
+    wp.config.lineinfo = True
+    wp.config.kernel_cache_dir = str(perf_dir / "kernels")
+    flags = device.cpu_compiler_flags
+    device.cpu_compiler_flags = lambda default: f"{flags(default) or ''} -debug-info-kind=line-tables-only -dwarf-version=4"
+
+
+def _line_shares(data: Path, trace, us_per_sample: float) -> dict[str, float]:
+    """µs per sample on each source line of the trace module (``file:line``; ``?`` where the line tables
+    name none), from ``perf script``'s sampled addresses put back in its object file (``addr2line``)."""
+    import collections
+    import subprocess
+
+    ips = collections.Counter(subprocess.run(["perf", "script", "-i", str(data), "-F", "ip"], capture_output=True,
+                                             text=True).stdout.split())  # fmt: skip
+    total = sum(ips.values())
+    obj, base = trace
+    here = collections.Counter()
+    for ip, n in ips.items():
+        off = int(ip, 16) - base
+        if 0 <= off < obj.stat().st_size:
+            here[off] += n
+    offs = sorted(here)
+    where = subprocess.run(["addr2line", "-e", str(obj), *map(hex, offs)], capture_output=True, text=True).stdout.split("\n")
+    out = collections.Counter()
+    for off, w in zip(offs, where):
+        w = w.split(" (")[0]
+        w = re.sub(r"^.*/(simulator/kernels|warp/native)/", r"\1/", w)
+        out[w] += here[off] / total * us_per_sample
+    out["(outside the trace module)"] = (total - sum(here.values())) / total * us_per_sample
+    return dict(out)
+
+
+def _print_lines(rows: list[dict], top: int = 12) -> None:
+    """Each window's busiest source lines, then each glazed window's lines against the open window's with the
+    same kernels (``open+surfaces``), by file and by line, largest differences first."""
+    for r in rows:
+        print(f"{r['window']}: the busiest lines, µs per sample")
+        for w, us in sorted(r["perf"].items(), key=lambda t: -t[1])[:top]:
+            print(f"    {us:6.2f}  {w}")
+    ref = next(r["perf"] for r in rows if r["window"] == "open+surfaces")
+    for r in rows:
+        if r["window"] in ("open", "open+surfaces"):
+            continue
+        for by, key in (("file", lambda w: w.rsplit(":", 1)[0]), ("line", lambda w: w)):
+            diff: dict[str, list[float]] = {}
+            for side, shares in enumerate((ref, r["perf"])):
+                for w, us in shares.items():
+                    diff.setdefault(key(w), [0.0, 0.0])[side] += us
+            print(f"{r['window']} against open+surfaces, by {by}: µs per sample (open+surfaces, {r['window']}, difference)")
+            for w, (a, b) in sorted(diff.items(), key=lambda t: -abs(t[1][1] - t[1][0]))[:top]:
+                print(f"    {a:6.2f} {b:6.2f} {b - a:+6.2f}  {w}")
 
 
 def query_costs(window: str, n: int = 400_000) -> list[tuple[str, float, float]]:
@@ -210,21 +282,29 @@ def main() -> None:
                     help="instead: CPU µs per sample at split K, the open window also with the surface-model kernels")
     ap.add_argument("--perf", type=Path, metavar="DIR", help="with --fixed-k: perf record each timed run into DIR "
                     "and print where its time goes (needs Linux perf)")  # fmt: skip
+    ap.add_argument("--lines", action="store_true", help="with --perf: per source line instead of per function (the "
+                    "kernels compiled with line tables in DIR/kernels; needs addr2line)")  # fmt: skip
     ap.add_argument("--queries", action="store_true", help="instead: CPU ns per ray query, open and pane windows")
     a = ap.parse_args()
+    if a.lines:
+        if not (a.perf and a.fixed_k):
+            ap.error("--lines needs --fixed-k and --perf")
+        _line_tables(a.perf)
     if a.queries:
         for w in ("open", "pane"):
             for name, ns, hit in query_costs(w):
                 print(f"{w:<6} rays {name:<18} {ns:6.1f} CPU ns per query, {hit:.1%} meet a face")
         return
     if a.fixed_k:
-        rows = [per_sample(w, a.samples, a.fixed_k, a.perf) for w in ["open", "open+surfaces", *a.windows]]
+        rows = [per_sample(w, a.samples, a.fixed_k, a.perf, a.lines) for w in ["open", "open+surfaces", *a.windows]]
         print(f"split K = {a.fixed_k}, {a.samples} samples per sensor, 1,464 sensors, guided")
         for r in rows:
             print(f"{r['window']:<14} {r['us']:6.1f} CPU µs per sample, relative variance {r['relvar']:.4f}, "
                   f"{r['rays']:.2f} rays tallied per sample, relvar × µs {r['relvar'] * r['us']:.2f}")  # fmt: skip
-            for name, us in r["perf"] or []:
+            for name, us in [] if a.lines else r["perf"] or []:
                 print(f"    {us:6.2f} µs  {name}")
+        if a.lines:
+            _print_lines(rows)
         return
     rows = [measure(w, a.samples, a.seed) for w in ["open", *a.windows]]
     if a.path:
