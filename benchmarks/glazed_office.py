@@ -29,8 +29,8 @@ each glazed window's lines against the open window's. ``--queries`` times single
 from the work plane toward the window and in cosine directions, open and pane.
 
     PYTHONPATH=. python benchmarks/glazed_office.py --samples 256 --seed 1
-    PYTHONPATH=. python benchmarks/glazed_office.py --fixed-k 7 --samples 128 --perf perf-out
-    PYTHONPATH=. python benchmarks/glazed_office.py --fixed-k 7 --samples 64 --windows pane --perf perf-out --lines
+    PYTHONPATH=. python benchmarks/glazed_office.py --fixed-k 7 --samples 128 --perf out/perf
+    PYTHONPATH=. python benchmarks/glazed_office.py --fixed-k 7 --samples 64 --windows pane --perf out/perf --lines
 """
 
 from __future__ import annotations
