@@ -202,3 +202,18 @@ def test_the_code_digest_follows_every_file_of_the_tree(tmp_path):
     (root / "b.toml").unlink()
     seen.add(tree_digest(root))
     assert len(seen) == 5
+
+
+def test_a_worker_of_another_build_refuses_a_chunk():
+    """A dask worker installed apart from the study's machine may run another probesim, Warp or numpy:
+    it refuses the chunk with one line naming it, rather than trace numbers of another build."""
+    import re
+    import socket
+
+    from simulator.errors import UserError
+    from simulator.study.trace.chunks import ChunkSpec, code_digest, compute_chunk
+
+    spec = ChunkSpec("c0ffee", "key", 0, str(STAGE), "photometric", (), None, (), (), (), {}, 1, code="another build")
+    assert code_digest() != "another build"
+    with pytest.raises(UserError, match=rf"^chunk c0ffee: the worker on {re.escape(socket.gethostname())} runs another build of probesim"):
+        compute_chunk(spec)

@@ -71,6 +71,7 @@ class ChunkSpec:
     threads: int = 0
     sky_split: tuple[str, ...] = ()  #: groups whose sky is traced as Tregenza patches
     extra_lights: tuple = ()  #: lights added to the stage's (a diffusing shade's cells, :mod:`simulator.study.annual.diffusers`)
+    code: str = ""  #: the build that planned it (:func:`code_digest`): a worker of another build refuses it
 
 
 def atomic_write(path: Path, data: bytes) -> None:
@@ -175,7 +176,7 @@ def make_chunks(trace_groups, sensors: list[Sensor], groups: dict[str, list[str]
             cid = hashlib.sha256(json.dumps(ident, sort_keys=True).encode()).hexdigest()[:20]
             out.append(ChunkSpec(cid, tg.key, b, str(stage), light_units, tuple(sorted(tg.variants.items())), tg.sun, gl, ids,
                                  tuple(sensors[i] for i in ids), sim, cseed, levels, sky_split=split,
-                                 extra_lights=tuple(extra_lights)))  # fmt: skip
+                                 extra_lights=tuple(extra_lights), code=code_digest()))  # fmt: skip
     return out
 
 
@@ -199,9 +200,15 @@ def chunk_scene(spec: ChunkSpec):
 
 
 def compute_chunk(spec: ChunkSpec) -> dict:
-    """Trace one chunk; returns plain arrays (see :meth:`ChunkStore.save`)."""
+    """Trace one chunk; returns plain arrays (see :meth:`ChunkStore.save`). A worker whose build of probesim
+    is not the one that planned the chunk (another version, another Warp or numpy: a dask cluster's
+    workers are installed apart from the study's machine) refuses it, so that no study mixes builds."""
     from simulator.config.loader import SimulationConfig
+    from simulator.errors import UserError
 
+    if spec.code and spec.code != code_digest():
+        raise UserError(f"chunk {spec.id}: the worker on {socket.gethostname()} runs another build of probesim than the "
+                        "study's (another version, or another Warp or numpy): install the same on every dask worker")  # fmt: skip
     t0 = time.perf_counter()
     scene = chunk_scene(spec)
     sim = SimulationConfig(**spec.sim)
