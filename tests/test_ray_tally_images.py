@@ -90,3 +90,16 @@ def test_an_image_that_casts_a_ray_is_tallied(engine):
     dev = r.mean[1, 1] - E_SUN_LX * refl
     tol = 4.0 * r.stderr[1, 1] + 1e-4 * E_SUN_LX * refl  # 4σ and float32 rounding
     assert -tol <= dev <= MESH_LX + tol
+
+
+def test_the_tally_splits_path_and_shadow_rays(engine):
+    """Counting every ray (mode 1) keeps the shadow rays apart (``Engine.shadow_rays_traced``): the same
+    samples counted for shadow rays alone (mode 2) give the same number exactly, since counting draws no
+    random number; and the path rays, the rest, are at least one per sample (the first direction)."""
+    for sensor in (0, 1):
+        ids = np.array([sensor])
+        r = engine.run("path", samples=SAMPLES, seed=5, sensor_ids=ids, count_rays=True)
+        every, shadow = engine.rays_traced, engine.shadow_rays_traced
+        engine.run("path", samples=SAMPLES, seed=5, sensor_ids=ids, count_rays=2)
+        assert engine.rays_traced == engine.shadow_rays_traced == shadow
+        assert every - shadow >= int(r.samples[sensor])

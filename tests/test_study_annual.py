@@ -499,3 +499,23 @@ def test_probesim_study_runs_the_scenarios_and_the_year_into_one_folder(tmp_path
     for name in ("readings.csv", "summary.csv", "study.json", "annual_hourly.csv", "annual_metrics.csv", "annual.json"):
         assert (out / name).is_file(), name
     assert "annual: " in r.stdout and "roof: sDA300/50% 100.0" in r.stdout
+
+
+def test_an_annual_folder_another_build_traced_is_traced_again(open_roof, tmp_path, monkeypatch):
+    """Resumed by another build of probesim (tests/test_study_resume.py), an annual study traces every
+    chunk again, and its notes say how many it left unused; the hourly readings are the same."""
+    import shutil
+
+    from simulator.study.trace import chunks
+
+    study, p, tmp, res = open_roof
+    shutil.copytree(tmp / "out", tmp_path / "out")
+    monkeypatch.setattr(chunks, "code_digest", lambda: "another build")
+    again = run_annual(study, p, tmp_path / "out", log=lambda m: None)
+    assert again.chunks_computed == again.chunks_total == res.chunks_total
+    n = res.chunks_total
+    assert [x for x in again.notes if "another build" in x] == [
+        f"warning: {tmp_path / 'out'}: {n} finished chunk{'s' if n != 1 else ''} in this folder "
+        f"{'were' if n != 1 else 'was'} traced by another build of probesim and {'are' if n != 1 else 'is'} not reused "
+        "(traced again where this study needs them)"]  # fmt: skip
+    np.testing.assert_array_equal(again.mean, res.mean)

@@ -240,6 +240,7 @@ class Engine:
             self.threads = 1
         self.warnings: list[str] = []
         self.rays_traced = 0
+        self.shadow_rays_traced = 0  #: the shadow rays among rays_traced (next-event tests, image connections)
         self._light_mask: np.ndarray | None = None
         self._device_scene: DeviceScene | None = None
         self._hero = None  # simulator.spectra.hero.HeroTables when tracing spectrally
@@ -639,7 +640,8 @@ class Engine:
             return self.split_pilot["k"]
         tb = time.perf_counter()
         parts = []
-        depth, rays_kept = params.bounces, self.rays_traced
+        depth, rays_kept, shadow_kept = params.bounces, self.rays_traced, self.shadow_rays_traced
+        shadow = []  # each part's shadow rays per sample
         tally = {} if pilot is None else {"group_tally": 1, "n_groups": int(pilot[1].shape[1]), "group_batch": 0}
         try:
             with _fields_set(params, seed=(int(params.seed) + 0x1B873593) & 0x7FFFFFFF, count_rays=1,
@@ -648,14 +650,15 @@ class Engine:
                     self._upload_light_groups(pilot[0], None)  # the pass's own groups are set after the pilot
                 for bounces, skip in ((0, 0), (depth, 1)):
                     params.bounces, params.skip_direct = bounces, skip
-                    self.rays_traced = 0
+                    self.rays_traced = self.shadow_rays_traced = 0
                     _, cnt, mean, m2, _, _, _, g_mean, g_m2 = self._launch(
                         params, ids, np.zeros(len(ids), np.int64), np.full(len(ids), SPLIT_PILOT_SAMPLES, np.int64))
                     rays = self.rays_traced / max(1, int(cnt.sum()))
+                    shadow.append(self.shadow_rays_traced / max(1, int(cnt.sum())))
                     parts.append((mean[:, 1], m2[:, 1] / np.maximum(cnt - 1, 1), max(rays, 1.0), cnt,
                                   None if g_mean is None else g_mean[:, 1], None if g_m2 is None else g_m2[:, 1]))
         finally:
-            self.rays_traced = rays_kept
+            self.rays_traced, self.shadow_rays_traced = rays_kept, shadow_kept
         (m_d, v_d, c_d, *g_d), (m_i, v_i, c_i, *g_i) = parts
         m = m_d + m_i
         if self._offset is not None:  # a hybrid run: relative to the whole reading
@@ -666,6 +669,7 @@ class Engine:
         k, gain = neyman_split(rv_d, rv_i, c_d, c_i, SPLIT_MAX, SPLIT_MIN_GAIN)
         self.split_pilot = {"k": k, "relvar_direct": rv_d / max(1, int(ok.sum())),
                             "relvar_indirect": rv_i / max(1, int(ok.sum())), "rays_direct": c_d, "rays_indirect": c_i,
+                            "shadow_rays_direct": shadow[0], "shadow_rays_indirect": shadow[1],
                             "predicted_gain": gain, "seconds": time.perf_counter() - tb}  # fmt: skip
         if pilot is not None:
             # each scenario's own K from its recombined pilot; the pass draws the largest (scenario_split)
@@ -847,7 +851,7 @@ class Engine:
             a_first = wp.array(t_first, dtype=wp.int32)
             a_count = wp.array(t_count, dtype=wp.int32)
             if params.count_rays:
-                rec.ray_counts = wp.zeros(n, dtype=wp.int32)
+                rec.ray_counts = wp.zeros(2 * n, dtype=wp.int32)  # per thread: path rays, shadow rays
             n_pc = int(rec.n_pieces)
             if tally:
                 rec.pick_tally = wp.zeros(n * 2 * int(rec.n_lights), dtype=wp.vec2)
@@ -896,7 +900,9 @@ class Engine:
                 return t_sensor, counts
             out = RunningStats.reduce_blocks(t_sensor, t_count, shift.numpy(), s1.numpy(), s2.numpy())
             if params.count_rays:
-                self.rays_traced += int(rec.ray_counts.numpy().sum())
+                by_kind = rec.ray_counts.numpy().reshape(n, 2).sum(axis=0)
+                self.rays_traced += int(by_kind.sum())
+                self.shadow_rays_traced += int(by_kind[1])
             nonfinite = np.add.reduceat(bad.numpy(), np.flatnonzero(np.r_[True, t_sensor[1:] != t_sensor[:-1]]))
             r_mean = r_m2 = None
             if n_resp:
@@ -1236,7 +1242,7 @@ class Engine:
             first_batch = plan["first_batch"]
         elif adaptive:
             plan = {"first_batch": int(first_batch), "chosen_by": "samples"}
-        self.rays_traced = 0  # shadow and path rays, counted when count_rays
+        self.rays_traced = self.shadow_rays_traced = 0  # shadow and path rays, counted when count_rays
         stats = RunningStats(n_s)
         n_resp = self._dev.n_responses if params.spectral else 0
         rstats = RunningStats(n_s, n_resp) if n_resp else None

@@ -25,18 +25,21 @@ def offset_length(scene: SceneRec, p: wp.vec3) -> float:
 
 @wp.func
 def count_ray(scene: SceneRec, params: TraceParams):
-    """Tally one closest-hit ray for ``probesim bench`` (a branch when counting
-    is off): counted in mode 1 (every ray), not in mode 2 (shadow rays only)."""
+    """Tally one closest-hit ray (a path's next vertex) for ``probesim bench`` and the pilots (a branch
+    when counting is off), in the thread's first slot of ``scene.ray_counts`` (two per thread: path
+    rays, shadow rays): counted in mode 1 (every ray), not in mode 2 (shadow rays only)."""
     if params.count_rays == 1:
-        scene.ray_counts[params.thread] = scene.ray_counts[params.thread] + 1
+        k = 2 * params.thread
+        scene.ray_counts[k] = scene.ray_counts[k] + 1
 
 
 @wp.func
 def count_shadow_ray(scene: SceneRec, params: TraceParams):
-    """Tally one shadow ray (a next-event visibility test): counted in modes 1
-    and 2, so a run in mode 2 splits the rays of one in mode 1 by kind."""
+    """Tally one shadow ray (a next-event visibility test or an image connection) in the thread's
+    second slot: counted in modes 1 and 2."""
     if params.count_rays != 0:
-        scene.ray_counts[params.thread] = scene.ray_counts[params.thread] + 1
+        k = 2 * params.thread + 1
+        scene.ray_counts[k] = scene.ray_counts[k] + 1
 
 
 #: hits on planes a ray cannot cross that one query may skip (see first_hit)

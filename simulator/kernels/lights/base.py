@@ -163,7 +163,7 @@ class SceneRec:
     lights: wp.array(dtype=LightRec)
     n_lights: int
     eps: float  # ray-origin offset relative to max(1 m, |p|∞)
-    ray_counts: wp.array(dtype=wp.int32)  # per kernel thread, when TraceParams.count_rays
+    ray_counts: wp.array(dtype=wp.int32)  # two per kernel thread (path, shadow rays), when TraceParams.count_rays
     light_mask: wp.array(dtype=wp.int32)  # (sensors × n_lights): 0 = light culled for that sensor
     # hero-wavelength transport (TraceParams.spectral; tables of simulator.spectra.hero, 401 grid nodes)
     spectral_reflectance: wp.array2d(dtype=float)  # (colours × 401): ρ(λ)
