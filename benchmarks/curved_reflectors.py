@@ -98,7 +98,7 @@ SUN = '''def DistantLight "Sun"
 
 
 def _lamp(p, point: bool) -> str:
-    return (f'def SphereLight "Lamp"\n{{\n    float inputs:intensity = 100\n    float inputs:radius = 0.03\n'
+    return ('def SphereLight "Lamp"\n{\n    float inputs:intensity = 100\n    float inputs:radius = 0.03\n'
             + ("    bool treatAsPoint = 1\n" if point else "")
             + f"    double3 xformOp:translate = ({float(p[0])!r}, {float(p[1])!r}, {float(p[2])!r})\n"
             '    uniform token[] xformOpOrder = ["xformOp:translate"]\n}\n')

@@ -130,7 +130,7 @@ def export_rad(scene, lighting: str, path: Path, sun_only: bool = False) -> None
             out.append(f"lamp{k} polygon lamp{k}p\n0\n0\n12 " + " ".join(f"{x:.9g}" for p in quad for x in p) + "\n")
         elif l.kind == LightKind.DOME and not sun_only:
             if lighting.startswith("CIE"):
-                out.append(f"void brightfunc skyfunc\n2 skybr sky.cal\n0\n0\n")
+                out.append("void brightfunc skyfunc\n2 skybr sky.cal\n0\n0\n")
                 out.append(f"skyfunc glow skyglow\n0\n0\n4 {ZENITH_CD_M2 / 179:.9g} {ZENITH_CD_M2 / 179:.9g} {ZENITH_CD_M2 / 179:.9g} 0\n")
             else:
                 out.append(f"void glow skyglow\n0\n0\n4 {rad:.9g} {rad:.9g} {rad:.9g} 0\n")

@@ -78,7 +78,7 @@ def measure(window: str, samples: int, seed: int, method: str = "auto") -> dict:
     for m in methods:
         ids = np.array([i for i, sp in enumerate(plan.sensors) if sp.method == m])
         counted.set_light_mask(plan.light_mask([l.name for l in scene.lights]))
-        r = counted.run(m, samples=n_count, seed=seed + 7, sensor_ids=ids, count_rays=True)
+        counted.run(m, samples=n_count, seed=seed + 7, sensor_ids=ids, count_rays=True)
         rays += counted.rays_traced
     rays_per_sample = rays / (n_count * len(sensors))
     return {"window": window, "methods": "+".join(methods), "rms": rms, "cpu_s": cpu_s,

@@ -229,7 +229,6 @@ def replica_comparison(a, cfg, scene, sensors) -> None:
     engine, kernel load from the cache, pilots and guide; Mitsuba's scene load and kernel compile)."""
     if a.replicas < 2:
         raise SystemExit("--replicas: at least 2 independent renders are needed for a spread")
-    from simulator.config import load_config
     from simulator.engine.driver import load_kernels
     from simulator.pipeline import config_engine, load_scene
     from simulator.plan.planner import make_plan

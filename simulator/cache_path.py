@@ -82,23 +82,3 @@ def settled_before_start(identities) -> bool:
     describe (a module edited while the process ran, or just before, is not trusted)."""
     settled = process_started_ns() - RACY_NS
     return all(v[2] <= settled for v in identities)
-
-
-def write_atomic(folder: Path, name: str, data: bytes) -> None:
-    """Write ``data`` to ``folder / name`` whole or not at all (a temporary file in the same folder,
-    renamed over it), making the folder (owner only) if it is missing; the temporary file is removed if
-    the write fails, and the error is raised."""
-    import tempfile  # only a run that writes an entry pays for it
-
-    folder.mkdir(parents=True, exist_ok=True, mode=0o700)
-    fd, tmp = tempfile.mkstemp(dir=folder, prefix=".", suffix=".part")
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-        os.replace(tmp, folder / name)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise

@@ -232,6 +232,10 @@ def run(cfg: RunConfig, progress=None, log=print, write: bool = True, sensors: l
 
     from simulator.sensor_models.readings import channel_responses, optics_twins
 
+    if write:  # a folder that cannot hold the outputs is said before any work, not after the trace
+        from simulator.io.atomic import check_folder
+
+        check_folder(cfg.output.csv.parent)
     if getattr(cfg, "times", None) and sensors is None:  # one row per sensor and time code
         import sys
 

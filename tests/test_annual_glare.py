@@ -9,7 +9,6 @@ import math
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from simulator.glare import indices as ix
 from simulator.glare.sources import GlareSettings

@@ -128,10 +128,10 @@ def test_same_seed_same_bytes_and_columns(tmp_path, capsys):
 
 def test_output_that_cannot_be_written(tmp_path, capsys):
     """An output path under a regular file cannot be created: one line naming
-    the path, exit 2, no traceback."""
+    the path and why, exit 2, no traceback, said before any tracing."""
     (tmp_path / "stage.usda").write_text(POINT_STAGE)
     (tmp_path / "afile").write_text("not a folder")
     code = main(["run", str(_config(tmp_path)), "-q", "-o", str(tmp_path / "afile" / "x.csv")])
     err = capsys.readouterr().err.strip()
     assert code == 2 and err.count("\n") == 0
-    assert "afile" in err and "cannot write output" in err
+    assert err == f"probesim: error: {tmp_path / 'afile'}: cannot make the output folder: a file of that name is in the way"

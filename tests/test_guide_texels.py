@@ -57,7 +57,7 @@ def Mesh "{name}" (
 """
 
 
-def test_guided_furnace_through_a_perforated_white_sheet(tmp_path, forced_guide):
+def test_guided_furnace_through_a_perforated_white_sheet(tmp_path, forced_guide):  # noqa: F811 (the fixture)
     """The furnace (ρ = 0.5, L_e = 1 W m⁻² sr⁻¹) with its pane replaced by a white presence sheet, a
     16 × 16 checkerboard opacity texture: E = π·L_e/(1 − ρ) = 2π W/m² on sensors facing the sheet
     from both sides (one over a shut texel's centre, one over an open one's), along it and up,

@@ -10,7 +10,6 @@ pieces' own pick puts them while cutting their variance.
 
 from __future__ import annotations
 
-from dataclasses import replace
 from pathlib import Path
 
 import numpy as np

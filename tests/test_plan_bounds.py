@@ -10,7 +10,6 @@ plane, which are behind it, and planes through the middle of the soup).
 from __future__ import annotations
 
 import sys
-import time
 from pathlib import Path
 
 import numpy as np

@@ -88,7 +88,6 @@ def test_a_lamp_only_scenario_is_no_noisier_than_a_plain_run(office):
 def test_the_pass_picks_one_light_where_its_scenarios_agree(office):
     """Two scenarios that dim the same lamps alike want the same pick (Z = 1 ≤ MAX_SPREAD): the pass keeps
     one picked light per vertex past the first, and the readings agree with a plain run within 4σ."""
-    from simulator.config.loader import SimulationConfig
     from simulator.engine.driver import Engine, LightGroups
     from simulator.plan.planner import make_plan
     from simulator.study.trace.groups import group_scene

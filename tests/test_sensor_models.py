@@ -21,7 +21,7 @@ from simulator.reference import closed_forms as cf
 from simulator.sensor_models.angular import half_power
 from simulator.sensor_models.electronics import Electronics, Setting, read_device, reading_stream
 from simulator.sensor_models.model import DIN_CLASSES, bundled_names, din_class, load_model
-from simulator.sensor_models.spectral import Channel, f1_prime, mismatch_factor
+from simulator.sensor_models.spectral import Channel
 from simulator.spectra.sources import emitter_spectrum
 from simulator.spectra.wide import WIDE_NM
 

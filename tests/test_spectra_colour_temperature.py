@@ -13,8 +13,6 @@ the per-emitter path (traced, responses estimated per sample).
 
 from __future__ import annotations
 
-import csv
-import math
 
 import numpy as np
 import pytest

@@ -12,7 +12,6 @@ import io
 import math
 from pathlib import Path
 
-import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -16,7 +16,6 @@ import pytest
 
 from simulator.errors import UserError
 from simulator.sensor_models.electronics import Electronics
-from simulator.sensor_models.model import load_model
 from simulator.sensor_models.spectral import Channel
 from simulator.spectra.wide import WIDE_NM
 from simulator.study.annual import control as CT

@@ -231,7 +231,7 @@ def test_a_diffusing_shade_passes_tau_times_its_outer_light_as_a_lambertian_emit
 
     w, h, z = 2.0, 1.5, 1.0
     (tmp_path / "shade.usda").write_text(DIFFUSER_STAGE.format(w=w, h=h, z=z, x0=-w / 2, x1=w / 2, y0=-h / 2, y1=h / 2))
-    (tmp_path / "s.toml").write_text(f"""
+    (tmp_path / "s.toml").write_text("""
 stage = "shade.usda"
 seed = 11
 [simulation]
@@ -251,8 +251,8 @@ sky_group = "sky"
 variant_set = "none"
 states = ["only"]
 rule = "schedule"
-schedule = {{ only = [[1, 12, 0, 24]] }}
-diffusers = {{ "/World/Shade" = 0.3 }}
+schedule = { only = [[1, 12, 0, 24]] }
+diffusers = { "/World/Shade" = 0.3 }
 """)
     study, p = load_study(tmp_path / "s.toml")
     scene = load_stage(tmp_path / "shade.usda", light_units="photometric", radiometric_spectrum="E")

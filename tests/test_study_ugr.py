@@ -18,7 +18,6 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from simulator.errors import UserError
 from simulator.glare.indices import position_index_guth
 from simulator.reference.closed_forms import polygon_solid_angle
 from simulator.scene.usd import load_stage

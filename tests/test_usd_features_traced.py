@@ -21,7 +21,6 @@ import zlib
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from simulator.engine.driver import Engine
 from simulator.reference import closed_forms as cf

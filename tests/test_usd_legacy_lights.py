@@ -16,7 +16,6 @@ import dataclasses
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from simulator.io import exr
 from simulator.scene.usd import load_stage

@@ -13,7 +13,6 @@ import math
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 import simulator
 from simulator.config import apply_overrides, load_config

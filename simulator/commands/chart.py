@@ -498,7 +498,7 @@ def _plot(chart: ConfigChart, path: Path) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from simulator.io.results import _atomic_write_all
+    from simulator.io.atomic import write_all_atomic
 
     fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=100)
     plotted = [c for c in chart.curves if not c.skipped and c.errors]
@@ -538,7 +538,7 @@ def _plot(chart: ConfigChart, path: Path) -> None:
     ax.grid(True, which="major", lw=0.4, alpha=0.5)
     ax.legend(fontsize=7.5, loc="best")
     fig.tight_layout()
-    _atomic_write_all({path: lambda p: fig.savefig(p, format="png")})
+    write_all_atomic({path: lambda p: fig.savefig(p, format="png")})
     plt.close(fig)
 
 
@@ -605,7 +605,7 @@ def run_chart(
     methods=METHODS, max_budget: int = MAX_BUDGET, adaptive: bool = True, log=print,
 ) -> list[ConfigChart]:  # fmt: skip
     """Chart each config; write ``chart.csv`` and the PNGs into ``out_dir``."""
-    from simulator.io.results import _atomic_write_all
+    from simulator.io.atomic import write_all_atomic
 
     if seeds < 1:
         raise UserError(f"--seeds: must be >= 1, got {seeds}")
@@ -621,7 +621,7 @@ def run_chart(
         charts.append(chart_config(Path(p), out_dir, seeds=seeds, max_seconds=max_seconds, device=device,
                                    methods=methods, max_budget=max_budget, adaptive=adaptive, log=log))  # fmt: skip
     rows = [r for ch in charts for r in ch.rows]
-    _atomic_write_all({out_dir / "chart.csv": _csv_text(rows)})
+    write_all_atomic({out_dir / "chart.csv": _csv_text(rows)})
     return charts
 
 

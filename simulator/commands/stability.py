@@ -411,12 +411,12 @@ def _heatmap(cells: list[Cell], path: Path, title: str) -> None:
 def write_stability(cells: list[Cell], out_dir: Path, title: str) -> list[Path]:
     """Write ``stability.csv`` (one row per cell), ``stability_sensors.csv``
     (one per sensor and method) and the heat map ``stability.png``."""
-    from simulator.io.results import _atomic_write_all
+    from simulator.io.atomic import write_all_atomic
 
     out_dir = Path(out_dir)
     a, b = _csv(cells)
     paths = [out_dir / "stability.csv", out_dir / "stability_sensors.csv", out_dir / "stability.png"]
-    _atomic_write_all({paths[0]: a, paths[1]: b, paths[2]: lambda p: _heatmap(cells, Path(p), title)})
+    write_all_atomic({paths[0]: a, paths[1]: b, paths[2]: lambda p: _heatmap(cells, Path(p), title)})
     return paths
 
 

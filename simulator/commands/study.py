@@ -9,6 +9,7 @@ from pathlib import Path
 
 from simulator.commands.progress import ProgressBar
 from simulator.errors import UserError
+from simulator.io.atomic import check_folder
 
 __all__ = ["main_study", "ChunkProgress", "closing_note", "flag_overrides"]
 
@@ -140,6 +141,7 @@ def main_study(path: str, out: str | None, scheduler: str | None, workers: int |
     mode, n_workers = compute_overrides(scheduler, workers, local)
     study, p = load_study(path, flag_overrides(samples, seed, rel_error))
     out_dir = _out_dir(study, p, out)
+    check_folder(out_dir, "study folder")  # before any chunk is traced (nothing made: a later mistake writes nothing)
     bar = ChunkProgress()
     t0 = time.perf_counter()
     files = []

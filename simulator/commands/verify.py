@@ -367,6 +367,6 @@ def csv_text(rows: list[Row]) -> str:
 
 def write_csv(path: Path, rows: list[Row]) -> None:
     """Write the table as CSV atomically (temporary sibling, then rename)."""
-    from simulator.io.results import _atomic_write_all
+    from simulator.io.atomic import write_all_atomic
 
-    _atomic_write_all({Path(path): csv_text(rows)})
+    write_all_atomic({Path(path): csv_text(rows)})

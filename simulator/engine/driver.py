@@ -1525,7 +1525,7 @@ class Engine:
         """
         if method not in METHOD_FLAGS:
             raise UserError(f"method {method!r} cannot read probes (use light, bsdf, mis, path, guided or auto)")
-        wp = warp()
+        warp()  # initialised before the probe kernel's module loads
         KM.load([KM.trace_module(self.trace_variant.surfaces)], self.device)  # the probe kernel is in its variant's module
         params = self.trace_params(method, seed, max_depth, component)
         stream_ids = list(range(len(probes))) if stream_ids is None else list(stream_ids)

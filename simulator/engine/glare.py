@@ -51,7 +51,7 @@ from simulator.engine.stats import RunningStats
 from simulator.glare import view as V
 from simulator.glare.evaluate import GlareEstimate, SunReading, evaluate, pixel_stats
 from simulator.glare.sources import GlareSettings
-from simulator.scene.model import LightKind, Scene, Sensor, SensorKind
+from simulator.scene.model import LightKind, Scene, Sensor
 
 __all__ = ["MIN_GLARE_PASSES", "GlareResult", "suns_of", "glare_scene", "run_glare"]
 

@@ -231,7 +231,8 @@ def keep(module, block_dim: int) -> bool:
         kernels = _servable(module)
         if kernels is None or any(h.kernel_hashes.get(k) is None for k in kernels):
             return False
-        from simulator.cache_path import settled_before_start, write_atomic
+        from simulator.cache_path import settled_before_start
+        from simulator.io.atomic import write_atomic
 
         code = _code()
         if not settled_before_start(ident[1:] for tree in code[3:] for ident in tree):
@@ -239,7 +240,7 @@ def keep(module, block_dim: int) -> bool:
         key = _key(module, block_dim, module.resolved_options[block_dim], kernels, code)
         entry = {"format": FORMAT, "key": key, "module": module.name, "hash": h.hash.hex(),
                  "kernels": {k.key: h.kernel_hashes[k].hex() for k in kernels}}  # fmt: skip
-        write_atomic(d, f"{key[:40]}.json", json.dumps(entry).encode("utf-8"))
+        write_atomic(d / f"{key[:40]}.json", json.dumps(entry).encode("utf-8"), private=True)
         _evict(d)
     except Exception:  # a folder that cannot be written: nothing kept, nothing else changes
         return False

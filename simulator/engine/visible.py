@@ -383,7 +383,6 @@ def visible_factors(light: np.ndarray, light_cnt: np.ndarray, P: np.ndarray, N: 
     if not front.any():
         return F, B
     L2 = _trim(L2, np.where(front, Lc, 1))
-    area_L = signed_area(L2)
     size = float(np.abs(uv).max())  # the 2-D coordinates' magnitude
     scale = max(float(np.abs(light).max()), float(np.abs(P).max()), 1.0)  # the 3-D coordinates'
     slack = max(float(slack), PLANE_SLACK * scale)  # projections stay finite

@@ -53,7 +53,6 @@ Pure numpy.
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from dataclasses import dataclass, field
 

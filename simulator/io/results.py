@@ -10,15 +10,13 @@ from __future__ import annotations
 import csv
 import io
 import json
-import os
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from simulator.config.records import CSV_COLUMN_SETS  # declared once, with the config's choices
-from simulator.errors import UserError
+from simulator.io.atomic import write_all_atomic
 from simulator.scene.model import SENSOR_SPECS, SensorKind, Sensor
 
 __all__ = ["COLUMNS", "CSV_COLUMN_SETS", "csv_columns", "PROBE_COLUMNS", "Reading", "readings_from", "probe_readings", "extra_columns", "write_outputs", "record_text", "format_table", "json_default"]
@@ -222,42 +220,6 @@ def _csv_text(rows: list[Reading], column_set: str = "full") -> str:
 _ABSENT = object()
 
 
-def _atomic_write_all(files: dict) -> None:
-    """Write every file to a temporary sibling first, then rename them all.
-
-    A file's content is text, bytes, or a callable that writes the file at
-    the (temporary) path it is given."""
-    staged = []
-    try:
-        for path, content in files.items():
-            try:
-                path.parent.mkdir(parents=True, exist_ok=True)
-                fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-            except OSError as e:  # a path the user chose that cannot be written
-                raise UserError(f"{path}: cannot write output: {e.strerror or e}") from None
-            staged.append((tmp, path))
-            if callable(content):
-                os.close(fd)
-                content(Path(tmp))
-            elif isinstance(content, bytes):
-                with os.fdopen(fd, "wb") as f:
-                    f.write(content)
-            else:
-                with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
-                    f.write(content)
-        # mkstemp makes 0600 files; give outputs the usual mode the umask allows
-        umask = os.umask(0)
-        os.umask(umask)
-        for tmp, path in staged:
-            os.chmod(tmp, 0o666 & ~umask)
-            os.replace(tmp, path)
-    except BaseException:
-        for tmp, _ in staged:
-            if os.path.exists(tmp):
-                os.unlink(tmp)
-        raise
-
-
 def write_outputs(csv_path: Path, rows: list[Reading], record: dict, extra: dict | None = None,
                   encoded: dict[str, str] | None = None, csv_columns: str = "full") -> Path:
     """Write the CSV, its run record (``<csv stem>.run.json``) and ``extra``
@@ -274,7 +236,7 @@ def write_outputs(csv_path: Path, rows: list[Reading], record: dict, extra: dict
     Returns the run record's path.
     """
     record_path = csv_path.with_name(csv_path.stem + ".run.json")
-    _atomic_write_all(
+    write_all_atomic(
         {
             **(extra or {}),
             csv_path: _csv_text(rows, csv_columns),

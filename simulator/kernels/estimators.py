@@ -49,7 +49,7 @@ from simulator.scene.model import LightKind, Sensor, SensorKind
 
 from .group_tally import clear_group_sample, fold_group_sample, tally_group, tregenza_patch
 from .guide import glossy_mixture_factor, guide_fraction, guide_row, make_guided_step, mixture_factor, pdf_guide, tally_patch
-from .light_pick import (LM_TO_W, LightPick, computed_at, is_delta, pick_light, pick_light_at, pick_scale, picks_at,
+from .light_pick import (LM_TO_W, LightPick, computed_at, is_delta, pick_light_at, pick_scale, picks_at,
                          tally_patch_pick, tally_pick)
 from .lights.emissive import pdf_at as emissive_pdf_at
 from .lights.emissive import sample_piece

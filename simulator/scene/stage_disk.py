@@ -205,7 +205,8 @@ def _save(selection: str, scene, identity: dict, usd_version: str) -> bool:
     code = _code_identity()
     if code is None:
         return False
-    from simulator.cache_path import settled_before_start, write_atomic
+    from simulator.cache_path import settled_before_start
+    from simulator.io.atomic import write_atomic
 
     if not settled_before_start(code.values()):
         return False
@@ -215,7 +216,7 @@ def _save(selection: str, scene, identity: dict, usd_version: str) -> bool:
     if len(body) > MAX_ENTRY_BYTES:
         return False
     path = _entry_path(d, context)
-    write_atomic(path.parent, path.name, _MAGIC + hashlib.sha256(body).digest() + body)  # whole or not at all
+    write_atomic(path, _MAGIC + hashlib.sha256(body).digest() + body, private=True)  # whole or not at all
     _evict(d)
     return True
 

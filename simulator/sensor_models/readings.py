@@ -167,7 +167,7 @@ def add_model_columns(rows_by_name: dict, twins: list, mean, stderr, seed: int, 
 
 def _outside_visible(model) -> float:
     """The share of the first channel's responsivity (integrated flat) outside 380–780 nm."""
-    from simulator.spectra.wide import VISIBLE, wide_weights
+    from simulator.spectra.wide import wide_weights
 
     s = model.channels[0].responsivity
     tot = float(s @ wide_weights())

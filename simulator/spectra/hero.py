@@ -149,7 +149,7 @@ def _per_radiometric(shape, pair, stated: int) -> np.ndarray:
     """``shape`` scaled so that ``value[0] · row`` has the stated column ``pair[stated]``."""
     from simulator.spectra.responses import response
 
-    r, p = float(pair[0]), float(pair[1])
+    r = float(pair[0])
     if r <= 0.0:
         return np.zeros(N_LAMBDA)
     s = np.asarray(shape.values, float)
@@ -217,7 +217,6 @@ def hero_tables(scene, light_units: str, default_spectrum, responses=(), declare
     """
     from simulator.spectra.reflectance import uplift
     from simulator.spectra.responses import response
-    from simulator.spectra.sources import emitter_spectrum
 
     notes: list[str] = []
     g = scene.geometry

@@ -49,7 +49,7 @@ from .base import RAY_INF, GuideRec, LightKernel, LightRec, LightSample, SceneRe
 __all__ = [
     "KERNELS", "RAY_INF", "GuideRec", "LightKernel", "LightRec", "LightSample", "SceneRec",
     "analytic_light", "analytic_patch_light", "emissive_record", "escaped_radiance", "hit_light", "kind_chain",
-    "light_record", "light_within", "pdf_light", "sample_light", "tri_emitted", "tri_vertex",
+    "light_record", "light_within", "pdf_light", "sample_light", "tri_emitted", "tri_params", "tri_vertex",
 ]  # fmt: skip
 
 

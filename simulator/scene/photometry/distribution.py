@@ -20,7 +20,6 @@ the intensity is 0.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import numpy as np

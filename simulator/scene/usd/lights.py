@@ -27,7 +27,7 @@ from simulator.errors import UserError
 from simulator.units import luminance_grey
 from simulator.scene.model import Light, LightKind
 from simulator.scene.usd.legacy import lux_get
-from simulator.scene.usd.context import _Context, _get, _layer_relative, _not_uniform
+from simulator.scene.usd.context import _Context, _layer_relative, _not_uniform
 from simulator.scene.usd.materials import _albedo, _albedo_colour, _grey, _material_inputs
 from simulator.scene.usd.flux import apply_stated_output, stated_output
 from simulator.scene.usd.shaping import has_shaping, read_shaping

@@ -98,7 +98,6 @@ def _surface(ctx: _Context, prim: Usd.Prim,
         rgb, source = _display_color(ctx, prim)
         inputs = {"diffuseColor": (rgb, source), "emissiveColor": (_PREVIEW_DEFAULTS["emissiveColor"], ""),
                   "opacity": (1.0, ""), "_surface_key": "displayColor"}
-    where = prim.GetPath() if bind_prim is None else bind_prim.GetPath()
     sid = _surface_row(ctx, prim if bind_prim is None else bind_prim, inputs)
     if sid is None:
         return None

@@ -30,7 +30,7 @@ from simulator.errors import UserError
 from simulator.scene.model import Light, LightKind, LightShaping
 from simulator.scene.photometry import read_photometry
 from simulator.scene.usd.legacy import lux_get
-from simulator.scene.usd.context import _Context, _get
+from simulator.scene.usd.context import _Context
 from simulator.scene.usd.materials import _grey
 
 __all__ = ["read_shaping", "has_shaping"]

@@ -69,7 +69,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from simulator.errors import UserError
 from simulator.glare import indices as ix
 from simulator.glare import view as V
 from simulator.glare.evaluate import SUN_SEEN, _pixel_half_sizes

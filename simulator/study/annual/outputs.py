@@ -33,7 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from simulator.io.results import json_default
-from simulator.study.trace.chunks import atomic_write
+from simulator.io.atomic import write_atomic
 from simulator.study.annual.metrics import METRICS
 
 __all__ = ["write_annual_outputs", "annual_note", "HOUR_COLUMNS", "EXTRA_METRICS"]
@@ -179,7 +179,7 @@ def write_annual_outputs(res, study, out_dir: Path, path: Path | None = None) ->
         files[out_dir / "report.html"] = annual_page(res, path, study).encode()
     files[out_dir / "annual.json"] = (json.dumps(record(res, study), indent=1, default=json_default) + "\n").encode()
     for p, data in files.items():
-        atomic_write(p, data)
+        write_atomic(p, data, durable=True)
     return list(files)
 
 

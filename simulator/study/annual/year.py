@@ -292,7 +292,7 @@ def _cells_luminance(sh, plan, d, q_patch, outer_sun, stderr: bool = True):
 def _state_year(plan, study, results, sensors, lamp_groups, d, q, q_patch, l_dome, cone, sun_bin, sun_scale, bin_suns,
                 e_auth, skies, views, timing: dict) -> StateYear:  # fmt: skip
     """Coefficients and hourly readings of one state (see :mod:`simulator.study.annual.plan`)."""
-    from simulator.study.annual.glare import dgp_hourly, dgps_hourly, glare_term, sun_terms, view_sky
+    from simulator.study.annual.glare import glare_term, sun_terms, view_sky
     from simulator.study.annual.plan import SKY, ShadeCoefficients, read_coefficients
     from simulator.study.annual.rays import ray_scene
     from simulator.study.annual.sunlight import direct_sun
@@ -691,7 +691,6 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
                                           ("shade", y.shade.shade_cov), ("eye", y.shade.eye_cov))} if y.shade is not None else {}
              for y in years]  # fmt: skip
     rngs = [np.random.default_rng(derive_seed(study.seed, "annual", "replicates", "shades and views", st.name)) for st in states]
-    idx_reps = []
     for _ in range(a.replicates):
         rcs = [next(g) for g in gens]
         e_rs, i_rs = [], []

@@ -19,7 +19,7 @@ import numpy as np
 
 from simulator.io.results import json_default, readings_from
 from simulator.scene.model import SENSOR_SPECS
-from simulator.study.trace.chunks import atomic_write
+from simulator.io.atomic import write_atomic
 from simulator.study.report.heat_maps import heat_map_png, zone_plan_pngs
 from simulator.study.figures.scores import placement_unit, score_value, target_keys
 from simulator.study.figures.objectives import calibrated_errors
@@ -260,7 +260,7 @@ def write_outputs(res, versions: dict) -> list[Path]:
     res.files = sorted(p.name for p in files) + ["study.json"]
     files[d / "study.json"] = (json.dumps(record(res, versions), indent=1, default=json_default) + "\n").encode()
     for p, data in files.items():
-        atomic_write(p, data)
+        write_atomic(p, data, durable=True)
     return list(files)
 
 

@@ -27,18 +27,18 @@ import io
 import json
 import os
 import socket
-import tempfile
 import time
 from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
 
+from simulator.io.atomic import write_atomic
 from simulator.scene.model import LightKind, Sensor
 from simulator.study.trace.groups import GroupReadings, derive_seed, level_of, patch_names, trace_groups
 from simulator.study.inputs.sun import sun_direction, sun_frame
 
-__all__ = ["ChunkSpec", "ChunkStore", "code_digest", "stale_chunks_note", "compute_chunk", "atomic_write", "make_chunks", "StudyInterrupted"]
+__all__ = ["ChunkSpec", "ChunkStore", "code_digest", "stale_chunks_note", "compute_chunk", "make_chunks", "StudyInterrupted"]
 
 #: the chunk file's and manifest's layout (the code's own changes are in :func:`code_digest`)
 CHUNK_FORMAT = 7
@@ -72,25 +72,6 @@ class ChunkSpec:
     sky_split: tuple[str, ...] = ()  #: groups whose sky is traced as Tregenza patches
     extra_lights: tuple = ()  #: lights added to the stage's (a diffusing shade's cells, :mod:`simulator.study.annual.diffusers`)
     code: str = ""  #: the build that planned it (:func:`code_digest`): a worker of another build refuses it
-
-
-def atomic_write(path: Path, data: bytes) -> None:
-    """Write ``data`` to ``path`` so that a reader sees the old file or the whole new one."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
-            fh.flush()
-            os.fsync(fh.fileno())
-        mask = os.umask(0)
-        os.umask(mask)
-        os.chmod(tmp, 0o666 & ~mask)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
 
 
 @functools.lru_cache(maxsize=1)
@@ -273,9 +254,9 @@ class ChunkStore:
                  methods=np.array(list(result.get("methods", [])), dtype=str))  # fmt: skip
         data = buf.getvalue()
         name = f"{result['id']}.npz"
-        atomic_write(self.dir / name, data)
+        write_atomic(self.dir / name, data, durable=True)
         self.entries[result["id"]] = {
             "file": name, "sha256": hashlib.sha256(data).hexdigest(), "wall_s": float(result["wall_s"]),
             "host": result.get("host", ""), "pid": int(result.get("pid", 0)), "code": code_digest(),
         }  # fmt: skip
-        atomic_write(self.manifest_path, json.dumps({"format": CHUNK_FORMAT, "chunks": self.entries}, indent=1, sort_keys=True).encode())
+        write_atomic(self.manifest_path, durable=True, data=json.dumps({"format": CHUNK_FORMAT, "chunks": self.entries}, indent=1, sort_keys=True).encode())

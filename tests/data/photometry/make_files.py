@@ -5,7 +5,6 @@ analytic distribution, so the tests know the exact candelas. Run from this
 folder: ``python make_files.py``.
 """
 
-import math
 
 import numpy as np
 
