@@ -10,6 +10,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from simulator.study.trace.distributed import QUIET_CLUSTER
+
 pytest.importorskip("pvlib")
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -213,8 +215,7 @@ def test_the_report_is_the_same_bytes_on_a_scheduler(both, tmp_path):
     from simulator.commands.cli import main
 
     d, p, raw = both
-    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None,
-                                  silence_logs=40) as cluster:  # fmt: skip
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False, **QUIET_CLUSTER) as cluster:  # fmt: skip
         assert main(["study", str(p), "--out", str(tmp_path / "sched"), "--scheduler", cluster.scheduler_address]) == 0
     assert (tmp_path / "sched" / "report.html").read_bytes() == raw
     for name in ("annual_hourly.csv", "annual_hourly_stderr.csv", "annual_metrics.csv", "annual_control.csv"):

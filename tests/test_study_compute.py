@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 from simulator.commands.cli import main
+from simulator.study.trace.distributed import QUIET_CLUSTER
 
 _spec = importlib.util.spec_from_file_location("_study_tiny", Path(__file__).with_name("test_study_resume.py"))
 _tiny = importlib.util.module_from_spec(_spec)
@@ -89,7 +90,7 @@ def test_a_scheduler_gives_byte_identical_outputs(tmp_path, capsys, protocol):
         sec = distributed.Security(require_encryption=True) if protocol == "tls" else None
         kw = {"security": sec} if sec else {}
         with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False, protocol=f"{protocol}://",
-                                      dashboard_address=None, silence_logs=40, **kw) as cluster:  # fmt: skip
+                                      **QUIET_CLUSTER, **kw) as cluster:  # fmt: skip
             addr = cluster.scheduler_address
             assert addr.startswith(f"{protocol}://")
             assert main(["study", str(p), "--out", str(tmp_path / "sched"), "--scheduler", addr]) == 0

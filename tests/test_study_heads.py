@@ -21,6 +21,7 @@ from simulator.spectra.wide import WIDE_NM
 from simulator.study.annual import control as CT
 from simulator.study.annual import heads as AH
 from simulator.study.schema import load_study
+from simulator.study.trace.distributed import QUIET_CLUSTER
 
 ROOT = Path(__file__).resolve().parents[1]
 H_C_K = 1.438776877e-2  # c₂ = hc/k, m·K (CODATA 2018)
@@ -297,8 +298,7 @@ def test_device_readings_are_the_same_bytes_whatever_the_workers(tmp_path):
         study, p = load_study(_office(tmp_path, 2))
         out = tmp_path / ("cluster" if how == "resumed" else how)
         if how == "cluster":
-            with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None,
-                                          silence_logs=40) as cluster:  # fmt: skip
+            with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, **QUIET_CLUSTER) as cluster:  # fmt: skip
                 res = run_annual(study, p, out, log=lambda m: None, scheduler=cluster.scheduler_address)
         else:
             res = run_annual(study, p, out, log=lambda m: None, mode="inprocess")

@@ -26,6 +26,7 @@ from simulator.engine.driver import Engine
 from simulator.engine.guide import PILOT_BLOCKS, pilot_chunks
 from simulator.pipeline import collect_sensors, load_scene, run
 from simulator.scene.model import SensorKind
+from simulator.study.trace.distributed import QUIET_CLUSTER
 
 ROOT = Path(__file__).resolve().parent.parent
 CONFIGS = ROOT / "configs"
@@ -127,7 +128,7 @@ def scheduler():
     pytest.importorskip("distributed")
     from distributed import LocalCluster
 
-    cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None, silence_logs=40)
+    cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, **QUIET_CLUSTER)
     try:
         yield cluster.scheduler_address
     finally:

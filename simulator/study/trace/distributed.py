@@ -19,7 +19,7 @@ from typing import Callable, Iterator
 from simulator.errors import UserError
 from simulator.study.trace.chunks import ChunkSpec, compute_chunk
 
-__all__ = ["choose_mode", "run_chunks"]
+__all__ = ["QUIET_CLUSTER", "choose_mode", "run_chunks"]
 
 
 def choose_mode(mode: str, scheduler: str | None, n_chunks: int, workers: int) -> tuple[str, int]:
@@ -57,6 +57,11 @@ def scheduler_security(address: str):
     return Security(require_encryption=True)
 
 
+#: a LocalCluster's options here: no dashboard, its scheduler's HTTP routes (health, metrics) on a free port
+#: rather than 8787, which another cluster on the machine may hold (dask then warns and moves), quiet logs
+QUIET_CLUSTER = {"dashboard_address": None, "scheduler_kwargs": {"dashboard_address": ":0"}, "silence_logs": 40}
+
+
 def run_chunks(specs: list[ChunkSpec], mode: str, workers: int, scheduler: str | None, retries: int,
                log: Callable[[str], None] = print) -> Iterator[dict]:  # fmt: skip
     """Compute ``specs``, yielding each chunk's result as it finishes."""
@@ -80,7 +85,7 @@ def run_chunks(specs: list[ChunkSpec], mode: str, workers: int, scheduler: str |
         cores = os.cpu_count() or 1
         threads = max(1, cores // max(workers, 1))
         specs = [replace(s, threads=threads) for s in specs]
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None, silence_logs=40)
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, **QUIET_CLUSTER)
         client = Client(cluster)
     try:
         futures = [client.submit(compute_chunk, s, key=f"probesim-chunk-{s.id}", pure=False, retries=retries) for s in specs]
