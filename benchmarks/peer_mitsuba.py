@@ -5,7 +5,7 @@ Lambertian albedo, both faces reflecting; RectLights as area-emitting
 rectangles; a uniform DomeLight as a constant emitter; a DistantLight as a
 directional emitter of its normal illuminance, or with an angle as an emitting
 disc 1,000 km off that subtends it; emissive triangles as area emitters) and each irradiance sensor to a small white Lambertian disk proxy
-(radius ``--proxy-m``) seen by a ``radiancemeter`` 1 mm above it (E = π·L),
+(radius ``--proxy-m``, :data:`PROXY_M`) seen by a ``radiancemeter`` 1 mm above it (E = π·L),
 all meters in one ``batch`` sensor, so one render reads every sensor. Both are read at a ladder of
 budgets against the config's stored reference (configs/references/NAME.csv,
 in lx); the RMS relative error has the reference's own variance subtracted,
@@ -153,6 +153,13 @@ SUN_DISTANCE_M = 1.0e6
 MAX_PASS_SPP = 1 << 16
 
 
+#: the proxy disks' radius (m). Every sensor's disk is in the one scene, and each reflects all the light it
+#: meets back into the room, so the disks add light: 1,464 disks of 5 mm (0.115 m² of white) read the
+#: office's work plane 0.10–0.12% high (pooled means' mean z −0.17 to −0.25), 0.5 mm disks 0.00–0.04%
+#: (−0.01 to −0.08; docs/comparisons.md). The meter's one ray meets the disk's centre whatever its size.
+PROXY_M = 5e-4
+
+
 def run_mitsuba(scene, sensors, spp: int, proxy_m: float, seed: int, bsdf_of=None) -> tuple[np.ndarray, float]:
     """(readings in lx, cd/m² for radiance sensors; wall seconds of the renders) at ``spp`` samples per sensor
     (``spp`` a multiple of :data:`MAX_PASS_SPP` above it)."""
@@ -272,6 +279,12 @@ def replica_comparison(a, cfg, scene, sensors) -> None:
     z = (mp - mm) / np.sqrt(sp**2 + sm**2)
     print(f"pooled means at the top budgets: Mitsuba/probesim - 1 = {np.mean(mm) / np.mean(mp) - 1:+.3%} (mean over "
           f"sensors), RMS z {np.sqrt(np.mean(z**2)):.2f}, |z| > 4 at {int(np.sum(np.abs(z) > 4))} of {len(z)} sensors")
+    if a.z_csv:  # every sensor's pooled means, their errors and z, to find where the two part
+        with open(a.z_csv, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["sensor", "x", "y", "z", "probesim_lx", "probesim_stderr_lx", "mitsuba_lx", "mitsuba_stderr_lx", "z_score"])
+            for s, a_p, e_p, a_m, e_m, zs in zip(sensors, mp, sp, mm, sm, z):
+                w.writerow([s.name, *(f"{c:.4f}" for c in s.position), f"{a_p:.6g}", f"{e_p:.4g}", f"{a_m:.6g}", f"{e_m:.4g}", f"{zs:.3f}"])
     for target in a.rms:
         (t_p, e_p), (t_m, e_m) = rows["probesim"][-1], rows["mitsuba"][-1]  # the largest budgets
         tp, tm = t_p * (e_p / target) ** 2, t_m * (e_m / target) ** 2
@@ -286,8 +299,9 @@ def main() -> None:
     ap.add_argument("--rms", type=float, nargs="+", default=[0.01])
     ap.add_argument("--probesim-samples", type=int, nargs="+", default=[256, 1024, 4096])
     ap.add_argument("--mitsuba-spp", type=int, nargs="+", default=[1024, 4096, 16384])
-    ap.add_argument("--proxy-m", type=float, default=0.005)
+    ap.add_argument("--proxy-m", type=float, default=PROXY_M)
     ap.add_argument("--stage", help="read the config's sensors on this stage instead of its own")
+    ap.add_argument("--z-csv", metavar="PATH", help="with --replicas: write every sensor's pooled means, errors and z here")
     ap.add_argument("--replicas", type=int, default=0,
                     help="R >= 2: errors from R independent renders per budget, no stored reference")
     a = ap.parse_args()
