@@ -80,7 +80,7 @@ def office_sensors():
     return scene, [s for s in collect_sensors(cfg, scene) if s.kind != SensorKind.PROBE]
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="package")  # the tests folder: read once for every test file that asks
 def office_guided() -> OfficeGuided:
     """The office read with ``guided`` (guide, split rule and per-patch pick as a run has them),
     the auto plan's light mask, 512 samples, seed 2024."""
