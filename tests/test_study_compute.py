@@ -128,3 +128,25 @@ def test_auto_block_keeps_the_modelled_cost_within_budget():
     one = max(32 * 1500, 16384) + 256 + 1040 * 1500
     cost = 21 * (16384 + 256 + 1040 * 69) + (16384 + 256 + 1040 * 51)
     assert auto_block(1500, 1024) == 69 and pass_cost(1500, 1024, 68) > 1.2 * one and pass_cost(1500, 1024, 69) == cost and cost / one <= 1.2
+
+
+def test_a_worker_that_cannot_import_probesim_is_one_line(monkeypatch):
+    """A dask worker without probesim (or without a package a chunk needs) fails its task with an
+    ImportError; the study says so in one line naming the scheduler, not with the worker's traceback."""
+    import distributed
+
+    from simulator.errors import UserError
+    from simulator.study.trace import distributed as dist
+    from simulator.study.trace.chunks import ChunkSpec
+
+    def no_probesim(spec):
+        raise ModuleNotFoundError("No module named 'simulator'")
+
+    monkeypatch.setattr(dist, "compute_chunk", no_probesim)
+    spec = ChunkSpec("c0ffee", "key", 0, "stage.usda", "photometric", (), None, (), (), (), {}, 1)
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False, **QUIET_CLUSTER) as cluster:
+        addr = cluster.scheduler_address
+        with pytest.raises(UserError) as err:
+            list(dist.run_chunks([spec], "scheduler", 1, addr, 0))
+    assert str(err.value) == (f"dask scheduler {addr}: a worker cannot import what a chunk needs (No module named "
+                              "'simulator'): install the study's probesim, the same build, on every worker")  # fmt: skip

@@ -90,7 +90,13 @@ def run_chunks(specs: list[ChunkSpec], mode: str, workers: int, scheduler: str |
     try:
         futures = [client.submit(compute_chunk, s, key=f"probesim-chunk-{s.id}", pure=False, retries=retries) for s in specs]
         for fut in as_completed(futures):
-            yield fut.result()
+            try:
+                result = fut.result()
+            except ImportError as exc:  # a worker without probesim, or without a package a chunk needs
+                where = f"dask scheduler {scheduler}" if mode == "scheduler" else "dask LocalCluster"
+                raise UserError(f"{where}: a worker cannot import what a chunk needs ({exc}): install the study's "
+                                "probesim, the same build, on every worker") from None  # fmt: skip
+            yield result
     finally:
         client.close()
         if cluster is not None:
