@@ -20,13 +20,13 @@ import os
 import sys
 from pathlib import Path
 
-__all__ = ["ENV", "RACY_NS", "cache_root", "process_started_ns", "settled_before_start"]
+__all__ = ["ENV", "RACY_NS", "cache_folder", "cache_root", "process_started_ns", "settled_before_start"]
 
 #: the environment variable that moves the folder (or, empty, turns keeping off)
 ENV = "PROBESIM_CACHE_PATH"
 #: a file is trusted to be what its times say only if it was last modified this long before it was read
 #: (a coarse file-system clock can give an edit in the same tick the old times; the "racy" case git
-#: guards its index against); the same bound as the in-process stage cache's
+#: guards its index against); the in-process stage cache uses the same bound
 RACY_NS = 2_000_000_000
 
 
@@ -47,6 +47,12 @@ def cache_root() -> Path | None:
         return home / "Library" / "Caches" / "probesim"
     xdg = os.environ.get("XDG_CACHE_HOME")
     return (Path(xdg) if xdg and os.path.isabs(xdg) else home / ".cache") / "probesim"
+
+
+def cache_folder(name: str) -> Path | None:
+    """The folder ``name`` under :func:`cache_root` (one per kind of entry), or None when keeping is off."""
+    root = cache_root()
+    return None if root is None else root / name
 
 
 def _started_ns() -> int:

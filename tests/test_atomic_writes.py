@@ -98,3 +98,22 @@ def test_a_study_says_so_before_any_chunk(tmp_path, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert err == [f"probesim: error: {tmp_path / 'file' / 'out'}: cannot make the study folder: a part of its path is a file, "
                    "not a folder"]  # fmt: skip
+
+
+def test_a_killed_writers_temporary_file_is_recognised_and_removed_once_stale(tmp_path):
+    """Every staged file carries TEMP_SUFFIX, so the caches can clear what a writer killed mid-write
+    left (remove_stale_temporaries): an old one goes, a recent one (a live write) and other files stay."""
+    import time
+
+    from simulator.io.atomic import TEMP_SUFFIX, remove_stale_temporaries
+
+    seen = []
+    write_all_atomic({tmp_path / "a.png": lambda p: (seen.append(Path(p).name), Path(p).write_bytes(b"x"))})
+    assert seen[0].startswith(".a.png.") and seen[0].endswith(TEMP_SUFFIX)
+    old, live = tmp_path / f".e.stage.abc{TEMP_SUFFIX}", tmp_path / f".f.stage.def{TEMP_SUFFIX}"
+    for p in (old, live, tmp_path / "kept.stage", tmp_path / f"visible{TEMP_SUFFIX}"):
+        p.write_bytes(b"")
+    hour_ago = time.time() - 3600
+    os.utime(old, (hour_ago, hour_ago))
+    remove_stale_temporaries(tmp_path, 60)
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(["a.png", live.name, "kept.stage", f"visible{TEMP_SUFFIX}"])

@@ -69,10 +69,9 @@ _tree_ids: dict = {}  # package folder -> its files' identities, read once per p
 
 
 def _folder():
-    from simulator.cache_path import cache_root
+    from simulator.cache_path import cache_folder
 
-    root = cache_root()
-    return None if root is None else root / SUBDIR
+    return cache_folder(SUBDIR)
 
 
 def _tree(top: str, subdirs: tuple | None) -> list:
@@ -248,7 +247,12 @@ def keep(module, block_dim: int) -> bool:
 
 
 def _evict(d) -> None:
-    """Keep the :data:`MAX_ENTRIES` most recently written entries."""
+    """Keep the :data:`MAX_ENTRIES` most recently written entries; remove temporary files a killed writer
+    left (as the stage cache does, :data:`simulator.scene.stage_disk.STALE_PART_S`)."""
+    from simulator.io.atomic import remove_stale_temporaries
+    from simulator.scene.stage_disk import STALE_PART_S
+
+    remove_stale_temporaries(d, STALE_PART_S)
     entries = []
     for e in os.scandir(d):
         if e.name.endswith(".json"):

@@ -13,7 +13,10 @@ from pathlib import Path
 
 from simulator.errors import UserError
 
-__all__ = ["check_folder", "ensure_folder", "write_all_atomic", "write_atomic"]
+__all__ = ["TEMP_SUFFIX", "check_folder", "ensure_folder", "remove_stale_temporaries", "write_all_atomic", "write_atomic"]
+
+#: the suffix of every temporary file a write stages (``.<name>.<random><suffix>`` beside its file)
+TEMP_SUFFIX = ".part"
 
 
 def check_folder(folder: Path, what: str = "output folder") -> None:
@@ -66,7 +69,7 @@ def write_all_atomic(files: dict, *, durable: bool = False, private: bool = Fals
             path = Path(path)
             ensure_folder(path.parent, private=private)
             try:
-                fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+                fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=TEMP_SUFFIX, dir=path.parent)
             except OSError as e:
                 raise UserError(f"{path}: cannot write output: {e.strerror or e}") from None
             staged.append((tmp, path))
@@ -96,3 +99,19 @@ def write_all_atomic(files: dict, *, durable: bool = False, private: bool = Fals
 def write_atomic(path: Path, data: bytes, *, durable: bool = False, private: bool = False) -> None:
     """Write ``data`` to ``path`` whole or not at all (:func:`write_all_atomic` for one file)."""
     write_all_atomic({Path(path): data}, durable=durable, private=private)
+
+
+def remove_stale_temporaries(folder: Path, older_than_s: float) -> None:
+    """Remove the temporary files (:data:`TEMP_SUFFIX`) in ``folder`` last modified more than
+    ``older_than_s`` seconds ago: what a writer killed mid-write left (a live write's is recent). Files
+    that vanish or cannot be removed meanwhile are left."""
+    import time
+
+    now = time.time()
+    for e in os.scandir(folder):
+        if e.name.startswith(".") and e.name.endswith(TEMP_SUFFIX):
+            try:
+                if now - e.stat().st_mtime > older_than_s:
+                    os.unlink(e.path)
+            except OSError:
+                continue

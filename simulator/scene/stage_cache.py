@@ -43,6 +43,7 @@ from itertools import count
 
 import numpy as np
 
+from simulator import cache_path
 from simulator.memo import Kept
 from simulator.scene import stage_disk
 from simulator.scene.stage_disk import file_identity
@@ -58,7 +59,8 @@ MAX_BYTES = 1 << 29
 #: not charged a second copy)
 MAX_ENTRY_BYTES = 1 << 28
 #: a reading is kept only if every file it read was last modified this many nanoseconds before it began
-RACY_NS = 2_000_000_000
+#: (one bound with the caches kept across processes, :data:`simulator.cache_path.RACY_NS`)
+RACY_NS = cache_path.RACY_NS
 
 _entries = Kept(MAX_ENTRIES, MAX_BYTES)  # selection -> _Entry, sized by its array bytes
 _serial = count(1)

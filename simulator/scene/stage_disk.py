@@ -46,7 +46,6 @@ import json
 import os
 import pickle
 import sys
-import time
 
 __all__ = ["MAX_ENTRY_BYTES", "MAX_BYTES", "FORMAT", "file_identity", "folder", "load", "save"]
 
@@ -85,10 +84,9 @@ def file_identity(path: str) -> tuple | None:
 
 def folder():
     """The entries' folder (``<cache root>/stages``), or None when keeping across processes is off."""
-    from simulator.cache_path import cache_root
+    from simulator.cache_path import cache_folder
 
-    root = cache_root()
-    return None if root is None else root / SUBDIR
+    return cache_folder(SUBDIR)
 
 
 def _context(selection: str) -> str:
@@ -224,18 +222,18 @@ def _save(selection: str, scene, identity: dict, usd_version: str) -> bool:
 def _evict(d) -> None:
     """Remove the least recently used entries while they exceed :data:`MAX_BYTES`, and temporary files
     a killed writer left."""
-    now = time.time()
+    from simulator.io.atomic import remove_stale_temporaries
+
+    remove_stale_temporaries(d, STALE_PART_S)
     entries = []
     for e in os.scandir(d):
+        if not e.name.endswith(_SUFFIX):
+            continue
         try:
             st = e.stat()
-            if e.name.endswith(".part"):
-                if now - st.st_mtime > STALE_PART_S:
-                    os.unlink(e.path)
-            elif e.name.endswith(_SUFFIX):
-                entries.append((st.st_mtime_ns, st.st_size, e.path))
         except OSError:
             continue
+        entries.append((st.st_mtime_ns, st.st_size, e.path))
     total = sum(s for _, s, _ in entries)
     for _, size, path in sorted(entries):
         if total <= MAX_BYTES:
