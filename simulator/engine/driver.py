@@ -1606,13 +1606,9 @@ def _recombined(mean: np.ndarray, cov: np.ndarray, levels: np.ndarray) -> tuple[
     from group means (S, C, G) and covariance (S, C, G, G); both (S, J·C), the stopping rule's channels."""
     d = np.asarray(levels, np.float64)
     val = np.einsum("jg,scg->sjc", d, mean)
-    if np.isfinite(cov).all():
-        var = np.einsum("jg,scgh,jh->sjc", d, cov, d)
-    else:  # a group whose error is unknown (inf) counts only where it is lit: an unlit one adds 0, not 0·inf
-        var = np.stack([lit_variance(dj, cov) for dj in d], axis=1)
-    se = np.sqrt(np.where(np.isnan(var), np.inf, np.maximum(var, 0.0)))
+    var = np.stack([lit_variance(dj, cov) for dj in d], axis=1)  # (S, J, C); an unlit unknown group adds 0
+    se = np.sqrt(np.maximum(var, 0.0))
     return val.reshape(len(val), -1), se.reshape(len(se), -1)
-
 
 
 @contextmanager

@@ -285,8 +285,15 @@ class GroupBatchStats:
 
 
 def lit_variance(d: np.ndarray, cov: np.ndarray) -> np.ndarray:
-    """dᵀCd over the groups lit in ``d`` (G,) only, from the covariance (..., G, G): inf where a lit
-    group's is; 0 when none is lit."""
+    """The variance dᵀCd of the levels ``d`` (G,) recombining groups of covariance ``cov`` (..., G, G),
+    summed over the groups ``d`` lights only: a group whose error is unknown (inf, too few batches)
+    adds nothing where it is off (not 0·inf = NaN) and inf where it is lit; 0 when nothing is lit.
+
+    Notes
+    -----
+    Where every covariance is finite this is dᵀCd bit for bit: the terms of unlit groups are exact
+    zeros, and einsum sums the rest in the same order (checked on random covariances)."""
     lit = np.flatnonzero(d)
     with np.errstate(invalid="ignore"):
-        return np.einsum("g,...gh,h->...", d[lit], cov[..., lit[:, None], lit[None, :]], d[lit])
+        var = np.einsum("g,...gh,h->...", d[lit], cov[..., lit[:, None], lit[None, :]], d[lit])
+    return np.where(np.isnan(var), np.inf, var)  # ±inf terms that cancel: still unknown

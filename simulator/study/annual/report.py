@@ -101,7 +101,6 @@ def _da_map_png(ares, zone: str, da_lx: float, chosen: list[str]) -> bytes:
                     _plan(ares, ids), marks)  # fmt: skip
 
 
-
 def _day_hour_axes(ax, days) -> None:
     """Label a day-of-year × hour-of-day map's axes: about 12 day ticks, hours 0–23 (LST)."""
     step = max(1, len(days) // 12)
@@ -111,6 +110,7 @@ def _day_hour_axes(ax, days) -> None:
     ax.tick_params(labelsize=9)
     ax.set_xlabel("day of year (days analysed)", fontsize=9)
     ax.set_ylabel("hour of day (LST)", fontsize=9)
+
 
 def _temporal_png(grid: np.ndarray, days: np.ndarray, title: str, label: str, vmax: float | None = None,
                   grey: str = "hours not analysed") -> bytes:

@@ -201,9 +201,7 @@ def combine_heads(gr, levels: dict, ids, heads: HeadFactors, ch: int, mean: np.n
             w = d * sig[:, c]
             x.append(float(w @ gr.mean[:, row, ch]))
             if c == 0:
-                cov = gr.cov[row, ch]
-                var0 = float(w @ cov @ w) if np.isfinite(cov).all() else float(lit_variance(w, cov))
+                var0 = float(lit_variance(w, gr.cov[row, ch]))
         v = model.optics_value(x)
         mean[row, ch] = v
-        var0 = np.inf if np.isnan(var0) else max(var0, 0.0)  # an unknown error stays inf, never NaN
-        stderr[row, ch] = np.sqrt(var0) / x[0] * v if x[0] > 0 else 0.0
+        stderr[row, ch] = np.sqrt(max(var0, 0.0)) / x[0] * v if x[0] > 0 else 0.0

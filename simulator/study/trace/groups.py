@@ -162,11 +162,7 @@ class GroupReadings:
 
         d = np.array([level_of(levels, n) for n in self.names])
         mean = np.einsum("g,gsc->sc", d, self.mean)
-        if np.isfinite(self.cov).all():
-            var = np.einsum("g,scgh,h->sc", d, self.cov, d)
-        else:  # a group whose error is unknown (inf) counts only where it is lit; unknown stays inf, never NaN
-            var = lit_variance(d, self.cov)
-        return mean, np.sqrt(np.where(np.isnan(var), np.inf, np.maximum(var, 0.0)))
+        return mean, np.sqrt(np.maximum(lit_variance(d, self.cov), 0.0))
 
 
 def group_scene(scene: Scene, light_names: list[str]) -> Scene:
