@@ -503,7 +503,7 @@ def test_probesim_study_runs_the_scenarios_and_the_year_into_one_folder(tmp_path
 
 def test_an_annual_folder_another_build_traced_is_traced_again(open_roof, tmp_path, monkeypatch):
     """Resumed by another build of probesim (tests/test_study_resume.py), an annual study traces every
-    chunk again, and its notes say how many it left unused; the hourly readings are the same."""
+    chunk again, and its notes say how many of the other build's it removed; the hourly readings are the same."""
     import shutil
 
     from simulator.study.trace import chunks
@@ -516,6 +516,6 @@ def test_an_annual_folder_another_build_traced_is_traced_again(open_roof, tmp_pa
     n = res.chunks_total
     assert [x for x in again.notes if "another build" in x] == [
         f"warning: {tmp_path / 'out'}: {n} finished chunk{'s' if n != 1 else ''} in this folder "
-        f"{'were' if n != 1 else 'was'} traced by another build of probesim and {'are' if n != 1 else 'is'} not reused "
-        "(traced again where this study needs them)"]  # fmt: skip
+        f"{'were' if n != 1 else 'was'} traced by another build of probesim: removed, and traced again where this "
+        "study needs them"]  # fmt: skip
     np.testing.assert_array_equal(again.mean, res.mean)

@@ -161,9 +161,9 @@ def test_a_killed_process_resumes_to_byte_identical_outputs(tmp_path):
 
 def test_chunks_another_build_traced_are_not_reused(tmp_path, monkeypatch):
     """A study folder resumed by another build of probesim (any file of the package changed, or
-    another Warp or numpy) traces every chunk again and says how many it left unused: chunks of two
-    builds would agree only within their errors, and the study would no longer be the bytes of one
-    run whole. The same build reuses them all (above)."""
+    another Warp or numpy) traces every chunk again, removes the other build's and says how many, once:
+    chunks of two builds would agree only within their errors, and the study would no longer be the
+    bytes of one run whole. The same build reuses them all (above), with no warning."""
     from simulator.study.trace import chunks
 
     path = tiny_study(tmp_path)
@@ -172,11 +172,13 @@ def test_chunks_another_build_traced_are_not_reused(tmp_path, monkeypatch):
     res, long_b, _ = _run(path, tmp_path / "o", mode="inprocess")
     assert (res.chunks_loaded, res.chunks_computed) == (0, 4)
     assert [w for w in res.warnings if "another build of probesim" in w] == [
-        f"{tmp_path / 'o'}: 4 finished chunks in this folder were traced by another build of probesim and are not "
-        "reused (traced again where this study needs them)"]  # fmt: skip
+        f"{tmp_path / 'o'}: 4 finished chunks in this folder were traced by another build of probesim: removed, and "
+        "traced again where this study needs them"]  # fmt: skip
     assert long_b == long_a  # the same code really: the same bytes
-    res, _, _ = _run(path, tmp_path / "o", mode="inprocess")  # that build again: its own chunks reused
+    assert len(list((tmp_path / "o" / "chunks").glob("*.npz"))) == 4  # the other build's 4 are gone
+    res, _, _ = _run(path, tmp_path / "o", mode="inprocess")  # that build again: its own chunks reused, said nothing
     assert (res.chunks_loaded, res.chunks_computed) == (4, 0)
+    assert not [w for w in res.warnings if "another build of probesim" in w]
 
 
 def test_the_code_digest_follows_every_file_of_the_tree(tmp_path):

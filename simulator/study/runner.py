@@ -243,7 +243,7 @@ def run_study(study: Study, path: Path, out_dir: Path, *, scheduler: str | None 
     if ugr_plan is not None:
         specs = specs + ugr_plan["specs"]
     store = ChunkStore(out_dir)
-    if (stale := store.other_code()) > 0:
+    if (stale := store.drop_other_code()) > 0:
         warnings.append(stale_chunks_note(out_dir, stale))
     results: dict[str, dict] = {}
     for s in specs:

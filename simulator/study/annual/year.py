@@ -553,7 +553,7 @@ def run_annual(study, path: Path, out_dir: Path, *, log=print, mode: str | None 
              for st in states]  # fmt: skip
     specs = [s for p in plans for s in p.specs()]
     store = ChunkStore(out_dir)
-    if (stale := store.other_code()) > 0:
+    if (stale := store.drop_other_code()) > 0:
         notes.append(f"warning: {stale_chunks_note(out_dir, stale)}")
         log(f"warning: {stale_chunks_note(out_dir, stale)}")
     results = {s.id: r for s in specs if (r := store.load(s.id)) is not None}

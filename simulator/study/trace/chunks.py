@@ -16,7 +16,7 @@ study started again loads every chunk whose id is in the manifest with a
 matching file and computes only the rest. Chunks another build of probesim
 traced are not reused (their numbers may differ within their errors, and a
 study mixing them would not be the same bytes as one run whole): the study
-says how many it left unused (:meth:`ChunkStore.other_code`).
+removes them and says how many, once (:meth:`ChunkStore.drop_other_code`).
 """
 
 from __future__ import annotations
@@ -107,10 +107,9 @@ def tree_digest(root: Path) -> str:
 
 
 def stale_chunks_note(out_dir, n: int) -> str:
-    """The study's one-line note on the chunks in ``out_dir`` another build traced (:meth:`ChunkStore.other_code`)."""
-    return (f"{out_dir}: {n} finished chunk{'s' if n != 1 else ''} in this folder "
-            f"{'were' if n != 1 else 'was'} traced by another build of probesim and {'are' if n != 1 else 'is'} "
-            "not reused (traced again where this study needs them)")  # fmt: skip
+    """The study's one-line note on the chunks in ``out_dir`` another build traced (:meth:`ChunkStore.drop_other_code`)."""
+    return (f"{out_dir}: {n} finished chunk{'s' if n != 1 else ''} in this folder {'were' if n != 1 else 'was'} "
+            "traced by another build of probesim: removed, and traced again where this study needs them")  # fmt: skip
 
 
 def _sensor_text(s: Sensor) -> str:
@@ -220,11 +219,22 @@ class ChunkStore:
             except (OSError, ValueError):
                 self.entries = {}  # unreadable manifest: recompute everything
 
-    def other_code(self) -> int:
-        """How many finished chunks in the store another build of probesim traced (an entry written
-        before the build was recorded counts as another's): a study never reuses them."""
+    def drop_other_code(self) -> int:
+        """Remove the finished chunks another build of probesim traced (an entry written before builds were
+        recorded counts as another's), their files and manifest entries; how many. This build never loads
+        them (their ids hash the build that traced them), so kept they would only be warned about again
+        on every later resume."""
         me = code_digest()
-        return sum(1 for e in self.entries.values() if e.get("code") != me)
+        stale = [cid for cid, e in self.entries.items() if not isinstance(e, dict) or e.get("code") != me]
+        for cid in stale:
+            name = self.entries.pop(cid)
+            try:
+                (self.dir / name["file"]).unlink()
+            except (OSError, KeyError, TypeError):  # gone already, or an entry that names no file
+                pass
+        if stale:
+            self._write_manifest()
+        return len(stale)
 
     def load(self, cid: str) -> dict | None:
         """A finished chunk's arrays, or None when it is missing or its file does not match the manifest."""
@@ -259,4 +269,8 @@ class ChunkStore:
             "file": name, "sha256": hashlib.sha256(data).hexdigest(), "wall_s": float(result["wall_s"]),
             "host": result.get("host", ""), "pid": int(result.get("pid", 0)), "code": code_digest(),
         }  # fmt: skip
-        write_atomic(self.manifest_path, durable=True, data=json.dumps({"format": CHUNK_FORMAT, "chunks": self.entries}, indent=1, sort_keys=True).encode())
+        self._write_manifest()
+
+    def _write_manifest(self) -> None:
+        data = json.dumps({"format": CHUNK_FORMAT, "chunks": self.entries}, indent=1, sort_keys=True).encode()
+        write_atomic(self.manifest_path, data, durable=True)
